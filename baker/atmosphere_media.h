@@ -1,0 +1,30 @@
+// Scattering and extinction coefficients at an altitude: the constituents'
+// coefficients at density 1 times their density profiles.
+#pragma once
+
+#include "data_formats/atmosphere_parameters.h"
+#include "runtime/density_profile.h"
+
+namespace skybake {
+
+class AtmosphereMedia {
+ public:
+  explicit AtmosphereMedia(const AtmosphereParameters& a) : a_(a) {}
+
+  double rayleighDensity(double altitude_m) const { return profileDensity(a_.rayleigh_density, altitude_m); }
+  double mieDensity(double altitude_m) const { return profileDensity(a_.mie_density, altitude_m); }
+
+  // Extinction coefficient, m^-1.
+  SpectrumD extinction(double altitude_m) const {
+    return SpectrumD(a_.rayleigh_scattering) * rayleighDensity(altitude_m) +
+           SpectrumD(a_.mie_extinction) * mieDensity(altitude_m) +
+           SpectrumD(a_.absorption_extinction) * profileDensity(a_.absorption_density, altitude_m);
+  }
+
+  const AtmosphereParameters& parameters() const { return a_; }
+
+ private:
+  const AtmosphereParameters& a_;
+};
+
+}  // namespace skybake

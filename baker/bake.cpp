@@ -1,0 +1,153 @@
+#include "baker/bake.h"
+
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <chrono>
+
+#include "baker/stages.h"
+
+namespace skybake {
+namespace {
+
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+         1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double peakMemoryMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
+Spectrum meanOf(const std::vector<Spectrum>& texels) {
+  SpectrumD sum(0.0);  // long sum: double
+  for (const Spectrum& s : texels) sum += SpectrumD(s);
+  return Spectrum(sum / static_cast<double>(std::max<size_t>(texels.size(), 1)));
+}
+
+// Mean single-scattering radiance over all texels, phase functions applied.
+Spectrum meanSingleScatteringRadiance(const TableSampler& sampler, const Texture4D& rayleigh,
+                                      const Texture4D& mie, double g) {
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  SpectrumD sum(0.0);
+  for (int i_r = 0; i_r < s.r; ++i_r)
+    for (int i_mu = 0; i_mu < s.mu; ++i_mu)
+      for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
+        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
+          const double nu = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu).nu;
+          sum += SpectrumD(rayleigh.at(i_r, i_mu, i_mu_s, i_nu)) * rayleighPhase(nu) +
+                 SpectrumD(mie.at(i_r, i_mu, i_mu_s, i_nu)) * cornetteShanksPhase(g, nu);
+        }
+  return Spectrum(sum / static_cast<double>(rayleigh.texels.size()));
+}
+
+class StageRunner {
+ public:
+  StageRunner(ProgressSink& progress, BakeReport& report) : progress_(progress), report_(report) {}
+
+  template <typename Fn>
+  auto run(const std::string& stage, int order, size_t work_units, Fn&& fn) {
+    progress_.beginStage(order > 1 ? stage + " (order " + std::to_string(order) + ")" : stage,
+                         work_units);
+    const auto start = std::chrono::steady_clock::now();
+    auto finish = [&] {
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      report_.stages.push_back({stage, order, seconds});
+      progress_.endStage(seconds);
+    };
+    if constexpr (std::is_void_v<decltype(fn())>) {
+      fn();
+      finish();
+    } else {
+      auto result = fn();
+      finish();
+      return result;
+    }
+  }
+
+ private:
+  ProgressSink& progress_;
+  BakeReport& report_;
+};
+
+}  // namespace
+
+BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& progress) {
+  if (threads > 0) omp_set_num_threads(threads);
+  BakeOutput out;
+  BakeReport& report = out.report;
+  report.threads = threads > 0 ? threads : omp_get_max_threads();
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = processCpuSeconds();
+
+  const AtmosphereParameters& a = config.atmosphere;
+  const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
+  const StageContext ctx{a, sampler, progress};
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  const size_t rows_4d = static_cast<size_t>(s.r) * s.mu;
+  const size_t slices_4d = static_cast<size_t>(s.r) * s.mu_s;
+  StageRunner stage(progress, report);
+
+  BakeTables& tables = out.file.tables;
+  tables.transmittance = stage.run("transmittance", 0, config.sizes.transmittance_r,
+                                   [&] { return computeTransmittanceTable(ctx); });
+  const Texture2D& optical_depth = tables.transmittance;
+  Texture2D delta_irradiance = stage.run("direct_irradiance", 1, config.sizes.irradiance_r, [&] {
+    return computeDirectIrradianceTable(ctx, optical_depth);
+  });
+  Texture4D delta_rayleigh;
+  stage.run("single_scattering", 1, rows_4d, [&] {
+    computeSingleScatteringTables(ctx, optical_depth, delta_rayleigh, tables.single_mie);
+  });
+  report.orders.push_back(
+      {1, meanSingleScatteringRadiance(sampler, delta_rayleigh, tables.single_mie, a.mie_phase_g),
+       Spectrum(0.0f)});
+
+  // scattering = Rayleigh single + multiple orders, each divided by the
+  // Rayleigh phase function (so a lookup multiplies it back once).
+  tables.scattering = delta_rayleigh;
+  tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
+  Texture4D delta_multiple;
+  for (int order = 2; order <= config.bake.orders; ++order) {
+    const OrderRadiance previous{order - 1, delta_rayleigh, tables.single_mie, delta_multiple};
+    const Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
+      return computeScatteringDensityTable(ctx, optical_depth, previous, delta_irradiance);
+    });
+    delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
+      return computeIndirectIrradianceTable(ctx, previous);
+    });
+    for (size_t i = 0; i < tables.irradiance.texels.size(); ++i) {
+      tables.irradiance.texels[i] += delta_irradiance.texels[i];
+    }
+    report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
+
+    delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
+      return computeMultipleScatteringTable(ctx, optical_depth, density);
+    });
+    for (int i_r = 0; i_r < s.r; ++i_r)
+      for (int i_mu = 0; i_mu < s.mu; ++i_mu)
+        for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
+          for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
+            const double nu = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu).nu;
+            tables.scattering.at(i_r, i_mu, i_mu_s, i_nu) +=
+                delta_multiple.at(i_r, i_mu, i_mu_s, i_nu) / static_cast<float>(rayleighPhase(nu));
+          }
+    report.orders.push_back({order, meanOf(delta_multiple.texels), Spectrum(0.0f)});
+  }
+
+  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.cpu_seconds = processCpuSeconds() - cpu_start;
+  report.peak_memory_mib = peakMemoryMiB();
+
+  out.file.config = config;
+  out.file.orders_computed = config.bake.orders;
+  out.file.report_json = report.toJson();
+  return out;
+}
+
+}  // namespace skybake

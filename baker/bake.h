@@ -1,0 +1,55 @@
+// The order loop: from a config to every table of a bake, with timings.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "baker/progress.h"
+#include "data_formats/bake_file.h"
+
+namespace skybake {
+
+struct StageTiming {
+  std::string stage;  // transmittance, direct_irradiance, single_scattering, ...
+  int order;          // the scattering order the stage produced (0: not order-specific)
+  double seconds;
+};
+
+// How much each order contributed: the mean over all texels of its radiance
+// (W m^-2 sr^-1 nm^-1) and of the sky irradiance it produced (W m^-2 nm^-1),
+// per channel. Orders must contribute less and less for a bake to converge.
+struct OrderContribution {
+  int order;
+  Spectrum mean_radiance;
+  Spectrum mean_irradiance;  // 0 for the last order (nothing reflects it yet)
+};
+
+struct BakeReport {
+  int threads = 1;
+  double wall_seconds = 0.0;
+  double cpu_seconds = 0.0;
+  double peak_memory_mib = 0.0;
+  std::vector<StageTiming> stages;
+  std::vector<OrderContribution> orders;
+
+  // Wall time summed over stages with this name, all orders.
+  double stageSeconds(const std::string& stage) const;
+  // With `with_run_facts` false, times, threads and memory are left out: what
+  // remains depends only on the config, so identical configs give identical
+  // files whatever the machine or thread count.
+  std::string toJson(bool with_run_facts = true) const;
+};
+
+struct BakeOutput {
+  BakeFile file;
+  BakeReport report;
+};
+
+// Runs every stage for `config` on `threads` OpenMP threads (0: OpenMP's
+// default). The result is identical for every thread count.
+BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& progress);
+
+// The report as stored in the file header (see BakeReport::toJson).
+void setStoredReport(BakeOutput& bake, bool with_run_facts);
+
+}  // namespace skybake

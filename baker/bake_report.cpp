@@ -1,0 +1,45 @@
+#include <nlohmann/json.hpp>
+
+#include "baker/bake.h"
+
+namespace skybake {
+
+double BakeReport::stageSeconds(const std::string& name) const {
+  double total = 0.0;
+  for (const StageTiming& t : stages) {
+    if (t.stage == name) total += t.seconds;
+  }
+  return total;
+}
+
+std::string BakeReport::toJson(bool with_run_facts) const {
+  nlohmann::ordered_json j;
+  if (with_run_facts) {
+    j["threads"] = threads;
+    j["wall_seconds"] = wall_seconds;
+    j["cpu_seconds"] = cpu_seconds;
+    j["peak_memory_mib"] = peak_memory_mib;
+    nlohmann::ordered_json stage_totals = nlohmann::ordered_json::object();
+    for (const StageTiming& t : stages) stage_totals[t.stage] = stageSeconds(t.stage);
+    j["stage_seconds"] = stage_totals;
+    nlohmann::ordered_json per_stage = nlohmann::ordered_json::array();
+    for (const StageTiming& t : stages) {
+      per_stage.push_back({{"stage", t.stage}, {"order", t.order}, {"seconds", t.seconds}});
+    }
+  j["stages"] = per_stage;
+  }
+  nlohmann::ordered_json orders_json = nlohmann::ordered_json::array();
+  for (const OrderContribution& o : orders) {
+    orders_json.push_back({{"order", o.order},
+                           {"mean_radiance", {o.mean_radiance[0], o.mean_radiance[1], o.mean_radiance[2], o.mean_radiance[3]}},
+                           {"mean_irradiance", {o.mean_irradiance[0], o.mean_irradiance[1], o.mean_irradiance[2], o.mean_irradiance[3]}}});
+  }
+  j["orders"] = orders_json;
+  return j.dump(2);
+}
+
+void setStoredReport(BakeOutput& bake, bool with_run_facts) {
+  bake.file.report_json = bake.report.toJson(with_run_facts);
+}
+
+}  // namespace skybake

@@ -1,0 +1,79 @@
+// skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float]
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "baker/bake.h"
+#include "baker/cli/commands.h"
+#include "baker/cli/terminal_progress.h"
+#include "data_formats/config.h"
+#include "data_formats/error.h"
+
+namespace skybake::cli {
+namespace {
+
+struct BakeOptions {
+  std::string config_path;  // empty: the built-in Earth
+  std::string output_path;
+  int orders = 0;      // 0: from the config
+  int threads = 0;     // 0: all cores (OpenMP's default)
+  std::string precision;  // empty: from the config
+  bool reproducible = false;
+};
+
+std::string stageSummary(const BakeReport& report) {
+  std::string text;
+  for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering",
+                            "scattering_density", "indirect_irradiance", "multiple_scattering"}) {
+    text += fmt::format("{}{} {:.2f} s", text.empty() ? "" : ", ", stage, report.stageSeconds(stage));
+  }
+  return text;
+}
+
+void runBake(const BakeOptions& o) {
+  BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
+  const std::string source = o.config_path.empty() ? "<built-in earth>" : o.config_path;
+  if (o.orders != 0) config.bake.orders = o.orders;
+  if (o.precision == "half") config.bake.precision = StoragePrecision::Half;
+  if (o.precision == "float") config.bake.precision = StoragePrecision::Float;
+  validateConfig(config, source + " (with command-line overrides)");
+
+  const std::filesystem::path output(o.output_path);
+  const std::filesystem::path directory = output.parent_path().empty() ? "." : output.parent_path();
+  if (!std::filesystem::is_directory(directory)) {
+    throwBadInput(fmt::format("{}: output directory {} does not exist", o.output_path, directory.string()));
+  }
+
+  TerminalProgress progress;
+  BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
+  setStoredReport(bake, !o.reproducible);
+  writeBakeFile(output, bake.file);
+  const auto bytes = std::filesystem::file_size(output);
+  fmt::print(stderr, "skybake: baked '{}' ({} orders) into {} ({:.1f} MiB) in {:.2f} s on {} threads: {}\n",
+             config.name, config.bake.orders, o.output_path, bytes / (1024.0 * 1024.0),
+             bake.report.wall_seconds, bake.report.threads, stageSummary(bake.report));
+}
+
+}  // namespace
+
+Command addBakeCommand(CLI::App& app) {
+  auto options = std::make_shared<BakeOptions>();
+  CLI::App* cmd = app.add_subcommand("bake", "Bake an atmosphere into one OpenEXR file.");
+  cmd->add_option("config", options->config_path,
+                  "Atmosphere config (TOML, see data_formats/CONFIG.md). Without it, the built-in "
+                  "Earth (data_formats/presets/earth.toml).");
+  cmd->add_option("-o,--output", options->output_path, "Output bake file (.exr).")->required();
+  cmd->add_option("--orders", options->orders, "Scattering orders to compute (overrides bake.orders).")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--threads", options->threads, "Worker threads (default: all cores).")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--precision", options->precision,
+                  "Storage precision in the file (overrides bake.precision).")
+      ->check(CLI::IsMember({"half", "float"}));
+  cmd->add_flag("--reproducible", options->reproducible,
+                "Leave times, thread count and memory out of the file header, so the same config "
+                "always gives a byte-identical file.");
+  return {cmd, [options] { runBake(*options); }};
+}
+
+}  // namespace skybake::cli

@@ -1,0 +1,19 @@
+// The skybake subcommands. Each registers its options on the CLI11 app and
+// returns the function that runs it; errors are thrown as skybake::Error.
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace skybake::cli {
+
+struct Command {
+  CLI::App* subcommand;       // parsed() tells whether the user chose it
+  std::function<void()> run;  // runs it with the parsed options
+};
+
+Command addBakeCommand(CLI::App& app);
+Command addInfoCommand(CLI::App& app);
+
+}  // namespace skybake::cli

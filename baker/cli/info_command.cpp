@@ -1,0 +1,56 @@
+// skybake info FILE.exr: what a bake holds, from its header.
+#include <nlohmann/json.hpp>
+#include <fmt/format.h>
+
+#include "baker/cli/commands.h"
+#include "data_formats/bake_file.h"
+#include "data_formats/config.h"
+
+namespace skybake::cli {
+namespace {
+
+void runInfo(const std::string& path) {
+  const BakeFile bake = readBakeFile(path);
+  const BakeConfig& c = bake.config;
+  const TextureSizes& s = c.sizes;
+  fmt::print("file:          {}\n", path);
+  fmt::print("format:        skybake version {}\n", kBakeFormatVersion);
+  fmt::print("atmosphere:    {}\n", c.name);
+  std::string wavelengths;
+  for (double w : c.atmosphere.wavelengths_nm) wavelengths += fmt::format("{} nm  ", w);
+  fmt::print("channels:      {}\n", wavelengths);
+  fmt::print("radii:         bottom {} m, top {} m\n", c.atmosphere.bottom_radius_m, c.atmosphere.top_radius_m);
+  fmt::print("sun domain:    zenith 0 to {} deg\n", c.atmosphere.sun_max_zenith_deg);
+  fmt::print("orders:        {}\n", bake.orders_computed);
+  fmt::print("precision:     {}\n", c.bake.precision == StoragePrecision::Half ? "half" : "float");
+  fmt::print("transmittance: {} mu x {} r\n", s.transmittance_mu, s.transmittance_r);
+  fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
+  fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu,
+             s.scattering_mu_s, s.scattering_nu);
+
+  const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report_json, nullptr, false);
+  if (report.is_object() && report.contains("wall_seconds")) {
+    fmt::print("bake time:     {:.2f} s wall, {:.2f} s CPU, {} threads, peak memory {:.0f} MiB\n",
+               report.value("wall_seconds", 0.0), report.value("cpu_seconds", 0.0),
+               report.value("threads", 0), report.value("peak_memory_mib", 0.0));
+    if (report.contains("stage_seconds")) {
+      for (const auto& [stage, seconds] : report["stage_seconds"].items()) {
+        fmt::print("  {:<22} {:8.3f} s\n", stage, seconds.get<double>());
+      }
+    }
+  } else {
+    fmt::print("bake time:     not recorded (reproducible bake)\n");
+  }
+  fmt::print("\nparameters (TOML):\n{}", configToToml(c));
+}
+
+}  // namespace
+
+Command addInfoCommand(CLI::App& app) {
+  auto path = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("info", "Print a bake's parameters, sizes and bake report.");
+  cmd->add_option("file", *path, "Bake file (.exr).")->required();
+  return {cmd, [path] { runInfo(*path); }};
+}
+
+}  // namespace skybake::cli

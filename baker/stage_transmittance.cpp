@@ -1,0 +1,23 @@
+#include <omp.h>
+
+#include "baker/optical_depth.h"
+#include "baker/stages.h"
+
+namespace skybake {
+
+Texture2D computeTransmittanceTable(const StageContext& ctx) {
+  const TextureSizes& s = ctx.sampler.sizes();
+  Texture2D table(s.transmittance_mu, s.transmittance_r);
+  const AtmosphereMedia media(ctx.atmosphere);
+#pragma omp parallel for schedule(dynamic)
+  for (int i_r = 0; i_r < table.height; ++i_r) {
+    for (int i_mu = 0; i_mu < table.width; ++i_mu) {
+      const RMu rm = transmittanceTexelConfig(ctx.sampler.domain(), table.width, table.height, i_mu, i_r);
+      table.at(i_mu, i_r) = Spectrum(opticalDepthToTop(media, rm.r, rm.mu));
+    }
+    ctx.progress.advance(1);
+  }
+  return table;
+}
+
+}  // namespace skybake

@@ -1,0 +1,63 @@
+// The bake stages (Bruneton 2017). Each fills a table from earlier tables;
+// each texel is computed independently, so the result does not depend on how
+// texels are spread over threads.
+#pragma once
+
+#include "baker/progress.h"
+#include "data_formats/bake_file.h"
+#include "runtime/table_sampler.h"
+
+namespace skybake {
+
+struct StageContext {
+  const AtmosphereParameters& atmosphere;
+  const TableSampler& sampler;
+  ProgressSink& progress;
+};
+
+// Optical depth to the top boundary for every (r, mu) texel.
+Texture2D computeTransmittanceTable(const StageContext& ctx);
+
+// Irradiance from the sun (attenuated, disk partly below the horizon
+// included) on a horizontal surface at every (r, mu_s) texel.
+Texture2D computeDirectIrradianceTable(const StageContext& ctx, const Texture2D& optical_depth);
+
+// Single scattering of sunlight, one ray integral per texel. Rayleigh and Mie
+// are kept apart, each without its phase function.
+struct SingleScattering {
+  Spectrum rayleigh;
+  Spectrum mie;
+};
+SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth,
+                                         double r, double mu, double mu_s, double nu,
+                                         bool ray_intersects_ground);
+void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& optical_depth,
+                                   Texture4D& rayleigh, Texture4D& mie);
+
+// The radiance of one scattering order arriving at a point, seen looking in a
+// direction: single scattering with its phase functions applied for order 1,
+// that order's table after that.
+struct OrderRadiance {
+  int order;  // the scattering order whose radiance this gives, >= 1
+  const Texture4D& single_rayleigh;
+  const Texture4D& single_mie;
+  const Texture4D& multiple;  // that order's table when order >= 2
+  Spectrum radiance(const TableSampler& sampler, double r, double mu, double mu_s, double nu,
+                    bool ray_intersects_ground, double mie_g) const;
+};
+
+// Light scattered once more at each point, per unit length (W m^-3 sr^-1 nm^-1),
+// from the radiance of order n - 1 and, off the ground, the irradiance of
+// order n - 2 (`ground_irradiance`).
+Texture4D computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
+                                        const OrderRadiance& previous,
+                                        const Texture2D& ground_irradiance);
+
+// Irradiance on a horizontal surface from the sky radiance of one order.
+Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const OrderRadiance& order);
+
+// Radiance of order n: the scattering density integrated along each ray.
+Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
+                                         const Texture4D& density);
+
+}  // namespace skybake

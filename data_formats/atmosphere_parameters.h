@@ -1,0 +1,82 @@
+// The physical description of an atmosphere and the settings of one bake, in
+// SI units (metres, m^-1, radians, W m^-2 nm^-1). Filled by the config parser
+// (config_parse.cpp) or the built-in Earth, checked by validateConfig.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "spectrum.h"
+
+namespace skybake {
+
+// One layer of a density profile: the value at altitude h (metres above the
+// ground) is exp_term * exp(exp_scale * h) + linear_term * h + constant_term,
+// clamped to [0, 1].
+struct DensityLayer {
+  double width_m = 0.0;        // thickness; the last layer reaches the top
+  double exp_term = 0.0;       // dimensionless
+  double exp_scale = 0.0;      // m^-1
+  double linear_term = 0.0;    // m^-1
+  double constant_term = 0.0;  // dimensionless
+};
+
+// Layers stacked from the ground up. Empty means density 0 everywhere.
+using DensityProfile = std::vector<DensityLayer>;
+
+struct AtmosphereParameters {
+  std::vector<double> wavelengths_nm;  // 1..kMaxChannels, the channel order
+
+  double bottom_radius_m = 0.0;  // planet surface
+  double top_radius_m = 0.0;     // top of the atmosphere
+  Spectrum ground_albedo{0.0f};  // Lambertian, dimensionless
+
+  Spectrum sun_irradiance{0.0f};   // W m^-2 nm^-1 at the top of the atmosphere
+  double sun_angular_radius_rad = 0.0;
+  // The lowest sun the scattering tables cover. Kept in degrees, as the config
+  // key is, so that configs round-trip exactly; use sunMuSMin() in physics.
+  double sun_max_zenith_deg = 102.0;
+
+  Spectrum rayleigh_scattering{0.0f};  // m^-1 where density = 1
+  DensityProfile rayleigh_density;
+  Spectrum mie_scattering{0.0f};  // m^-1 where density = 1
+  Spectrum mie_extinction{0.0f};  // m^-1 where density = 1, >= scattering
+  double mie_phase_g = 0.0;       // Cornette-Shanks asymmetry
+  DensityProfile mie_density;
+  Spectrum absorption_extinction{0.0f};  // m^-1 where density = 1
+  DensityProfile absorption_density;
+
+  int channelCount() const { return static_cast<int>(wavelengths_nm.size()); }
+  // Cosine of sun_max_zenith_deg: the mu_s at the low end of the scattering domain.
+  double sunMuSMin() const { return std::cos(sun_max_zenith_deg * (M_PI / 180.0)); }
+};
+
+// Texel counts. Transmittance and irradiance are 2D (mu or mu_s across, r
+// down); scattering is 4D (r, mu, mu_s, nu).
+struct TextureSizes {
+  int transmittance_mu = 256;
+  int transmittance_r = 64;
+  int irradiance_mu_s = 64;
+  int irradiance_r = 16;
+  int scattering_r = 32;
+  int scattering_mu = 128;  // even: half for rays that hit the ground
+  int scattering_mu_s = 32;
+  int scattering_nu = 8;
+};
+
+enum class StoragePrecision { Float, Half };
+
+struct BakeSettings {
+  int orders = 4;  // scattering orders: 1 = single scattering only
+  StoragePrecision precision = StoragePrecision::Float;
+};
+
+struct BakeConfig {
+  std::string name = "custom";
+  AtmosphereParameters atmosphere;
+  TextureSizes sizes;
+  BakeSettings bake;
+};
+
+}  // namespace skybake

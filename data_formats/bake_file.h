@@ -1,0 +1,53 @@
+// The bake file: one multi-part OpenEXR holding every table of a bake and,
+// in `skybake:` header attributes, everything needed to use it. FORMAT.md is
+// the specification.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "atmosphere_parameters.h"
+#include "textures.h"
+
+namespace skybake {
+
+// Bumped whenever the meaning of a part or attribute changes; readers refuse
+// versions they do not know.
+inline constexpr int kBakeFormatVersion = 1;
+
+struct BakeTables {
+  // Optical depth (dimensionless) from (r, mu) to the top boundary, per channel.
+  // Stored as optical depth rather than transmittance so that the transmittance
+  // between two points is exp(-(difference)) and never 0/0 in thick atmospheres.
+  Texture2D transmittance;
+  // Rayleigh single scattering plus all multiple scattering orders, radiance
+  // divided by the Rayleigh phase function: W m^-2 nm^-1 (W m^-2 sr^-1 nm^-1 / sr^-1).
+  Texture4D scattering;
+  // Single Mie scattering divided by the Mie phase function.
+  Texture4D single_mie;
+  // Sky irradiance on a horizontal surface (direct sun excluded), W m^-2 nm^-1.
+  Texture2D irradiance;
+};
+
+struct BakeFile {
+  BakeConfig config;         // every parameter; sizes equal the tables' sizes
+  int orders_computed = 0;   // scattering orders in `scattering`
+  std::string report_json;   // the bake report, JSON text (opaque here)
+  BakeTables tables;
+};
+
+// Writes atomically: a temporary file beside `path`, renamed into place once
+// complete. On failure no file is left behind and an existing `path` is intact.
+// Throws Error(BadInput) for an unwritable destination, Error(Internal) otherwise.
+void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake);
+
+// Reads a bake back, every attribute included. Throws Error(BadInput) naming
+// the file and the reason for a missing, truncated, corrupt, foreign or
+// unknown-version file.
+BakeFile readBakeFile(const std::filesystem::path& path);
+
+// Channel name in the file for a wavelength: "680nm", "532p5nm" ('.' is the
+// EXR layer separator, so fractions use 'p').
+std::string channelName(double wavelength_nm);
+
+}  // namespace skybake

@@ -1,0 +1,155 @@
+// Bake file writer. OpenEXR writes straight from the tables' float4 storage
+// (a stride of one Spectrum per texel), converting to half on request.
+#include <unistd.h>
+
+#include <system_error>
+#include <vector>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfDoubleAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfMultiPartOutputFile.h>
+#include <OpenEXR/ImfOutputPart.h>
+#include <OpenEXR/ImfPartType.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <fmt/format.h>
+
+#include "bake_file.h"
+#include "bake_file_attributes.h"
+#include "config.h"
+#include "error.h"
+#include "texture_mapping.h"
+
+namespace skybake {
+
+std::string channelName(double wavelength_nm) {
+  std::string text = fmt::format("{}", wavelength_nm);
+  for (char& ch : text) {
+    if (ch == '.') ch = 'p';
+  }
+  return text + "nm";
+}
+
+namespace {
+
+using namespace bake_file;
+
+struct PartToWrite {
+  const char* name;
+  const char* content;
+  const char* units;
+  const std::vector<Spectrum>* texels;
+  int width;
+  int height;
+  std::string size_text;
+};
+
+// Parts of a multi-part file must share one display window; each part's data
+// window is its own table size.
+Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
+                       const Imath::Box2i& display_window) {
+  const AtmosphereParameters& a = bake.config.atmosphere;
+  Imf::Header header(display_window, Imath::Box2i({0, 0}, {part.width - 1, part.height - 1}));
+  header.setName(part.name);
+  header.setType(Imf::SCANLINEIMAGE);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  const Imf::PixelType type =
+      bake.config.bake.precision == StoragePrecision::Half ? Imf::HALF : Imf::FLOAT;
+  for (double wavelength : a.wavelengths_nm) {
+    header.channels().insert(channelName(wavelength), Imf::Channel(type));
+  }
+  std::string wavelengths;
+  for (double w : a.wavelengths_nm) wavelengths += fmt::format("{}{}", wavelengths.empty() ? "" : " ", w);
+  const AtmosphereDomain domain = AtmosphereDomain::fromParameters(a);
+  header.insert(kAttrFormatVersion, Imf::IntAttribute(kBakeFormatVersion));
+  header.insert(kAttrContent, Imf::StringAttribute(part.content));
+  header.insert(kAttrUnits, Imf::StringAttribute(part.units));
+  header.insert(kAttrTableSize, Imf::StringAttribute(part.size_text));
+  header.insert(kAttrWavelengths, Imf::StringAttribute(wavelengths));
+  header.insert(kAttrBottomRadius, Imf::DoubleAttribute(domain.bottom_radius_m));
+  header.insert(kAttrTopRadius, Imf::DoubleAttribute(domain.top_radius_m));
+  header.insert(kAttrMuSMin, Imf::DoubleAttribute(domain.mu_s_min));
+  header.insert(kAttrOrders, Imf::IntAttribute(bake.orders_computed));
+  header.insert(kAttrConfig, Imf::StringAttribute(configToToml(bake.config)));
+  header.insert(kAttrBakeReport, Imf::StringAttribute(bake.report_json));
+  return header;
+}
+
+void writeParts(const std::string& file_name, const BakeFile& bake,
+                const std::vector<PartToWrite>& parts) {
+  Imath::Box2i display_window({0, 0}, {0, 0});
+  for (const PartToWrite& part : parts) {
+    display_window.extendBy(Imath::V2i(part.width - 1, part.height - 1));
+  }
+  std::vector<Imf::Header> headers;
+  for (const PartToWrite& part : parts) headers.push_back(makeHeader(bake, part, display_window));
+  Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
+  const int channels = bake.config.atmosphere.channelCount();
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const PartToWrite& part = parts[i];
+    Imf::OutputPart out(file, static_cast<int>(i));
+    Imf::FrameBuffer frame;
+    char* base = const_cast<char*>(reinterpret_cast<const char*>(part.texels->data()));
+    for (int c = 0; c < channels; ++c) {
+      frame.insert(channelName(bake.config.atmosphere.wavelengths_nm[c]),
+                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum),
+                              sizeof(Spectrum) * part.width));
+    }
+    out.setFrameBuffer(frame);
+    out.writePixels(part.height);
+  }
+}
+
+}  // namespace
+
+void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake) {
+  const BakeTables& t = bake.tables;
+  const std::vector<PartToWrite> parts = {
+      {kPartTransmittance, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
+       "dimensionless", &t.transmittance.texels, t.transmittance.width, t.transmittance.height,
+       fmt::format("mu={} r={}", t.transmittance.width, t.transmittance.height)},
+      {kPartScattering,
+       "Rayleigh single plus multiple scattering radiance divided by the Rayleigh phase function",
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.scattering.texels,
+       t.scattering.atlasWidth(), t.scattering.atlasHeight(),
+       fmt::format("r={} mu={} mu_s={} nu={}", t.scattering.r_size, t.scattering.mu_size,
+                   t.scattering.mu_s_size, t.scattering.nu_size)},
+      {kPartSingleMie, "single Mie scattering radiance divided by the Mie phase function",
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_mie.texels,
+       t.single_mie.atlasWidth(), t.single_mie.atlasHeight(),
+       fmt::format("r={} mu={} mu_s={} nu={}", t.single_mie.r_size, t.single_mie.mu_size,
+                   t.single_mie.mu_s_size, t.single_mie.nu_size)},
+      {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded",
+       "W m^-2 nm^-1", &t.irradiance.texels, t.irradiance.width, t.irradiance.height,
+       fmt::format("mu_s={} r={}", t.irradiance.width, t.irradiance.height)},
+  };
+  for (const PartToWrite& part : parts) {
+    if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0) {
+      throw Error(ErrorKind::Internal, fmt::format("{}: part {} has no data of its size", path.string(), part.name));
+    }
+  }
+
+  // The temporary file sits beside the destination so the rename is atomic
+  // (same file system) and a crash leaves only an obviously temporary file.
+  const std::filesystem::path temp =
+      path.parent_path() / fmt::format(".{}.tmp-{}", path.filename().string(), ::getpid());
+  try {
+    writeParts(temp.string(), bake, parts);
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throwBadInput(fmt::format("{}: cannot write bake file: {}", path.string(), e.what()));
+  }
+  std::error_code error;
+  std::filesystem::rename(temp, path, error);
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throwBadInput(fmt::format("{}: cannot move the finished bake into place: {}", path.string(),
+                              error.message()));
+  }
+}
+
+}  // namespace skybake

@@ -1,0 +1,33 @@
+// Reading, checking and writing bake configs (TOML). data_formats/CONFIG.md
+// documents every key.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "atmosphere_parameters.h"
+
+namespace skybake {
+
+// Parses TOML text. `source` names the text in error messages (a file name).
+// Throws Error(BadInput) naming source, line, key, value and reason for syntax
+// errors, unknown or missing keys, wrong types and non-finite numbers, then
+// runs validateConfig.
+BakeConfig parseConfig(std::string_view toml_text, const std::string& source);
+
+// Reads and parses a config file.
+BakeConfig loadConfigFile(const std::filesystem::path& path);
+
+// Checks physical sense: top > bottom, non-negative coefficients, |g| < 1,
+// sizes in range, ... Throws Error(BadInput) "<source>: <key> = <value>: <reason>".
+void validateConfig(const BakeConfig& config, const std::string& source);
+
+// The canonical TOML of a config: every key written, numbers in shortest
+// round-trip form, so parseConfig(configToToml(c)) == c exactly.
+std::string configToToml(const BakeConfig& config);
+
+// Bruneton's Earth (data_formats/presets/earth.toml, compiled in).
+BakeConfig builtinEarthConfig();
+
+}  // namespace skybake

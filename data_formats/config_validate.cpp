@@ -1,0 +1,162 @@
+// Physical and practical limits on a config. Each check names the key, the
+// value and why it is refused.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "config.h"
+#include "error.h"
+
+namespace skybake {
+namespace {
+
+// Planet radii outside this range are not planets skybake can bake: below a
+// metre the float texture coordinates lose all resolution, above 1e10 m (a
+// hundred solar radii) the distances overflow float precision in the runtime.
+constexpr double kMinPlanetRadius_m = 1.0;
+constexpr double kMaxPlanetRadius_m = 1.0e10;
+// The sun's angular radius: beyond 0.5 rad the small-disk approximation of the
+// direct irradiance falls apart.
+constexpr double kMaxSunAngularRadius_rad = 0.5;
+// The lowest sun the scattering table covers, as a zenith angle: below 20 deg
+// there is no domain left to tabulate, above 180 deg is not an angle.
+constexpr double kMinSunMaxZenith_deg = 20.0;
+constexpr double kMaxSunMaxZenith_deg = 180.0;
+// Texture sizes: below 2 texels per axis nothing can be interpolated; the upper
+// bounds keep a single table below a few GiB.
+constexpr int kMin2DSize = 2;
+constexpr int kMax2DSize = 8192;
+constexpr int kMax4DAxis = 1024;
+constexpr long long kMaxScatteringTexels = 1LL << 28;  // 4 GiB of float4
+constexpr int kMaxOrders = 1000;
+
+class Checker {
+ public:
+  explicit Checker(const std::string& source) : source_(source) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& value,
+                         const std::string& reason) const {
+    throwBadInput(fmt::format("{}: {} = {}: {}", source_, key, value, reason));
+  }
+
+  void finite(const std::string& key, double v) const {
+    if (!std::isfinite(v)) fail(key, fmt::format("{}", v), "must be finite");
+  }
+
+  void nonNegative(const std::string& key, const Spectrum& s, int channels) const {
+    for (int c = 0; c < channels; ++c) {
+      finite(fmt::format("{}[{}]", key, c), s[c]);
+      if (s[c] < 0.0f) fail(fmt::format("{}[{}]", key, c), fmt::format("{}", s[c]),
+                            "must be >= 0");
+    }
+  }
+
+  void range(const std::string& key, double v, double lo, double hi) const {
+    finite(key, v);
+    if (v < lo || v > hi) fail(key, fmt::format("{}", v), fmt::format("must be in [{}, {}]", lo, hi));
+  }
+
+  void profile(const std::string& key, const DensityProfile& layers) const {
+    for (size_t i = 0; i < layers.size(); ++i) {
+      const std::string p = fmt::format("{}.density[{}].", key, i);
+      const DensityLayer& l = layers[i];
+      finite(p + "width_m", l.width_m);
+      if (l.width_m < 0.0) fail(p + "width_m", fmt::format("{}", l.width_m), "must be >= 0");
+      finite(p + "exp_term", l.exp_term);
+      finite(p + "exp_scale", l.exp_scale);
+      finite(p + "linear_term", l.linear_term);
+      finite(p + "constant_term", l.constant_term);
+    }
+  }
+
+ private:
+  const std::string& source_;
+};
+
+}  // namespace
+
+void validateConfig(const BakeConfig& config, const std::string& source) {
+  const Checker check(source);
+  const AtmosphereParameters& a = config.atmosphere;
+  const int n = a.channelCount();
+  if (n < 1 || n > kMaxChannels) {
+    check.fail("channels.wavelengths_nm", fmt::format("{} values", n),
+               fmt::format("needs 1 to {} wavelengths", kMaxChannels));
+  }
+  for (int c = 0; c < n; ++c) {
+    const std::string key = fmt::format("channels.wavelengths_nm[{}]", c);
+    check.finite(key, a.wavelengths_nm[c]);
+    if (a.wavelengths_nm[c] <= 0.0) check.fail(key, fmt::format("{}", a.wavelengths_nm[c]), "must be > 0");
+  }
+
+  check.range("planet.bottom_radius_m", a.bottom_radius_m, kMinPlanetRadius_m, kMaxPlanetRadius_m);
+  check.finite("planet.top_radius_m", a.top_radius_m);
+  if (!(a.top_radius_m > a.bottom_radius_m)) {
+    check.fail("planet.top_radius_m", fmt::format("{}", a.top_radius_m),
+               fmt::format("must be greater than planet.bottom_radius_m ({})", a.bottom_radius_m));
+  }
+  check.range("planet.top_radius_m", a.top_radius_m, kMinPlanetRadius_m, 2.0 * kMaxPlanetRadius_m);
+  check.nonNegative("planet.ground_albedo", a.ground_albedo, n);
+  for (int c = 0; c < n; ++c) {
+    if (a.ground_albedo[c] > 1.0f) {
+      check.fail(fmt::format("planet.ground_albedo[{}]", c), fmt::format("{}", a.ground_albedo[c]),
+                 "must be <= 1 (a surface cannot reflect more than it receives)");
+    }
+  }
+
+  check.nonNegative("sun.irradiance", a.sun_irradiance, n);
+  check.range("sun.angular_radius_rad", a.sun_angular_radius_rad, 0.0, kMaxSunAngularRadius_rad);
+  check.range("sun.max_zenith_deg", a.sun_max_zenith_deg, kMinSunMaxZenith_deg,
+              kMaxSunMaxZenith_deg);
+
+  check.nonNegative("rayleigh.scattering", a.rayleigh_scattering, n);
+  check.profile("rayleigh", a.rayleigh_density);
+  check.nonNegative("mie.scattering", a.mie_scattering, n);
+  check.nonNegative("mie.extinction", a.mie_extinction, n);
+  for (int c = 0; c < n; ++c) {
+    if (a.mie_extinction[c] < a.mie_scattering[c]) {
+      check.fail(fmt::format("mie.extinction[{}]", c), fmt::format("{}", a.mie_extinction[c]),
+                 fmt::format("must be >= mie.scattering[{}] ({}): extinction is scattering plus "
+                             "absorption",
+                             c, a.mie_scattering[c]));
+    }
+  }
+  check.finite("mie.phase_g", a.mie_phase_g);
+  if (!(std::abs(a.mie_phase_g) < 1.0)) {
+    check.fail("mie.phase_g", fmt::format("{}", a.mie_phase_g), "must be in (-1, 1)");
+  }
+  check.profile("mie", a.mie_density);
+  check.nonNegative("absorption.extinction", a.absorption_extinction, n);
+  check.profile("absorption", a.absorption_density);
+
+  const TextureSizes& s = config.sizes;
+  auto size = [&](const std::string& key, int v, int lo, int hi) {
+    if (v < lo || v > hi) {
+      check.fail(key, fmt::format("{}", v), fmt::format("must be in [{}, {}]", lo, hi));
+    }
+  };
+  size("resolution.transmittance[0]", s.transmittance_mu, kMin2DSize, kMax2DSize);
+  size("resolution.transmittance[1]", s.transmittance_r, kMin2DSize, kMax2DSize);
+  size("resolution.irradiance[0]", s.irradiance_mu_s, kMin2DSize, kMax2DSize);
+  size("resolution.irradiance[1]", s.irradiance_r, kMin2DSize, kMax2DSize);
+  size("resolution.scattering.r", s.scattering_r, 2, kMax4DAxis);
+  size("resolution.scattering.mu", s.scattering_mu, 4, kMax4DAxis);
+  size("resolution.scattering.mu_s", s.scattering_mu_s, 2, kMax4DAxis);
+  size("resolution.scattering.nu", s.scattering_nu, 2, kMax4DAxis);
+  if (s.scattering_mu % 2 != 0) {
+    check.fail("resolution.scattering.mu", fmt::format("{}", s.scattering_mu),
+               "must be even: half the rows hold rays that hit the ground, half those that do not");
+  }
+  const long long texels = 1LL * s.scattering_r * s.scattering_mu * s.scattering_mu_s * s.scattering_nu;
+  if (texels > kMaxScatteringTexels) {
+    check.fail("resolution.scattering", fmt::format("{} texels", texels),
+               fmt::format("more than {} texels per table", kMaxScatteringTexels));
+  }
+
+  if (config.bake.orders < 1 || config.bake.orders > kMaxOrders) {
+    check.fail("bake.orders", fmt::format("{}", config.bake.orders),
+               fmt::format("must be in [1, {}]", kMaxOrders));
+  }
+}
+
+}  // namespace skybake

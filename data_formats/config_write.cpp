@@ -1,0 +1,79 @@
+// BakeConfig -> canonical TOML. Used for the file header (the parameters travel
+// with the bake) and for `skybake info`. fmt's "{}" prints the shortest text
+// that reads back to the same double, so the round trip is exact.
+#include <fmt/format.h>
+
+#include "config.h"
+
+namespace skybake {
+namespace {
+
+template <typename Real>  // float or double: each prints its own shortest form
+std::string numberText(Real v) {
+  // TOML needs a '.' or exponent to read a float back as a float.
+  std::string text = fmt::format("{}", v);
+  if (text.find_first_of(".eE") == std::string::npos) text += ".0";
+  return text;
+}
+
+// Floats print in their own shortest form, which reads back to the same float.
+std::string spectrumList(const Spectrum& s, int n) {
+  std::string out = "[";
+  for (int c = 0; c < n; ++c) out += fmt::format("{}{}", c ? ", " : "", numberText(s[c]));
+  return out + "]";
+}
+
+std::string profileList(const DensityProfile& layers) {
+  std::string out = "[";
+  for (size_t i = 0; i < layers.size(); ++i) {
+    const DensityLayer& l = layers[i];
+    out += fmt::format(
+        "{}{{ width_m = {}, exp_term = {}, exp_scale = {}, linear_term = {}, constant_term = {} }}",
+        i ? ", " : "", numberText(l.width_m), numberText(l.exp_term), numberText(l.exp_scale),
+        numberText(l.linear_term), numberText(l.constant_term));
+  }
+  return out + "]";
+}
+
+}  // namespace
+
+std::string configToToml(const BakeConfig& config) {
+  const AtmosphereParameters& a = config.atmosphere;
+  const int n = a.channelCount();
+  std::string wavelengths = "[";
+  for (int c = 0; c < n; ++c) wavelengths += fmt::format("{}{}", c ? ", " : "", numberText(a.wavelengths_nm[c]));
+  wavelengths += "]";
+  const TextureSizes& s = config.sizes;
+  std::string name;
+  for (char ch : config.name) {  // TOML basic string escaping
+    if (ch == '"' || ch == '\\') name += '\\';
+    if (static_cast<unsigned char>(ch) < 0x20) {
+      name += fmt::format("\\u{:04x}", static_cast<unsigned char>(ch));
+      continue;
+    }
+    name += ch;
+  }
+  return fmt::format(
+      "name = \"{}\"\n\n"
+      "[channels]\nwavelengths_nm = {}\n\n"
+      "[planet]\nbottom_radius_m = {}\ntop_radius_m = {}\nground_albedo = {}\n\n"
+      "[sun]\nirradiance = {}\nangular_radius_rad = {}\nmax_zenith_deg = {}\n\n"
+      "[rayleigh]\nscattering = {}\ndensity = {}\n\n"
+      "[mie]\nscattering = {}\nextinction = {}\nphase_g = {}\ndensity = {}\n\n"
+      "[absorption]\nextinction = {}\ndensity = {}\n\n"
+      "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
+      "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n\n"
+      "[bake]\norders = {}\nprecision = \"{}\"\n",
+      name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
+      spectrumList(a.ground_albedo, n), spectrumList(a.sun_irradiance, n),
+      numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
+      spectrumList(a.rayleigh_scattering, n), profileList(a.rayleigh_density),
+      spectrumList(a.mie_scattering, n), spectrumList(a.mie_extinction, n),
+      numberText(a.mie_phase_g), profileList(a.mie_density),
+      spectrumList(a.absorption_extinction, n), profileList(a.absorption_density),
+      s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r,
+      s.scattering_mu, s.scattering_mu_s, s.scattering_nu, config.bake.orders,
+      config.bake.precision == StoragePrecision::Half ? "half" : "float");
+}
+
+}  // namespace skybake

@@ -1,0 +1,86 @@
+// Inverse maps: texel index -> the configuration at the texel's centre. The
+// bake evaluates each table there, so forward(inverse(texel)) == texel is the
+// round-trip property the tests check.
+#include "texture_mapping.h"
+
+namespace skybake {
+namespace {
+
+double texelCentre(int index, int size) { return (index + 0.5) / size; }
+
+// Cosine of a ray from r whose distance to the top boundary is dist; the ray
+// with dist = 0 is one starting on the top boundary going straight up.
+double muFromDistanceToTop(double r, double dist, double rho, double H) {
+  return dist == 0.0 ? 1.0 : clampCosine((H * H - rho * rho - dist * dist) / (2.0 * r * dist));
+}
+
+}  // namespace
+
+RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r, int i_mu,
+                             int i_r) {
+  const double x_mu = unitRangeFromTextureCoord(texelCentre(i_mu, size_mu), size_mu);
+  const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
+  const double H = d.horizonToTopDistance();
+  const double rho = H * x_r;
+  const double r = std::sqrt(rho * rho + d.bottom_radius_m * d.bottom_radius_m);
+  const double d_min = d.top_radius_m - r;
+  const double d_max = rho + H;
+  const double dist = d_min + x_mu * (d_max - d_min);
+  return {r, muFromDistanceToTop(r, dist, rho, H)};
+}
+
+RMu irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
+                          int i_r) {
+  const double x_mu_s = unitRangeFromTextureCoord(texelCentre(i_mu_s, size_mu_s), size_mu_s);
+  const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
+  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m),
+          clampCosine(2.0 * x_mu_s - 1.0)};
+}
+
+double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r) {
+  const double H = d.horizonToTopDistance();
+  const double rho = H * unitRangeFromTextureCoord(texelCentre(i_r, s.r), s.r);
+  return std::sqrt(rho * rho + d.bottom_radius_m * d.bottom_radius_m);
+}
+
+double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_mu_s) {
+  const double x_mu_s = unitRangeFromTextureCoord(texelCentre(i_mu_s, s.mu_s), s.mu_s);
+  const double H = d.horizonToTopDistance();
+  const double d_min = d.top_radius_m - d.bottom_radius_m;
+  const double d_max = H;
+  const double A = (distanceToOuterSphere(d.bottom_radius_m, d.mu_s_min, d.top_radius_m) - d_min) /
+                   (d_max - d_min);
+  const double a = (A - x_mu_s * A) / (1.0 + x_mu_s * A);
+  const double dist = d_min + std::min(a, A) * (d_max - d_min);
+  return dist == 0.0 ? 1.0
+                     : clampCosine((H * H - dist * dist) / (2.0 * d.bottom_radius_m * dist));
+}
+
+ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s,
+                                            int i_r, int i_mu, int i_mu_s, int i_nu) {
+  const double H = d.horizonToTopDistance();
+  const double r = rFromScatteringTexel(d, s, i_r);
+  const double rho = d.distanceToHorizon(r);
+  const double u_mu = texelCentre(i_mu, s.mu);
+  double mu;
+  bool ground;
+  if (u_mu < 0.5) {
+    const double d_min = r - d.bottom_radius_m;
+    const double d_max = rho;
+    const double dist = d_min + (d_max - d_min) * unitRangeFromTextureCoord(1.0 - 2.0 * u_mu, s.mu / 2);
+    mu = dist == 0.0 ? -1.0 : clampCosine(-(rho * rho + dist * dist) / (2.0 * r * dist));
+    ground = true;
+  } else {
+    const double d_min = d.top_radius_m - r;
+    const double d_max = rho + H;
+    const double dist = d_min + (d_max - d_min) * unitRangeFromTextureCoord(2.0 * u_mu - 1.0, s.mu / 2);
+    mu = muFromDistanceToTop(r, dist, rho, H);
+    ground = false;
+  }
+  const double mu_s = muSFromScatteringTexel(d, s, i_mu_s);
+  // nu texels sit at -1 + 2 i / (nu_size - 1): both ends are tabulated.
+  const double nu = clampCosine(-1.0 + 2.0 * i_nu / (s.nu - 1));
+  return {r, mu, mu_s, clampNu(nu, mu, mu_s), ground};
+}
+
+}  // namespace skybake

@@ -1,0 +1,172 @@
+// The parameterization contract between baker and runtime: where in each table
+// a geometric configuration (r, mu, mu_s, nu) lives. Follows Bruneton (2017):
+//  - r maps rho = sqrt(r^2 - bottom^2) over H = sqrt(top^2 - bottom^2), which
+//    puts texels close together near the ground where the sky changes fastest;
+//  - mu maps the distance to the boundary the ray ends on between its minimum
+//    and maximum for that r; in 4D, rays that hit the ground take the lower
+//    half of the mu axis and the others the upper half, so no lookup ever
+//    interpolates across the horizon;
+//  - mu_s maps a distance-based coordinate that puts texels near the horizon
+//    and stops at mu_s_min;
+//  - nu is linear in [-1, 1].
+// Texel centres land exactly on the domain ends (textureCoordFromUnitRange).
+// Lookups: the forward maps (inline, hot in the runtime). Bakes: the inverse
+// maps from a texel index to the configuration at its centre.
+#pragma once
+
+#include "atmosphere_parameters.h"
+#include "ray_sphere.h"
+
+namespace skybake {
+
+// The part of the atmosphere's geometry that the parameterization needs.
+struct AtmosphereDomain {
+  double bottom_radius_m = 0.0;
+  double top_radius_m = 0.0;
+  double mu_s_min = -1.0;
+
+  static AtmosphereDomain fromParameters(const AtmosphereParameters& a) {
+    return {a.bottom_radius_m, a.top_radius_m, a.sunMuSMin()};
+  }
+  // Distance from the ground to the top boundary along the horizontal: the
+  // longest path a ray that does not hit the ground spends above one point.
+  double horizonToTopDistance() const {
+    return std::sqrt(top_radius_m * top_radius_m - bottom_radius_m * bottom_radius_m);
+  }
+  // rho: the distance to the horizon from radius r.
+  double distanceToHorizon(double r) const {
+    return safeSqrt(r * r - bottom_radius_m * bottom_radius_m);
+  }
+};
+
+// [0, 1] -> texture coordinate whose texel centres hit 0 and 1 exactly.
+inline double textureCoordFromUnitRange(double x, int size) {
+  return 0.5 / size + x * (1.0 - 1.0 / size);
+}
+inline double unitRangeFromTextureCoord(double u, int size) {
+  return (u - 0.5 / size) / (1.0 - 1.0 / size);
+}
+
+// Guards 0/0 where a range degenerates to a point (r = bottom in the ground
+// half, r = top in the sky half): the position in an empty range is 0.
+inline double fractionOfRange(double value, double lo, double hi) {
+  return hi > lo ? (value - lo) / (hi - lo) : 0.0;
+}
+
+// ---- transmittance (2D: u = mu across, v = r down) ----
+
+struct TextureCoord2D {
+  double u;
+  double v;
+};
+
+inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int size_mu, int size_r,
+                                                double r, double mu) {
+  const double H = d.horizonToTopDistance();
+  const double rho = d.distanceToHorizon(r);
+  const double dist = distanceToOuterSphere(r, mu, d.top_radius_m);
+  const double d_min = d.top_radius_m - r;
+  const double d_max = rho + H;
+  return {textureCoordFromUnitRange(fractionOfRange(dist, d_min, d_max), size_mu),
+          textureCoordFromUnitRange(rho / H, size_r)};
+}
+
+// ---- irradiance (2D: u = mu_s across, v = r down) ----
+
+inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s,
+                                              int size_r, double r, double mu_s) {
+  const double x_r = (r - d.bottom_radius_m) / (d.top_radius_m - d.bottom_radius_m);
+  return {textureCoordFromUnitRange(mu_s * 0.5 + 0.5, size_mu_s),
+          textureCoordFromUnitRange(x_r, size_r)};
+}
+
+// ---- scattering (4D) ----
+
+struct ScatteringCoord {
+  double u_nu;    // [0, 1], linear in nu; texel i sits at i / (nu_size - 1)
+  double u_mu_s;  // texture coordinate
+  double u_mu;    // texture coordinate; < 0.5 for rays that hit the ground
+  double u_r;     // texture coordinate
+};
+
+struct ScatteringSizes {
+  int r;
+  int mu;
+  int mu_s;
+  int nu;
+  static ScatteringSizes fromTextureSizes(const TextureSizes& s) {
+    return {s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu};
+  }
+};
+
+inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, double mu_s) {
+  const double H = d.horizonToTopDistance();
+  const double d_min = d.top_radius_m - d.bottom_radius_m;
+  const double d_max = H;
+  const double a = (distanceToOuterSphere(d.bottom_radius_m, mu_s, d.top_radius_m) - d_min) /
+                   (d_max - d_min);
+  const double A = (distanceToOuterSphere(d.bottom_radius_m, d.mu_s_min, d.top_radius_m) - d_min) /
+                   (d_max - d_min);
+  // a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) / (1 + a) compresses the
+  // high sun and spreads the horizon, where the sky changes fastest.
+  return textureCoordFromUnitRange(A > 0.0 ? std::max(1.0 - a / A, 0.0) / (1.0 + a) : 0.0,
+                                   size_mu_s);
+}
+
+inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
+                                                   const ScatteringSizes& s, double r, double mu,
+                                                   double mu_s, double nu,
+                                                   bool ray_intersects_ground) {
+  const double H = d.horizonToTopDistance();
+  const double rho = d.distanceToHorizon(r);
+  const double u_r = textureCoordFromUnitRange(rho / H, s.r);
+
+  const double r_mu = r * mu;
+  const double discriminant = r_mu * r_mu - r * r + d.bottom_radius_m * d.bottom_radius_m;
+  double u_mu;
+  if (ray_intersects_ground) {
+    // Distance to the ground, between r - bottom (straight down) and rho (the horizon).
+    const double dist = -r_mu - safeSqrt(discriminant);
+    const double x = fractionOfRange(dist, r - d.bottom_radius_m, rho);
+    u_mu = 0.5 - 0.5 * textureCoordFromUnitRange(x, s.mu / 2);
+  } else {
+    // Distance to the top, between top - r (straight up) and rho + H (the horizon).
+    const double dist = -r_mu + safeSqrt(discriminant + H * H);
+    const double x = fractionOfRange(dist, d.top_radius_m - r, rho + H);
+    u_mu = 0.5 + 0.5 * textureCoordFromUnitRange(x, s.mu / 2);
+  }
+  return {(nu + 1.0) * 0.5, scatteringCoordMuS(d, s.mu_s, mu_s), u_mu, u_r};
+}
+
+// The configuration at the centre of a texel.
+struct ScatteringTexelConfig {
+  double r;
+  double mu;
+  double mu_s;
+  double nu;
+  bool ray_intersects_ground;
+};
+
+double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r);
+double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_mu_s);
+ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s,
+                                            int i_r, int i_mu, int i_mu_s, int i_nu);
+
+struct RMu {
+  double r;
+  double mu;
+};
+RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r, int i_mu, int i_r);
+// (r, mu_s) at an irradiance texel centre.
+RMu irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
+                          int i_r);
+
+// The range of nu a direction with zenith cosine mu can make with a sun at
+// zenith cosine mu_s; texels outside it describe impossible geometry and are
+// evaluated at the nearest possible nu.
+inline double clampNu(double nu, double mu, double mu_s) {
+  const double spread = safeSqrt((1.0 - mu * mu) * (1.0 - mu_s * mu_s));
+  return std::clamp(nu, mu * mu_s - spread, mu * mu_s + spread);
+}
+
+}  // namespace skybake

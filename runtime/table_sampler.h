@@ -1,0 +1,140 @@
+// Lookups in the baked tables: the one place that turns a geometric
+// configuration into interpolated table values. The baker reads earlier
+// scattering orders through these same functions, so bake and lookups share
+// the parameterization exactly.
+#pragma once
+
+#include <cmath>
+
+#include "data_formats/bake_file.h"
+#include "data_formats/texture_mapping.h"
+#include "runtime/phase_functions.h"
+
+namespace skybake {
+
+// Linear interpolation position on an axis of `size` texels whose centres sit
+// at (i + 0.5) / size: the two neighbours and the weight of the upper one.
+struct AxisLerp {
+  int i0;
+  int i1;
+  float w1;
+};
+
+inline AxisLerp axisLerpFromTextureCoord(double u, int size) {
+  const double x = std::clamp(u * size - 0.5, 0.0, static_cast<double>(size - 1));
+  const int i0 = std::min(static_cast<int>(x), size - 2 >= 0 ? size - 2 : 0);
+  return {i0, std::min(i0 + 1, size - 1), static_cast<float>(x - i0)};
+}
+
+// nu texels sit at i / (size - 1) in u_nu: both ends tabulated.
+inline AxisLerp axisLerpNu(double u_nu, int size) {
+  const double x = std::clamp(u_nu * (size - 1), 0.0, static_cast<double>(size - 1));
+  const int i0 = std::min(static_cast<int>(x), size - 2);
+  return {i0, i0 + 1, static_cast<float>(x - i0)};
+}
+
+inline Spectrum sampleBilinear(const Texture2D& t, TextureCoord2D uv) {
+  const AxisLerp x = axisLerpFromTextureCoord(uv.u, t.width);
+  const AxisLerp y = axisLerpFromTextureCoord(uv.v, t.height);
+  const Spectrum a = t.at(x.i0, y.i0) + (t.at(x.i1, y.i0) - t.at(x.i0, y.i0)) * x.w1;
+  const Spectrum b = t.at(x.i0, y.i1) + (t.at(x.i1, y.i1) - t.at(x.i0, y.i1)) * x.w1;
+  return a + (b - a) * y.w1;
+}
+
+// Quadrilinear lookup: trilinear in (mu_s, mu, r) within the two nearest nu
+// slices, then linear in nu.
+inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu) {
+  const AxisLerp r = axisLerpFromTextureCoord(c.u_r, t.r_size);
+  const AxisLerp mu = axisLerpFromTextureCoord(c.u_mu, t.mu_size);
+  const AxisLerp mu_s = axisLerpFromTextureCoord(c.u_mu_s, t.mu_s_size);
+  auto slice = [&](int i_nu) {
+    auto row = [&](int i_r, int i_mu) {
+      const Spectrum& a = t.at(i_r, i_mu, mu_s.i0, i_nu);
+      const Spectrum& b = t.at(i_r, i_mu, mu_s.i1, i_nu);
+      return a + (b - a) * mu_s.w1;
+    };
+    const Spectrum r0 = row(r.i0, mu.i0) + (row(r.i0, mu.i1) - row(r.i0, mu.i0)) * mu.w1;
+    const Spectrum r1 = row(r.i1, mu.i0) + (row(r.i1, mu.i1) - row(r.i1, mu.i0)) * mu.w1;
+    return r0 + (r1 - r0) * r.w1;
+  };
+  const Spectrum s0 = slice(nu.i0);
+  const Spectrum s1 = slice(nu.i1);
+  return s0 + (s1 - s0) * nu.w1;
+}
+
+class TableSampler {
+ public:
+  TableSampler(const AtmosphereDomain& domain, const TextureSizes& sizes)
+      : domain_(domain), sizes_(sizes), scattering_sizes_(ScatteringSizes::fromTextureSizes(sizes)) {}
+
+  const AtmosphereDomain& domain() const { return domain_; }
+  const TextureSizes& sizes() const { return sizes_; }
+  const ScatteringSizes& scatteringSizes() const { return scattering_sizes_; }
+
+  // Optical depth from (r, mu) to the top boundary (the ground ignored).
+  Spectrum opticalDepthToTop(const Texture2D& optical_depth, double r, double mu) const {
+    return sampleBilinear(optical_depth, transmittanceCoordFromRMu(domain_, sizes_.transmittance_mu,
+                                                                   sizes_.transmittance_r, r, mu));
+  }
+
+  // Optical depth over the segment [0, d] of the ray (r, mu). Written as a
+  // difference of optical depths to the top rather than a ratio of
+  // transmittances, so it stays exact where transmittances underflow. For a
+  // ray that hits the ground both legs are taken reversed (pointing up),
+  // where the table is defined.
+  Spectrum opticalDepthAlongRay(const Texture2D& optical_depth, double r, double mu, double d,
+                                bool ray_intersects_ground) const {
+    const double r_d = std::clamp(radiusAlongRay(r, mu, d), domain_.bottom_radius_m, domain_.top_radius_m);
+    const double mu_d = cosineAlongRay(r, mu, d, r_d);
+    const Spectrum tau = ray_intersects_ground
+                             ? opticalDepthToTop(optical_depth, r_d, -mu_d) -
+                                   opticalDepthToTop(optical_depth, r, -mu)
+                             : opticalDepthToTop(optical_depth, r, mu) -
+                                   opticalDepthToTop(optical_depth, r_d, mu_d);
+    return glm::max(tau, Spectrum(0.0f));  // interpolation may leave a tiny negative
+  }
+
+  // Transmittance to the sun from radius r with sun zenith cosine mu_s,
+  // including the part of the sun disk above the horizon (linear ramp over the
+  // disk's angular diameter).
+  Spectrum transmittanceToSun(const Texture2D& optical_depth, double r, double mu_s,
+                              double sun_angular_radius) const {
+    const double sin_horizon = domain_.bottom_radius_m / r;
+    const double cos_horizon = -safeSqrt(1.0 - sin_horizon * sin_horizon);
+    const double visible = sunDiskVisibleFraction(mu_s - cos_horizon, sin_horizon * sun_angular_radius);
+    if (visible <= 0.0) return Spectrum(0.0f);
+    return glm::exp(-opticalDepthToTop(optical_depth, r, mu_s)) * static_cast<float>(visible);
+  }
+
+  // Fraction of the sun disk above the horizon given how far (in cosine) its
+  // centre is above it and the disk's half-size in the same units.
+  static double sunDiskVisibleFraction(double height, double half_size) {
+    if (half_size <= 0.0) return height > 0.0 ? 1.0 : 0.0;
+    const double t = std::clamp((height + half_size) / (2.0 * half_size), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);  // smooth ramp: no kink in the sky's derivative
+  }
+
+  ScatteringCoord scatteringCoord(double r, double mu, double mu_s, double nu,
+                                  bool ray_intersects_ground) const {
+    return scatteringCoordFromRMuMuSNu(domain_, scattering_sizes_, r, mu, mu_s, nu,
+                                       ray_intersects_ground);
+  }
+
+  Spectrum scattering(const Texture4D& table, double r, double mu, double mu_s, double nu,
+                      bool ray_intersects_ground) const {
+    const ScatteringCoord c = scatteringCoord(r, mu, mu_s, nu, ray_intersects_ground);
+    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size));
+  }
+
+  Spectrum irradiance(const Texture2D& irradiance, double r, double mu_s) const {
+    return sampleBilinear(irradiance, irradianceCoordFromRMuS(domain_, sizes_.irradiance_mu_s,
+                                                              sizes_.irradiance_r, r, mu_s));
+  }
+
+ private:
+  AtmosphereDomain domain_;
+  TextureSizes sizes_;
+  ScatteringSizes scattering_sizes_;
+};
+
+}  // namespace skybake
