@@ -14,6 +14,7 @@
 #include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <Imath/half.h>
 #include <fmt/format.h>
 
 #include "bake_file.h"
@@ -87,15 +88,27 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
   for (const PartToWrite& part : parts) headers.push_back(makeHeader(bake, part, display_window));
   Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
   const int channels = bake.config.atmosphere.channelCount();
+  const bool half = bake.config.bake.precision == StoragePrecision::Half;
   for (size_t i = 0; i < parts.size(); ++i) {
     const PartToWrite& part = parts[i];
     Imf::OutputPart out(file, static_cast<int>(i));
     Imf::FrameBuffer frame;
-    char* base = const_cast<char*>(reinterpret_cast<const char*>(part.texels->data()));
+    // Half storage: convert here, one half4 per texel, same layout as the floats.
+    std::vector<Imath::half> halves;
+    if (half) {
+      halves.resize(part.texels->size() * kMaxChannels);
+      for (size_t t = 0; t < part.texels->size(); ++t) {
+        for (int c = 0; c < kMaxChannels; ++c) halves[t * kMaxChannels + c] = (*part.texels)[t][c];
+      }
+    }
+    char* base = half ? reinterpret_cast<char*>(halves.data())
+                      : const_cast<char*>(reinterpret_cast<const char*>(part.texels->data()));
+    const size_t value_bytes = half ? sizeof(Imath::half) : sizeof(float);
+    const size_t texel_bytes = value_bytes * kMaxChannels;
     for (int c = 0; c < channels; ++c) {
       frame.insert(channelName(bake.config.atmosphere.wavelengths_nm[c]),
-                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum),
-                              sizeof(Spectrum) * part.width));
+                   Imf::Slice(half ? Imf::HALF : Imf::FLOAT, base + c * value_bytes, texel_bytes,
+                              texel_bytes * part.width));
     }
     out.setFrameBuffer(frame);
     out.writePixels(part.height);

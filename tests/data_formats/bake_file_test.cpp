@@ -1,0 +1,142 @@
+// Bake files: what is written is read back exactly; writes are atomic; bad
+// files are refused with an error.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "data_formats/bake_file.h"
+#include "data_formats/config.h"
+#include "data_formats/error.h"
+
+namespace skybake {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A bake with small tables filled with distinct, non-round values.
+BakeFile syntheticBake() {
+  BakeFile bake;
+  bake.config = builtinEarthConfig();
+  TextureSizes& s = bake.config.sizes;
+  s = {8, 4, 6, 3, 3, 4, 5, 2};
+  bake.orders_computed = 3;
+  bake.report_json = R"({"threads": 2, "note": "synthetic"})";
+  BakeTables& t = bake.tables;
+  t.transmittance = Texture2D(s.transmittance_mu, s.transmittance_r);
+  t.irradiance = Texture2D(s.irradiance_mu_s, s.irradiance_r);
+  t.scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
+  t.single_mie = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
+  float x = 0.1f;
+  for (auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.scattering.texels, &t.single_mie.texels}) {
+    for (Spectrum& v : *texels) {
+      v = Spectrum(x, x * 1.5f, x * 0.25f, 0.0f);
+      x = x * 1.37f + 0.011f;
+      if (x > 1e4f) x = 0.013f;
+    }
+  }
+  return bake;
+}
+
+class BakeFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("skybake_bake_file_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path dir;
+};
+
+TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
+  const BakeFile written = syntheticBake();
+  const fs::path path = dir / "bake.exr";
+  writeBakeFile(path, written);
+  const BakeFile read = readBakeFile(path);
+  EXPECT_EQ(configToToml(read.config), configToToml(written.config));
+  EXPECT_EQ(read.orders_computed, written.orders_computed);
+  EXPECT_EQ(read.report_json, written.report_json);
+  // Float storage is lossless: compare exactly, channel by channel (the
+  // unused fourth lane is not stored and reads back as 0).
+  auto same = [](const std::vector<Spectrum>& a, const std::vector<Spectrum>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(a[i][c], b[i][c]) << i;
+    }
+  };
+  same(read.tables.transmittance.texels, written.tables.transmittance.texels);
+  same(read.tables.irradiance.texels, written.tables.irradiance.texels);
+  same(read.tables.scattering.texels, written.tables.scattering.texels);
+  same(read.tables.single_mie.texels, written.tables.single_mie.texels);
+}
+
+TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {
+  BakeFile written = syntheticBake();
+  written.config.bake.precision = StoragePrecision::Half;
+  const fs::path path = dir / "half.exr";
+  writeBakeFile(path, written);
+  const BakeFile read = readBakeFile(path);
+  EXPECT_EQ(read.config.bake.precision, StoragePrecision::Half);
+  // half has an 11-bit significand: relative rounding error <= 2^-11 ~ 4.9e-4
+  // for normal values (the synthetic values are all in half's normal range).
+  for (size_t i = 0; i < read.tables.scattering.texels.size(); ++i) {
+    const float a = written.tables.scattering.texels[i][0];
+    EXPECT_NEAR(read.tables.scattering.texels[i][0], a, std::abs(a) * 4.9e-4f);
+  }
+}
+
+TEST_F(BakeFileTest, FailedWriteLeavesExistingFileIntactAndNoTemporary) {
+  const fs::path path = dir / "bake.exr";
+  writeBakeFile(path, syntheticBake());
+  const auto size_before = fs::file_size(path);
+  BakeFile broken = syntheticBake();
+  broken.tables.scattering.texels.clear();  // inconsistent: the write must fail
+  EXPECT_THROW(writeBakeFile(path, broken), Error);
+  EXPECT_EQ(fs::file_size(path), size_before);
+  EXPECT_NO_THROW(readBakeFile(path));
+  int entries = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    (void)entry;
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1) << "a temporary file was left behind";
+}
+
+TEST_F(BakeFileTest, UnwritableDestinationIsBadInput) {
+  try {
+    writeBakeFile(dir / "missing_subdir" / "bake.exr", syntheticBake());
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("missing_subdir"), std::string::npos);
+  }
+}
+
+void expectRefused(const fs::path& path) {
+  try {
+    readBakeFile(path);
+    FAIL() << "accepted " << path;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find(path.filename().string()), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(BakeFileTest, TruncatedGarbageAndMissingFilesAreRefused) {
+  const fs::path good = dir / "bake.exr";
+  writeBakeFile(good, syntheticBake());
+  const auto size = fs::file_size(good);
+  for (double fraction : {0.0, 0.1, 0.5, 0.9, 0.99}) {
+    const fs::path cut = dir / ("truncated_" + std::to_string(static_cast<int>(fraction * 100)) + ".exr");
+    fs::copy_file(good, cut);
+    fs::resize_file(cut, static_cast<uintmax_t>(size * fraction));
+    expectRefused(cut);
+  }
+  const fs::path garbage = dir / "garbage.exr";
+  std::ofstream(garbage) << "this is not an OpenEXR file at all, just text";
+  expectRefused(garbage);
+  expectRefused(dir / "does_not_exist.exr");
+}
+
+}  // namespace
+}  // namespace skybake

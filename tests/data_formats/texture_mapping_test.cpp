@@ -1,0 +1,108 @@
+// The parameterization round-trips: the configuration at a texel's centre maps
+// back to that texel's centre, on both sides of the horizon split and at the
+// domain ends.
+#include <gtest/gtest.h>
+
+#include "data_formats/config.h"
+#include "data_formats/texture_mapping.h"
+
+namespace skybake {
+namespace {
+
+// Texture coordinates are computed in double from distances up to ~1e7 m;
+// round-off stays near 1e-12. 1e-9 of the unit range is 1e-7 of a texel at
+// 128 texels: any real mapping error is far larger.
+constexpr double kCoordTolerance = 1e-9;
+
+class TextureMapping : public ::testing::Test {
+ protected:
+  BakeConfig config = builtinEarthConfig();
+  AtmosphereDomain domain = AtmosphereDomain::fromParameters(config.atmosphere);
+  ScatteringSizes sizes = ScatteringSizes::fromTextureSizes(config.sizes);
+};
+
+double centre(int i, int n) { return (i + 0.5) / n; }
+
+TEST_F(TextureMapping, ScatteringTexelCentresRoundTrip) {
+  for (int i_r = 0; i_r < sizes.r; ++i_r) {
+    for (int i_mu = 0; i_mu < sizes.mu; ++i_mu) {
+      for (int i_mu_s = 0; i_mu_s < sizes.mu_s; ++i_mu_s) {
+        const ScatteringTexelConfig c = scatteringTexelConfig(domain, sizes, i_r, i_mu, i_mu_s, 0);
+        ASSERT_EQ(c.ray_intersects_ground, i_mu < sizes.mu / 2);
+        const ScatteringCoord u =
+            scatteringCoordFromRMuMuSNu(domain, sizes, c.r, c.mu, c.mu_s, c.nu, c.ray_intersects_ground);
+        EXPECT_NEAR(u.u_r, centre(i_r, sizes.r), kCoordTolerance);
+        EXPECT_NEAR(u.u_mu_s, centre(i_mu_s, sizes.mu_s), kCoordTolerance) << i_mu_s;
+        // At r = bottom every ground ray is straight down (the range of
+        // distances is empty); only the sky half round-trips there.
+        if (i_r > 0 || !c.ray_intersects_ground) {
+          EXPECT_NEAR(u.u_mu, centre(i_mu, sizes.mu), kCoordTolerance) << i_r << " " << i_mu;
+        }
+      }
+    }
+  }
+}
+
+TEST_F(TextureMapping, DomainEndsSitOnTexelCentres) {
+  EXPECT_DOUBLE_EQ(rFromScatteringTexel(domain, sizes, 0), domain.bottom_radius_m);
+  EXPECT_NEAR(rFromScatteringTexel(domain, sizes, sizes.r - 1), domain.top_radius_m, 1e-6);
+  // mu_s: the first texel is the lowest sun of the domain, the last the zenith.
+  EXPECT_NEAR(muSFromScatteringTexel(domain, sizes, 0), domain.mu_s_min, 1e-9);
+  EXPECT_NEAR(muSFromScatteringTexel(domain, sizes, sizes.mu_s - 1), 1.0, 1e-12);
+  // mu: both halves start at the horizon on the outside and meet at the
+  // vertical: ground rows run from the horizon (0) to straight down (mu/2 - 1),
+  // sky rows from straight up (mu/2) to the horizon (mu - 1).
+  const int r_mid = sizes.r / 2;
+  const double r = rFromScatteringTexel(domain, sizes, r_mid);
+  const double horizon_mu = -domain.distanceToHorizon(r) / r;
+  EXPECT_NEAR(scatteringTexelConfig(domain, sizes, r_mid, 0, 0, 0).mu, horizon_mu, 1e-9);
+  EXPECT_NEAR(scatteringTexelConfig(domain, sizes, r_mid, sizes.mu / 2 - 1, 0, 0).mu, -1.0, 1e-9);
+  EXPECT_NEAR(scatteringTexelConfig(domain, sizes, r_mid, sizes.mu / 2, 0, 0).mu, 1.0, 1e-9);
+  EXPECT_NEAR(scatteringTexelConfig(domain, sizes, r_mid, sizes.mu - 1, 0, 0).mu, horizon_mu, 1e-9);
+  // nu: linear over [-1, 1], texels on both ends, then limited to what (mu,
+  // mu_s) allow: looking straight up with the sun at the zenith, nu = 1.
+  EXPECT_NEAR(scatteringTexelConfig(domain, sizes, r_mid, sizes.mu / 2, sizes.mu_s - 1, 0).nu, 1.0, 1e-9);
+  const ScatteringTexelConfig low = scatteringTexelConfig(domain, sizes, r_mid, sizes.mu - 1, sizes.mu_s - 1, 0);
+  EXPECT_NEAR(low.nu, clampNu(-1.0, low.mu, low.mu_s), 1e-12);
+  EXPECT_NEAR(scatteringCoordFromRMuMuSNu(domain, sizes, r, 0.0, 0.0, -1.0, false).u_nu, 0.0, 1e-15);
+  EXPECT_NEAR(scatteringCoordFromRMuMuSNu(domain, sizes, r, 0.0, 0.0, 1.0, false).u_nu, 1.0, 1e-15);
+}
+
+TEST_F(TextureMapping, HorizonSplitSeparatesGroundAndSkyRays) {
+  // Just above and just below the horizon, the two rays land on opposite
+  // sides of u_mu = 0.5 and never in the same texel.
+  const double r = domain.bottom_radius_m + 1000.0;
+  const double horizon_mu = -domain.distanceToHorizon(r) / r;
+  // The distance to the ground grows like sqrt(mu - horizon) off the tangent;
+  // 1e-9 in mu keeps it within 40 m of the tangent distance (0.03 % of rho).
+  const ScatteringCoord sky = scatteringCoordFromRMuMuSNu(domain, sizes, r, horizon_mu + 1e-9, 0.5, 0.0, false);
+  const ScatteringCoord ground = scatteringCoordFromRMuMuSNu(domain, sizes, r, horizon_mu - 1e-9, 0.5, 0.0, true);
+  EXPECT_GT(sky.u_mu, 0.5);
+  EXPECT_LT(ground.u_mu, 0.5);
+  // ... and both sit at the outer ends of their halves, the horizon texels.
+  EXPECT_NEAR(sky.u_mu, 1.0 - 0.5 / sizes.mu, 1e-3);
+  EXPECT_NEAR(ground.u_mu, 0.5 / sizes.mu, 1e-3);
+}
+
+TEST_F(TextureMapping, TransmittanceAndIrradianceTexelCentresRoundTrip) {
+  const TextureSizes& s = config.sizes;
+  for (int i_r = 0; i_r < s.transmittance_r; ++i_r) {
+    for (int i_mu = 0; i_mu < s.transmittance_mu; ++i_mu) {
+      const RMu rm = transmittanceTexelConfig(domain, s.transmittance_mu, s.transmittance_r, i_mu, i_r);
+      const TextureCoord2D uv = transmittanceCoordFromRMu(domain, s.transmittance_mu, s.transmittance_r, rm.r, rm.mu);
+      EXPECT_NEAR(uv.u, centre(i_mu, s.transmittance_mu), kCoordTolerance);
+      EXPECT_NEAR(uv.v, centre(i_r, s.transmittance_r), kCoordTolerance);
+    }
+  }
+  for (int i_r = 0; i_r < s.irradiance_r; ++i_r) {
+    for (int i_mu_s = 0; i_mu_s < s.irradiance_mu_s; ++i_mu_s) {
+      const RMu rm = irradianceTexelConfig(domain, s.irradiance_mu_s, s.irradiance_r, i_mu_s, i_r);
+      const TextureCoord2D uv = irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, rm.r, rm.mu);
+      EXPECT_NEAR(uv.u, centre(i_mu_s, s.irradiance_mu_s), kCoordTolerance);
+      EXPECT_NEAR(uv.v, centre(i_r, s.irradiance_r), kCoordTolerance);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skybake
