@@ -1,0 +1,225 @@
+#include "runtime/sky.h"
+
+#include <glm/geometric.hpp>
+
+#include "data_formats/error.h"
+
+namespace skybake {
+namespace {
+
+// Below this sun elevation cosine, single Mie scattering toward a point is
+// faded out: the difference of two Mie lookups at neighbouring twilight
+// texels is noise larger than the signal (Bruneton 2017 does the same).
+constexpr double kMieTwilightFadeCosine = 0.01;
+
+// Half-width, in view zenith cosine, of the band around the geometric horizon
+// where radiance to a point blends the ground-ray and sky-ray halves of the
+// table. Each half is interpolated separately, so at the horizon the two
+// estimates of the same segment integral differ by interpolation error; the
+// blend removes that step. 0.002 is about 0.1 deg, a few texels of the mu axis
+// near the horizon at the default 128.
+constexpr double kHorizonBlendCosine = 0.002;
+
+struct RayStart {
+  bool misses_atmosphere;
+  double r;              // radius of the (moved) start, in [bottom, top]
+  double mu;             // view zenith cosine there
+  double moved_m;        // how far the start was moved from the camera along the ray
+  glm::dvec3 position;   // the (moved) start
+};
+
+// Puts the camera where the lookups can start: on the ground if below it, at
+// the atmosphere's entry point if in space.
+RayStart startInAtmosphere(const AtmosphereDomain& domain, glm::dvec3 camera, const glm::dvec3& dir) {
+  double r = glm::length(camera);
+  if (r < domain.bottom_radius_m) {
+    // Below the ground: treated as on the ground directly above. A camera at
+    // the very centre has no "above": use the +z pole.
+    camera = r > 0.0 ? camera * (domain.bottom_radius_m / r) : glm::dvec3(0.0, 0.0, domain.bottom_radius_m);
+    r = domain.bottom_radius_m;
+  }
+  double rmu = glm::dot(camera, dir);
+  double moved = 0.0;
+  if (r > domain.top_radius_m) {
+    const double discriminant = rmu * rmu - r * r + domain.top_radius_m * domain.top_radius_m;
+    const double distance_to_top = -rmu - safeSqrt(discriminant);
+    if (discriminant < 0.0 || distance_to_top < 0.0) return {true, r, 0.0, 0.0, camera};
+    camera += dir * distance_to_top;
+    moved = distance_to_top;
+    r = domain.top_radius_m;
+    rmu += distance_to_top;
+  }
+  return {false, r, clampCosine(rmu / r), moved, camera};
+}
+
+}  // namespace
+
+Sky Sky::load(const std::filesystem::path& path) { return Sky(readBakeFile(path)); }
+
+Sky::Sky(BakeFile bake)
+    : bake_(std::move(bake)),
+      sampler_(AtmosphereDomain::fromParameters(bake_.config.atmosphere), bake_.config.sizes) {}
+
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                          const glm::dvec3& sun_dir, double shadow_length_m) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const RayStart start = startInAtmosphere(domain, camera, view_dir);
+  if (start.misses_atmosphere) return {Spectrum(0.0f), Spectrum(1.0f)};
+  const double r = start.r;
+  const double mu = start.mu;
+  const double mu_s = clampCosine(glm::dot(start.position, sun_dir) / r);
+  const double nu = clampCosine(glm::dot(view_dir, sun_dir));
+  const bool ground = rayIntersectsSphere(r, mu, domain.bottom_radius_m);
+  const BakeTables& t = bake_.tables;
+
+  const Spectrum transmittance =
+      ground ? glm::exp(-sampler_.opticalDepthAlongRay(
+                   t.transmittance, r, mu, distanceToInnerSphere(r, mu, domain.bottom_radius_m), true))
+             : glm::exp(-sampler_.opticalDepthToTop(t.transmittance, r, mu));
+
+  Spectrum rayleigh, mie;
+  const double shadow = std::max(shadow_length_m - start.moved_m, 0.0);
+  if (shadow == 0.0) {
+    rayleigh = sampler_.scattering(t.scattering, r, mu, mu_s, nu, ground);
+    mie = sampler_.scattering(t.single_mie, r, mu, mu_s, nu, ground);
+  } else {
+    // Light shafts: only the part of the ray beyond the shadow scatters, seen
+    // through the shadowed part.
+    const double r_p = std::clamp(radiusAlongRay(r, mu, shadow), domain.bottom_radius_m, domain.top_radius_m);
+    const double mu_p = cosineAlongRay(r, mu, shadow, r_p);
+    const double mu_s_p = clampCosine((r * mu_s + shadow * nu) / r_p);
+    const Spectrum shadow_transmittance =
+        glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, shadow, ground));
+    rayleigh = sampler_.scattering(t.scattering, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+    mie = sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+  }
+  const Spectrum radiance = rayleigh * static_cast<float>(rayleighPhase(nu)) +
+                            mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, nu));
+  return {radiance, transmittance};
+}
+
+namespace {
+
+struct SegmentScattering {
+  Spectrum rayleigh;
+  Spectrum mie;
+};
+
+// In-scattering over [0, d] of the ray (r, mu): the scattering to the ray's
+// end seen from its start minus that seen from the point at d, attenuated.
+SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTables& t, double r,
+                                    double mu, double mu_s, double nu, double d, double shadow,
+                                    bool ground, const Spectrum& transmittance) {
+  const AtmosphereDomain& domain = sampler.domain();
+  const Spectrum rayleigh = sampler.scattering(t.scattering, r, mu, mu_s, nu, ground);
+  const Spectrum mie = sampler.scattering(t.single_mie, r, mu, mu_s, nu, ground);
+  const double d_p = std::max(d - shadow, 0.0);
+  const double r_p = std::clamp(radiusAlongRay(r, mu, d_p), domain.bottom_radius_m, domain.top_radius_m);
+  const double mu_p = cosineAlongRay(r, mu, d_p, r_p);
+  const double mu_s_p = clampCosine((r * mu_s + d_p * nu) / r_p);
+  const Spectrum shadow_transmittance =
+      shadow == 0.0 ? transmittance
+                    : glm::exp(-sampler.opticalDepthAlongRay(t.transmittance, r, mu, d_p, ground));
+  return {glm::max(rayleigh - shadow_transmittance * sampler.scattering(t.scattering, r_p, mu_p, mu_s_p, nu, ground),
+                   Spectrum(0.0f)),
+          glm::max(mie - shadow_transmittance * sampler.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground),
+                   Spectrum(0.0f))};
+}
+
+}  // namespace
+
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                              const glm::dvec3& sun_dir, double shadow_length_m) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const glm::dvec3 offset = point - camera;
+  const double distance = glm::length(offset);
+  if (!(distance > 0.0)) return {Spectrum(0.0f), Spectrum(1.0f)};
+  const glm::dvec3 view_dir = offset / distance;
+  const RayStart start = startInAtmosphere(domain, camera, view_dir);
+  const double d = distance - start.moved_m;
+  if (start.misses_atmosphere || d <= 0.0) return {Spectrum(0.0f), Spectrum(1.0f)};
+  const double r = start.r;
+  const double mu = start.mu;
+  const double mu_s = clampCosine(glm::dot(start.position, sun_dir) / r);
+  const double nu = clampCosine(glm::dot(view_dir, sun_dir));
+  const double shadow = std::max(shadow_length_m - start.moved_m, 0.0);
+  const BakeTables& t = bake_.tables;
+
+  const bool ground = rayIntersectsSphere(r, mu, domain.bottom_radius_m);
+  const Spectrum transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground));
+
+  SegmentScattering s = segmentScattering(sampler_, t, r, mu, mu_s, nu, d, shadow, ground, transmittance);
+  const double horizon_mu = -safeSqrt(1.0 - (domain.bottom_radius_m / r) * (domain.bottom_radius_m / r));
+  const double from_horizon = mu - horizon_mu;
+  if (std::abs(from_horizon) < kHorizonBlendCosine) {
+    // Near the geometric horizon, blend with the other half's estimate of the
+    // same segment so the result has no step where the halves meet.
+    const SegmentScattering other =
+        segmentScattering(sampler_, t, r, mu, mu_s, nu, d, shadow, !ground, transmittance);
+    const double w_sky = 0.5 + 0.5 * from_horizon / kHorizonBlendCosine;  // 1 at +band, 0 at -band
+    const float w_this = static_cast<float>(ground ? 1.0 - w_sky : w_sky);
+    s.rayleigh = s.rayleigh * w_this + other.rayleigh * (1.0f - w_this);
+    s.mie = s.mie * w_this + other.mie * (1.0f - w_this);
+  }
+  const double mie_fade = std::clamp(mu_s / kMieTwilightFadeCosine, 0.0, 1.0);
+  const double mie_weight = mie_fade * mie_fade * (3.0 - 2.0 * mie_fade);
+  const Spectrum radiance =
+      s.rayleigh * static_cast<float>(rayleighPhase(nu)) +
+      s.mie * static_cast<float>(mie_weight * cornetteShanksPhase(atmosphere().mie_phase_g, nu));
+  return {radiance, transmittance};
+}
+
+SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
+                                    const glm::dvec3& sun_dir) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const double length = glm::length(point);
+  const double r = std::clamp(length, domain.bottom_radius_m, domain.top_radius_m);
+  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+  const double mu_s = clampCosine(glm::dot(up, sun_dir));
+  const BakeTables& t = bake_.tables;
+  const Spectrum sky = sampler_.irradiance(t.irradiance, r, mu_s) *
+                       static_cast<float>(0.5 * (1.0 + glm::dot(normal, up)));
+  const Spectrum sun = atmosphere().sun_irradiance *
+                       sampler_.transmittanceToSun(t.transmittance, r, mu_s, atmosphere().sun_angular_radius_rad) *
+                       static_cast<float>(std::max(glm::dot(normal, sun_dir), 0.0));
+  return {sun, sky};
+}
+
+Spectrum Sky::solarRadiance() const {
+  const double alpha = atmosphere().sun_angular_radius_rad;
+  if (alpha <= 0.0) return Spectrum(0.0f);
+  const double solid_angle_sr = 2.0 * kPi * (1.0 - std::cos(alpha));
+  return atmosphere().sun_irradiance / static_cast<float>(solid_angle_sr);
+}
+
+Spectrum Sky::transmittance(const glm::dvec3& a, const glm::dvec3& b) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const glm::dvec3 offset = b - a;
+  const double distance = glm::length(offset);
+  if (!(distance > 0.0)) return Spectrum(1.0f);
+  const glm::dvec3 dir = offset / distance;
+  const RayStart start = startInAtmosphere(domain, a, dir);
+  const double d = distance - start.moved_m;
+  if (start.misses_atmosphere || d <= 0.0) return Spectrum(1.0f);
+  const bool ground = rayIntersectsSphere(start.r, start.mu, domain.bottom_radius_m);
+  if (ground && d > distanceToInnerSphere(start.r, start.mu, domain.bottom_radius_m)) {
+    return Spectrum(0.0f);  // the segment passes through the planet
+  }
+  // Beyond the top the ray is in vacuum: only the part inside counts.
+  const double inside = ground ? d : std::min(d, distanceToOuterSphere(start.r, start.mu, domain.top_radius_m));
+  return glm::exp(-sampler_.opticalDepthAlongRay(bake_.tables.transmittance, start.r, start.mu, inside, ground));
+}
+
+void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
+                           SpectrumBatch radiance, SpectrumBatch transmittance) const {
+  for (size_t i = 0; i < rays.count; ++i) {
+    const RadianceAndTransmittance v =
+        skyRadiance(camera, glm::dvec3(rays.dir_x[i], rays.dir_y[i], rays.dir_z[i]), sun_dir);
+    for (int c = 0; c < kMaxChannels; ++c) {
+      if (radiance.channel[c] != nullptr) radiance.channel[c][i] = v.radiance[c];
+      if (transmittance.channel[c] != nullptr) transmittance.channel[c][i] = v.transmittance[c];
+    }
+  }
+}
+
+}  // namespace skybake

@@ -1,0 +1,102 @@
+// Sky: the lookup API over a bake. Positions are in metres relative to the
+// planet centre, directions are unit vectors; radiance is spectral, in
+// W m^-2 sr^-1 nm^-1, irradiance in W m^-2 nm^-1, one lane per channel in the
+// file's channel order (unused lanes 0). All lookups are const and thread-safe.
+//
+// Geometry conventions:
+//  - a camera in space is moved along its ray to where the ray enters the
+//    atmosphere; a ray that misses the atmosphere sees radiance 0 and
+//    transmittance 1;
+//  - a camera below the ground is treated as on the ground, directly above
+//    where it is;
+//  - a sun below the lowest baked sun angle (sun.max_zenith_deg) is looked up
+//    at that angle, where the tables hold small finite twilight values.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+
+#include <glm/vec3.hpp>
+
+#include "data_formats/bake_file.h"
+#include "runtime/table_sampler.h"
+
+namespace skybake {
+
+struct RadianceAndTransmittance {
+  Spectrum radiance;       // W m^-2 sr^-1 nm^-1 scattered toward the camera
+  Spectrum transmittance;  // along the same path, dimensionless
+};
+
+struct SunAndSkyIrradiance {
+  Spectrum sun;  // direct sun, W m^-2 nm^-1
+  Spectrum sky;  // scattered skylight, W m^-2 nm^-1
+};
+
+// Many view directions from one camera under one sun, as separate arrays
+// (structure of arrays). Outputs: one array per channel, `count` floats each.
+struct ViewRayBatch {
+  const float* dir_x;
+  const float* dir_y;
+  const float* dir_z;
+  size_t count;
+};
+struct SpectrumBatch {
+  float* channel[kMaxChannels];  // null for channels not wanted
+};
+
+class Sky {
+ public:
+  // Reads a bake file. Throws Error(BadInput) for a missing, truncated,
+  // corrupt or unknown-version file.
+  static Sky load(const std::filesystem::path& path);
+  explicit Sky(BakeFile bake);
+
+  const BakeConfig& config() const { return bake_.config; }
+  const AtmosphereParameters& atmosphere() const { return bake_.config.atmosphere; }
+  int channelCount() const { return atmosphere().channelCount(); }
+  int orders() const { return bake_.orders_computed; }
+
+  // Radiance of the sky seen from `camera` looking along `view_dir`, and the
+  // transmittance to where the ray leaves the atmosphere or meets the ground.
+  // The ground's own reflected light is not included (see groundRadiance).
+  // shadow_length_m: the length of the ray's first part that lies in the
+  // shadow of scene geometry (0 for none), for light shafts.
+  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                       const glm::dvec3& sun_dir, double shadow_length_m = 0.0) const;
+
+  // Radiance scattered toward `camera` between it and `point` (aerial
+  // perspective), and the transmittance between them.
+  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                           const glm::dvec3& sun_dir,
+                                           double shadow_length_m = 0.0) const;
+
+  // Sun and sky irradiance on a surface at `point` with unit `normal`. The sky
+  // part assumes the surface sees the sky hemisphere around its normal as a
+  // horizontal surface would, scaled by (1 + normal . up) / 2.
+  SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal,
+                                 const glm::dvec3& sun_dir) const;
+
+  // Radiance of the sun disk at the top of the atmosphere: irradiance over the
+  // disk's solid angle. Multiply by the transmittance along the view ray.
+  // Zero when the sun's angular radius is 0 (a point sun has no disk).
+  Spectrum solarRadiance() const;
+
+  // Transmittance along the straight segment from `a` to `b` (0 where the
+  // segment passes through the ground).
+  Spectrum transmittance(const glm::dvec3& a, const glm::dvec3& b) const;
+
+  // skyRadiance for many view directions at once; same results.
+  void skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir,
+                        const ViewRayBatch& rays, SpectrumBatch radiance,
+                        SpectrumBatch transmittance) const;
+
+  const TableSampler& sampler() const { return sampler_; }
+  const BakeTables& tables() const { return bake_.tables; }
+
+ private:
+  BakeFile bake_;
+  TableSampler sampler_;
+};
+
+}  // namespace skybake

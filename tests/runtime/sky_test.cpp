@@ -1,0 +1,318 @@
+// The Sky lookup API against direct integration, and the geometric
+// properties a renderer relies on: no seams, space cameras, symmetry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <map>
+
+#include "baker/optical_depth.h"
+#include "baker/ray_quadrature.h"
+#include "data_formats/error.h"
+#include "runtime/sky.h"
+
+namespace skybake {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kBakeDir = SKYBAKE_TEST_BAKE_DIR;
+
+// Loading a default-size bake takes ~0.1 s; keep one per file per process.
+const Sky& bakedSky(const char* file) {
+  static std::map<std::string, Sky> skies;
+  auto it = skies.find(file);
+  if (it == skies.end()) it = skies.emplace(file, Sky::load(kBakeDir / file)).first;
+  return it->second;
+}
+
+double radians(double degrees) { return degrees * kPi / 180.0; }
+
+glm::dvec3 direction(double zenith_deg, double azimuth_deg) {
+  const double t = radians(zenith_deg), p = radians(azimuth_deg);
+  return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+}
+
+// Single-scattered radiance by direct integration, no tables: 800 Gauss nodes
+// along the view ray, optical depths by quadrature of the density profiles
+// (validated against closed forms in the baker tests), a point sun.
+Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, const glm::dvec3& view,
+                                const glm::dvec3& sun) {
+  const AtmosphereMedia media(a);
+  const double r = a.bottom_radius_m + altitude;
+  const double mu = view.z, mu_s = sun.z, nu = glm::dot(view, sun);
+  const bool ground = rayIntersectsSphere(r, mu, a.bottom_radius_m);
+  const double length = ground ? distanceToInnerSphere(r, mu, a.bottom_radius_m)
+                               : distanceToOuterSphere(r, mu, a.top_radius_m);
+  const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a.mie_phase_g, nu);
+  SpectrumD sum(0.0);
+  forEachQuadratureNode(0.0, length, 200, [&](double t, double w) {
+    const double r_t = radiusAlongRay(r, mu, t);
+    const double mu_s_t = (r * mu_s + t * nu) / r_t;
+    if (rayIntersectsSphere(r_t, mu_s_t, a.bottom_radius_m)) return;  // in the planet's shadow
+    const SpectrumD depth = opticalDepthAlongRay(media, r, mu, t) + opticalDepthToTop(media, r_t, mu_s_t);
+    const double h = r_t - a.bottom_radius_m;
+    const SpectrumD scattering = SpectrumD(a.rayleigh_scattering) * (media.rayleighDensity(h) * p_r) +
+                                 SpectrumD(a.mie_scattering) * (media.mieDensity(h) * p_m);
+    sum += scattering * glm::exp(-depth) * w;
+  });
+  return Spectrum(sum * SpectrumD(a.sun_irradiance));
+}
+
+TEST(Sky, SingleScatteringLookupsMatchDirectIntegration) {
+  // A bake with one order: its sky radiance is single scattering alone.
+  const Sky& sky = bakedSky("earth_single.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  double worst = 0.0;
+  for (double altitude : {0.0, 1000.0, 10000.0, 30000.0}) {
+    for (double sun_zenith : {0.0, 35.0, 60.0, 80.0}) {
+      for (double view_zenith : {0.0, 30.0, 60.0, 80.0, 87.0}) {
+        for (double azimuth : {0.0, 90.0, 180.0}) {
+          const glm::dvec3 view = direction(view_zenith, azimuth), sun = direction(sun_zenith, 0.0);
+          const Spectrum looked_up =
+              sky.skyRadiance({0.0, 0.0, a.bottom_radius_m + altitude}, view, sun).radiance;
+          const Spectrum direct = directSingleScattering(a, altitude, view, sun);
+          for (int c = 0; c < 3; ++c) {
+            // 1 %: the bound above the horizon. The default tables
+            // interpolate to a few 1e-3 here; the largest errors sit at low
+            // view angles from high cameras, where mu texels are sparsest.
+            EXPECT_NEAR(looked_up[c] / direct[c], 1.0, 0.01)
+                << "altitude " << altitude << " sun " << sun_zenith << " view " << view_zenith
+                << " azimuth " << azimuth << " channel " << c;
+            worst = std::max(worst, std::abs(looked_up[c] / direct[c] - 1.0));
+          }
+        }
+      }
+    }
+  }
+  RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+TEST(Sky, TransmittanceLookupsMatchQuadrature) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  const AtmosphereMedia media(a);
+  for (double altitude : {0.0, 1000.0, 10000.0, 30000.0}) {
+    for (double view_zenith : {0.0, 30.0, 60.0, 80.0, 87.0}) {
+      const double r = a.bottom_radius_m + altitude;
+      const glm::dvec3 camera(0.0, 0.0, r), view = direction(view_zenith, 0.0);
+      for (double fraction : {0.1, 0.5, 1.0}) {
+        const double length = fraction * distanceToOuterSphere(r, view.z, a.top_radius_m);
+        const Spectrum looked_up = sky.transmittance(camera, camera + view * length);
+        const SpectrumD direct = glm::exp(-opticalDepthAlongRay(media, r, view.z, length));
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(looked_up[c] / direct[c], 1.0, 0.01)
+              << "altitude " << altitude << " view " << view_zenith << " fraction " << fraction;
+        }
+      }
+    }
+  }
+}
+
+// Checks that `values` (sampled at equal steps) has no step much larger than
+// its local trend: |v[i+1] - v[i]| <= 4 x (mean step over +-6 samples
+// around it) + a floor of 1e-4 of the value (float interpolation noise).
+// A seam is a single step many times the steps around it.
+void expectNoSeam(const std::vector<double>& values, const std::string& what) {
+  const int k = 6;
+  for (int i = k; i + k + 1 < static_cast<int>(values.size()); ++i) {
+    const double step = std::abs(values[i + 1] - values[i]);
+    const double trend = std::abs(values[i + k + 1] - values[i - k]) / (2 * k + 1);
+    double neighbours = 0.0;
+    for (int j = i - k; j <= i + k; ++j) {
+      if (j != i) neighbours += std::abs(values[j + 1] - values[j]);
+    }
+    neighbours /= 2 * k;
+    const double allowed = 4.0 * std::max(trend, neighbours) + 1e-4 * std::abs(values[i]);
+    EXPECT_LE(step, allowed) << what << " at sample " << i << ": " << values[i] << " -> " << values[i + 1];
+  }
+}
+
+TEST(Sky, RadianceToPointHasNoSeamThroughHorizontalAndHorizon) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  const glm::dvec3 sun = direction(60.0, 30.0);
+  for (double altitude : {10.0, 1000.0, 10000.0}) {
+    const double r = a.bottom_radius_m + altitude;
+    const double horizon_zenith = 180.0 - std::asin(a.bottom_radius_m / r) * 180.0 / kPi;
+    // Points 10 and 50 km away. (At 1 km, the in-scattering is a difference
+    // of two table lookups a few percent apart, and interpolation kinks in
+    // each still show as steps of up to 5 % near the horizon.)
+    for (double distance : {10000.0, 50000.0}) {
+      std::vector<double> radiance;
+      // Sweep from 1 deg above the horizontal through the geometric horizon,
+      // in 0.05 deg steps, while the point stays above the ground.
+      for (double zenith = 89.0; zenith <= horizon_zenith + 1.0; zenith += 0.05) {
+        const glm::dvec3 camera(0.0, 0.0, r), view = direction(zenith, 0.0);
+        const glm::dvec3 point = camera + view * distance;
+        if (glm::length(point) <= a.bottom_radius_m + 1.0) break;
+        radiance.push_back(sky.radianceToPoint(camera, point, sun).radiance[2]);
+      }
+      ASSERT_GT(radiance.size(), 20u);
+      expectNoSeam(radiance, fmt::format("radiance to point, altitude {} m, distance {} m", altitude, distance));
+    }
+  }
+}
+
+TEST(Sky, SkyRadianceHasNoSeamThroughHorizontalButGroundEdgeStaysSharp) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  const glm::dvec3 sun = direction(60.0, 30.0);
+  for (double altitude : {10.0, 1000.0, 10000.0}) {
+    const double r = a.bottom_radius_m + altitude;
+    const double horizon_zenith = 180.0 - std::asin(a.bottom_radius_m / r) * 180.0 / kPi;
+    const glm::dvec3 camera(0.0, 0.0, r);
+    std::vector<double> radiance;
+    for (double zenith = 89.0; zenith < horizon_zenith - 0.01; zenith += 0.05) {
+      radiance.push_back(sky.skyRadiance(camera, direction(zenith, 0.0), sun).radiance[2]);
+    }
+    expectNoSeam(radiance, fmt::format("sky radiance, altitude {} m", altitude));
+  }
+  // Where the ground begins to occlude the sky, radiance drops at once. From
+  // 10 m the ray just below the horizon meets the ground 11 km away, the one
+  // just above runs ~700 km through the densest air: the in-scattering drops
+  // by more than half (blue). (From high cameras the step is physically small:
+  // the path beyond the tangent point is hidden behind its own optical depth.)
+  const glm::dvec3 camera(0.0, 0.0, a.bottom_radius_m + 10.0);
+  const double horizon_zenith = 180.0 - std::asin(a.bottom_radius_m / camera.z) * 180.0 / kPi;
+  const double above = sky.skyRadiance(camera, direction(horizon_zenith - 0.005, 0.0), sun).radiance[2];
+  const double below = sky.skyRadiance(camera, direction(horizon_zenith + 0.005, 0.0), sun).radiance[2];
+  EXPECT_GT(above - below, 0.5 * above);
+}
+
+TEST(Sky, CameraInSpaceSeesWhatACameraAtTheEntryPointSees) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  const glm::dvec3 sun = direction(40.0, 0.0);
+  const glm::dvec3 camera(0.0, 0.0, a.top_radius_m + 500000.0);
+  for (double zenith : {150.0, 165.0, 175.0, 180.0}) {
+    const glm::dvec3 view = direction(zenith, 20.0);
+    const double rmu = glm::dot(camera, view);
+    const double entry = -rmu - std::sqrt(rmu * rmu - glm::dot(camera, camera) + a.top_radius_m * a.top_radius_m);
+    const RadianceAndTransmittance from_space = sky.skyRadiance(camera, view, sun);
+    const RadianceAndTransmittance at_entry = sky.skyRadiance(camera + view * entry, view, sun);
+    for (int c = 0; c < 3; ++c) {
+      // Same lookup after the move, up to rounding of the entry point.
+      EXPECT_NEAR(from_space.radiance[c], at_entry.radiance[c], 1e-5 * at_entry.radiance[c] + 1e-9);
+      EXPECT_NEAR(from_space.transmittance[c], at_entry.transmittance[c], 1e-5);
+      EXPECT_GT(from_space.radiance[c], 0.0f);
+    }
+  }
+  // A ray that misses the atmosphere sees nothing and loses nothing.
+  const RadianceAndTransmittance miss = sky.skyRadiance(camera, direction(0.0, 0.0), sun);
+  EXPECT_EQ(miss.radiance, Spectrum(0.0f));
+  EXPECT_EQ(miss.transmittance, Spectrum(1.0f));
+}
+
+TEST(Sky, RadianceToPointAtZeroDistanceIsZeroWithFullTransmittance) {
+  const Sky& sky = bakedSky("earth.exr");
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 500.0);
+  const RadianceAndTransmittance v = sky.radianceToPoint(camera, camera, direction(30.0, 0.0));
+  EXPECT_EQ(v.radiance, Spectrum(0.0f));
+  EXPECT_EQ(v.transmittance, Spectrum(1.0f));
+  // And it grows from 0 with distance.
+  const RadianceAndTransmittance near = sky.radianceToPoint(camera, camera + direction(80.0, 0.0) * 10.0, direction(30.0, 0.0));
+  const RadianceAndTransmittance far = sky.radianceToPoint(camera, camera + direction(80.0, 0.0) * 10000.0, direction(30.0, 0.0));
+  EXPECT_LT(near.radiance[2], far.radiance[2]);
+  EXPECT_GT(near.transmittance[2], far.transmittance[2]);
+}
+
+TEST(Sky, RadianceIsMirrorSymmetricInAzimuth) {
+  const Sky& sky = bakedSky("earth.exr");
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 2000.0);
+  const glm::dvec3 sun = direction(50.0, 0.0);
+  for (double zenith : {10.0, 45.0, 85.0, 95.0}) {
+    for (double azimuth : {15.0, 60.0, 120.0, 170.0}) {
+      const Spectrum left = sky.skyRadiance(camera, direction(zenith, azimuth), sun).radiance;
+      const Spectrum right = sky.skyRadiance(camera, direction(zenith, -azimuth), sun).radiance;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(left[c], right[c], 1e-6 * left[c]);
+    }
+  }
+}
+
+TEST(Sky, IrradianceLookupsEqualTheTableAtTexelCentres) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereDomain domain = AtmosphereDomain::fromParameters(sky.atmosphere());
+  const Texture2D& table = sky.tables().irradiance;
+  for (int i_r = 0; i_r < table.height; i_r += 3) {
+    for (int i_mu_s = 0; i_mu_s < table.width; i_mu_s += 5) {
+      const RMu rm = irradianceTexelConfig(domain, table.width, table.height, i_mu_s, i_r);
+      const glm::dvec3 point(0.0, 0.0, rm.r);
+      const glm::dvec3 sun(safeSqrt(1.0 - rm.mu * rm.mu), 0.0, rm.mu);
+      const Spectrum sky_irradiance = sky.irradiance(point, {0.0, 0.0, 1.0}, sun).sky;
+      for (int c = 0; c < 3; ++c) {
+        // Bilinear weights at a texel centre are 1 and 0 up to rounding of the
+        // coordinate (1e-12): the table value comes back to float precision.
+        EXPECT_NEAR(sky_irradiance[c], table.at(i_mu_s, i_r)[c], 1e-6f * table.at(i_mu_s, i_r)[c] + 1e-12f);
+      }
+    }
+  }
+}
+
+TEST(Sky, SunBelowBakedRangeAndOddCamerasGiveFiniteValues) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  for (double sun_zenith : {95.0, 102.0, 110.0, 150.0, 180.0}) {
+    for (const glm::dvec3& camera : {glm::dvec3(0, 0, a.bottom_radius_m - 100.0), glm::dvec3(0, 0, a.bottom_radius_m),
+                                     glm::dvec3(0, 0, a.top_radius_m), glm::dvec3(0, 0, 0)}) {
+      for (double view_zenith : {0.0, 90.0, 180.0}) {
+        const RadianceAndTransmittance v = sky.skyRadiance(camera, direction(view_zenith, 0.0), direction(sun_zenith, 0.0));
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_TRUE(std::isfinite(v.radiance[c]) && v.radiance[c] >= 0.0f);
+          ASSERT_TRUE(std::isfinite(v.transmittance[c]) && v.transmittance[c] >= 0.0f && v.transmittance[c] <= 1.0f);
+        }
+      }
+    }
+  }
+}
+
+TEST(Sky, BatchLookupsEqualScalarLookups) {
+  const Sky& sky = bakedSky("earth.exr");
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 300.0);
+  const glm::dvec3 sun = direction(70.0, 10.0);
+  std::vector<float> x, y, z;
+  for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) {
+      const glm::dvec3 d = direction(zenith, azimuth);
+      x.push_back(static_cast<float>(d.x)); y.push_back(static_cast<float>(d.y)); z.push_back(static_cast<float>(d.z));
+    }
+  }
+  std::vector<float> out[3], trans[3];
+  SpectrumBatch radiance{}, transmittance{};
+  for (int c = 0; c < 3; ++c) {
+    out[c].resize(x.size()); trans[c].resize(x.size());
+    radiance.channel[c] = out[c].data(); transmittance.channel[c] = trans[c].data();
+  }
+  sky.skyRadianceBatch(camera, sun, {x.data(), y.data(), z.data(), x.size()}, radiance, transmittance);
+  for (size_t i = 0; i < x.size(); ++i) {
+    const RadianceAndTransmittance v = sky.skyRadiance(camera, glm::dvec3(x[i], y[i], z[i]), sun);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(out[c][i], v.radiance[c], 1e-5f * v.radiance[c] + 1e-10f);
+      EXPECT_NEAR(trans[c][i], v.transmittance[c], 1e-5f);
+    }
+  }
+}
+
+TEST(Sky, TruncatedAndGarbageFilesAreRefused) {
+  const fs::path dir = fs::temp_directory_path() / ("skybake_sky_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path good = kBakeDir / "earth_single.exr";
+  const auto size = fs::file_size(good);
+  for (double fraction : {0.0, 0.01, 0.3, 0.7, 0.999}) {
+    const fs::path cut = dir / "cut.exr";
+    fs::copy_file(good, cut, fs::copy_options::overwrite_existing);
+    fs::resize_file(cut, static_cast<uintmax_t>(size * fraction));
+    EXPECT_THROW(Sky::load(cut), Error) << fraction;
+  }
+  std::ofstream(dir / "garbage.exr") << std::string(5000, 'x');
+  EXPECT_THROW(Sky::load(dir / "garbage.exr"), Error);
+  EXPECT_THROW(Sky::load(dir / "missing.exr"), Error);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace skybake
