@@ -1,8 +1,5 @@
 // Bake file writer. OpenEXR writes straight from the tables' float4 storage
 // (a stride of one Spectrum per texel), converting to half on request.
-#include <unistd.h>
-
-#include <system_error>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -17,6 +14,7 @@
 #include <Imath/half.h>
 #include <fmt/format.h>
 
+#include "atomic_file.h"
 #include "bake_file.h"
 #include "bake_file_attributes.h"
 #include "config.h"
@@ -144,25 +142,9 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake) {
     }
   }
 
-  // The temporary file sits beside the destination so the rename is atomic
-  // (same file system) and a crash leaves only an obviously temporary file.
-  const std::filesystem::path temp =
-      path.parent_path() / fmt::format(".{}.tmp-{}", path.filename().string(), ::getpid());
-  try {
+  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
     writeParts(temp.string(), bake, parts);
-  } catch (const std::exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    throwBadInput(fmt::format("{}: cannot write bake file: {}", path.string(), e.what()));
-  }
-  std::error_code error;
-  std::filesystem::rename(temp, path, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    throwBadInput(fmt::format("{}: cannot move the finished bake into place: {}", path.string(),
-                              error.message()));
-  }
+  });
 }
 
 }  // namespace skybake

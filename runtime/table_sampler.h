@@ -20,15 +20,21 @@ struct AxisLerp {
   float w1;
 };
 
+// Positions outside the axis clamp to its ends; a NaN position (from a NaN
+// query) is taken as the first texel, so no lookup can index out of bounds.
+inline double clampedAxisPosition(double x, int size) {
+  return x > 0.0 ? std::min(x, static_cast<double>(size - 1)) : 0.0;
+}
+
 inline AxisLerp axisLerpFromTextureCoord(double u, int size) {
-  const double x = std::clamp(u * size - 0.5, 0.0, static_cast<double>(size - 1));
+  const double x = clampedAxisPosition(u * size - 0.5, size);
   const int i0 = std::min(static_cast<int>(x), size - 2 >= 0 ? size - 2 : 0);
   return {i0, std::min(i0 + 1, size - 1), static_cast<float>(x - i0)};
 }
 
 // nu texels sit at i / (size - 1) in u_nu: both ends tabulated.
 inline AxisLerp axisLerpNu(double u_nu, int size) {
-  const double x = std::clamp(u_nu * (size - 1), 0.0, static_cast<double>(size - 1));
+  const double x = clampedAxisPosition(u_nu * (size - 1), size);
   const int i0 = std::min(static_cast<int>(x), size - 2);
   return {i0, i0 + 1, static_cast<float>(x - i0)};
 }

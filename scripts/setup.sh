@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake pkg-config
-  libopenexr-dev libopenimageio-dev openimageio-tools libglm-dev libcli11-dev
+  libopenexr-dev libopenimageio-dev libglm-dev libcli11-dev
   libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
   googletest libgtest-dev libbenchmark-dev
 )

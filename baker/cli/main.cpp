@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   const std::vector<skybake::cli::Command> commands = {
       skybake::cli::addBakeCommand(app),
       skybake::cli::addInfoCommand(app),
+      skybake::cli::addLookupCommand(app),
+      skybake::cli::addRenderCommand(app),
   };
 
   try {

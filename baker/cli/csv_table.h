@@ -1,0 +1,41 @@
+// Numeric CSV tables for `skybake lookup`: a header row of column names, then
+// rows of numbers. Errors name the file, line and column.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace skybake::cli {
+
+class CsvTable {
+ public:
+  // Reads `path`; every cell must be a finite number. Throws Error(BadInput)
+  // "<path>:<line>:<column> (<name>): <reason>" for the first bad cell.
+  static CsvTable read(const std::filesystem::path& path);
+
+  const std::vector<std::string>& columns() const { return columns_; }
+  size_t rowCount() const { return rows_.size(); }
+  // Index of a column, or nullopt.
+  std::optional<size_t> find(const std::string& name) const;
+  // Index of a required column; throws Error(BadInput) naming the file.
+  size_t require(const std::string& name) const;
+  double value(size_t row, size_t column) const { return rows_[row][column]; }
+  // The original text of a cell (written back unchanged in outputs).
+  const std::string& text(size_t row, size_t column) const { return texts_[row][column]; }
+  // Throws Error(BadInput) for a cell outside [lo, hi], with its position.
+  void requireRange(size_t column, double lo, double hi) const;
+
+ private:
+  std::string path_;
+  std::vector<std::string> columns_;
+  std::vector<std::vector<double>> rows_;
+  std::vector<std::vector<std::string>> texts_;
+  std::vector<int> line_numbers_;
+};
+
+// Writes CSV text to `path` atomically, or to stdout when path is empty.
+void writeCsvOutput(const std::string& path, const std::string& text);
+
+}  // namespace skybake::cli

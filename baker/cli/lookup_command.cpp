@@ -1,0 +1,128 @@
+// skybake lookup radiance|irradiance FILE.exr --queries Q.csv [-o OUT.csv]
+#include <fmt/format.h>
+
+#include "baker/cli/commands.h"
+#include "baker/cli/csv_table.h"
+#include "baker/cli/local_frame.h"
+#include "runtime/sky.h"
+
+namespace skybake::cli {
+namespace {
+
+struct LookupOptions {
+  std::string bake_path;
+  std::string queries_path;
+  std::string output_path;  // empty: stdout
+};
+
+// "680" for 680 nm: the column suffix for a channel.
+std::string wavelengthLabel(double wavelength_nm) { return fmt::format("{}", wavelength_nm); }
+
+std::string headerWith(const CsvTable& q, const Sky& sky, std::initializer_list<const char*> prefixes) {
+  std::string header;
+  for (const std::string& c : q.columns()) header += (header.empty() ? "" : ",") + c;
+  for (const char* prefix : prefixes) {
+    for (double w : sky.atmosphere().wavelengths_nm) header += fmt::format(",{}_{}", prefix, wavelengthLabel(w));
+  }
+  return header + "\n";
+}
+
+std::string inputCells(const CsvTable& q, size_t row) {
+  std::string line;
+  for (size_t c = 0; c < q.columns().size(); ++c) line += (c ? "," : "") + q.text(row, c);
+  return line;
+}
+
+void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
+  for (int c = 0; c < channels; ++c) line += fmt::format(",{:.9g}", s[c]);
+}
+
+// Altitudes below the ground are allowed (treated as on it, like the
+// runtime); beyond this the value is surely a unit mistake.
+constexpr double kMaxQueryAltitude_m = 1e12;
+
+void runRadiance(const LookupOptions& o) {
+  const CsvTable q = CsvTable::read(o.queries_path);
+  const size_t altitude = q.require("altitude_m");
+  const size_t sun_zenith = q.require("sun_zenith_deg");
+  const size_t view_zenith = q.require("view_zenith_deg");
+  const size_t view_azimuth = q.require("view_azimuth_deg");
+  const std::optional<size_t> distance = q.find("distance_m");
+  q.requireRange(altitude, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+  q.requireRange(sun_zenith, 0.0, 180.0);
+  q.requireRange(view_zenith, 0.0, 180.0);
+  q.requireRange(view_azimuth, -360.0, 360.0);
+  if (distance) q.requireRange(*distance, -1e12, 1e12);
+
+  const Sky sky = Sky::load(o.bake_path);
+  const int n = sky.channelCount();
+  std::string out = headerWith(q, sky, {"radiance", "transmittance"});
+  for (size_t row = 0; row < q.rowCount(); ++row) {
+    const glm::dvec3 camera = cameraAtAltitude(sky.atmosphere().bottom_radius_m, q.value(row, altitude));
+    const glm::dvec3 sun = directionFromZenithAzimuthDeg(q.value(row, sun_zenith), 0.0);
+    const glm::dvec3 view = directionFromZenithAzimuthDeg(q.value(row, view_zenith), q.value(row, view_azimuth));
+    const double d = distance ? q.value(row, *distance) : 0.0;
+    const RadianceAndTransmittance v =
+        d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
+    std::string line = inputCells(q, row);
+    appendSpectrum(line, v.radiance, n);
+    appendSpectrum(line, v.transmittance, n);
+    out += line + "\n";
+  }
+  writeCsvOutput(o.output_path, out);
+}
+
+void runIrradiance(const LookupOptions& o) {
+  const CsvTable q = CsvTable::read(o.queries_path);
+  const size_t altitude = q.require("altitude_m");
+  const size_t sun_zenith = q.require("sun_zenith_deg");
+  q.requireRange(altitude, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+  q.requireRange(sun_zenith, 0.0, 180.0);
+
+  const Sky sky = Sky::load(o.bake_path);
+  const int n = sky.channelCount();
+  std::string out = headerWith(q, sky, {"sky_irradiance", "sun_irradiance"});
+  for (size_t row = 0; row < q.rowCount(); ++row) {
+    const glm::dvec3 point = cameraAtAltitude(sky.atmosphere().bottom_radius_m, q.value(row, altitude));
+    const glm::dvec3 sun = directionFromZenithAzimuthDeg(q.value(row, sun_zenith), 0.0);
+    const SunAndSkyIrradiance e = sky.irradiance(point, {0.0, 0.0, 1.0}, sun);
+    std::string line = inputCells(q, row);
+    appendSpectrum(line, e.sky, n);
+    appendSpectrum(line, e.sun, n);
+    out += line + "\n";
+  }
+  writeCsvOutput(o.output_path, out);
+}
+
+CLI::App* addLookupKind(CLI::App& lookup, const char* name, const char* description,
+                        LookupOptions& options) {
+  CLI::App* cmd = lookup.add_subcommand(name, description);
+  cmd->add_option("file", options.bake_path, "Bake file (.exr).")->required();
+  cmd->add_option("--queries", options.queries_path, "Query CSV (columns above).")->required();
+  cmd->add_option("-o,--output", options.output_path, "Output CSV (default: standard output).");
+  return cmd;
+}
+
+}  // namespace
+
+Command addLookupCommand(CLI::App& app) {
+  CLI::App* lookup = app.add_subcommand("lookup", "Evaluate a bake at queries from a CSV file.");
+  lookup->require_subcommand(1);
+  auto radiance = std::make_shared<LookupOptions>();
+  auto irradiance = std::make_shared<LookupOptions>();
+  CLI::App* radiance_cmd = addLookupKind(*lookup, "radiance",
+                "Sky radiance and transmittance. Columns: altitude_m, sun_zenith_deg, view_zenith_deg, "
+                "view_azimuth_deg (from the sun's azimuth), optional distance_m (> 0: radiance to the point "
+                "at that distance). Adds radiance_<nm> (W m^-2 sr^-1 nm^-1) and transmittance_<nm>.",
+                *radiance);
+  CLI::App* irradiance_cmd = addLookupKind(*lookup, "irradiance",
+                "Irradiance on a horizontal surface. Columns: altitude_m, sun_zenith_deg. Adds "
+                "sky_irradiance_<nm> and sun_irradiance_<nm> (W m^-2 nm^-1).",
+                *irradiance);
+  return {lookup, [=] {
+            if (radiance_cmd->parsed()) runRadiance(*radiance);
+            if (irradiance_cmd->parsed()) runIrradiance(*irradiance);
+          }};
+}
+
+}  // namespace skybake::cli

@@ -1,0 +1,128 @@
+#include "baker/render/sky_image.h"
+
+#include <omp.h>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace skybake {
+namespace {
+
+double radians(double degrees) { return degrees * (kPi / 180.0); }
+
+glm::dvec3 fromZenithAzimuth(double zenith, double azimuth) {
+  return {std::sin(zenith) * std::cos(azimuth), std::sin(zenith) * std::sin(azimuth), std::cos(zenith)};
+}
+
+// Channel index nearest to a wavelength.
+int nearestChannel(const std::vector<double>& wavelengths_nm, double target_nm) {
+  int best = 0;
+  for (int c = 1; c < static_cast<int>(wavelengths_nm.size()); ++c) {
+    if (std::abs(wavelengths_nm[c] - target_nm) < std::abs(wavelengths_nm[best] - target_nm)) best = c;
+  }
+  return best;
+}
+
+// The view direction through pixel centre (x, y), or false outside the projection.
+bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
+  const double u = (x + 0.5) / v.width;
+  const double w = (y + 0.5) / v.height;
+  switch (v.projection) {
+    case Projection::LatLong: {
+      // The sun's azimuth in the middle column, the zenith on the top row.
+      dir = fromZenithAzimuth(w * kPi, radians(v.sun_azimuth_deg) + (u - 0.5) * 2.0 * kPi);
+      return true;
+    }
+    case Projection::Fisheye: {
+      const double scale = std::min(v.width, v.height);
+      const double px = (2.0 * (x + 0.5) - v.width) / scale;
+      const double py = (v.height - 2.0 * (y + 0.5)) / scale;
+      const double rho = std::sqrt(px * px + py * py);
+      if (rho > 1.0) return false;
+      // The sun's azimuth toward the top of the image.
+      dir = fromZenithAzimuth(rho * radians(v.fov_deg) * 0.5, radians(v.sun_azimuth_deg) + std::atan2(px, py));
+      return true;
+    }
+    case Projection::Perspective: {
+      const double azimuth = radians(v.view_azimuth_deg);
+      const double elevation = radians(v.view_elevation_deg);
+      const glm::dvec3 forward(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                               std::sin(elevation));
+      const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 0.0, 1.0)));
+      const glm::dvec3 up = glm::cross(right, forward);
+      const double half_width = std::tan(radians(v.fov_deg) * 0.5);
+      const double half_height = half_width * v.height / v.width;
+      dir = glm::normalize(forward + right * ((2.0 * u - 1.0) * half_width) + up * ((1.0 - 2.0 * w) * half_height));
+      return true;
+    }
+  }
+  return false;
+}
+
+// What a pixel sees along `dir`: sky in-scattering, plus the lit Lambertian
+// ground or the sun disk, each seen through the air in front of it.
+Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun) {
+  const AtmosphereParameters& a = sky.atmosphere();
+  const RadianceAndTransmittance in_scattered = sky.skyRadiance(camera, dir, sun);
+  Spectrum radiance = in_scattered.radiance;
+  // A camera below the ground sees from the ground, as the lookups do.
+  const double r = std::max(glm::length(camera), a.bottom_radius_m);
+  const glm::dvec3 eye = camera * (r / glm::length(camera));
+  const double mu = glm::dot(eye, dir) / r;
+  if (rayIntersectsSphere(r, mu, a.bottom_radius_m)) {
+    const glm::dvec3 ground = eye + dir * distanceToInnerSphere(r, mu, a.bottom_radius_m);
+    const SunAndSkyIrradiance e = sky.irradiance(ground, glm::normalize(ground), sun);
+    radiance += in_scattered.transmittance * a.ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
+  } else if (glm::dot(dir, sun) > std::cos(a.sun_angular_radius_rad)) {
+    radiance += in_scattered.transmittance * sky.solarRadiance();
+  }
+  return radiance;
+}
+
+}  // namespace
+
+std::vector<float> renderSkyRadiance(const Sky& sky, const SkyView& v) {
+  std::vector<float> image(static_cast<size_t>(v.width) * v.height * 3, 0.0f);
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m);
+  const glm::dvec3 sun = fromZenithAzimuth(radians(v.sun_zenith_deg), radians(v.sun_azimuth_deg));
+  const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
+  const int rgb[3] = {nearestChannel(wavelengths, 680.0), nearestChannel(wavelengths, 550.0),
+                      nearestChannel(wavelengths, 440.0)};
+#pragma omp parallel for schedule(dynamic)
+  for (int y = 0; y < v.height; ++y) {
+    for (int x = 0; x < v.width; ++x) {
+      glm::dvec3 dir;
+      if (!pixelDirection(v, x, y, dir)) continue;
+      const Spectrum radiance = radianceAlong(sky, camera, dir, sun);
+      float* pixel = &image[(static_cast<size_t>(y) * v.width + x) * 3];
+      for (int c = 0; c < 3; ++c) pixel[c] = radiance[rgb[c]];
+    }
+  }
+  return image;
+}
+
+namespace {
+
+// Narkowicz's fit of the ACES filmic curve.
+double acesFilm(double x) { return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
+
+double srgbEncode(double linear) {
+  const double v = std::clamp(linear, 0.0, 1.0);
+  return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+}
+
+}  // namespace
+
+std::vector<unsigned char> encodeForDisplay(const std::vector<float>& linear_rgb, double exposure, ToneMap tone_map) {
+  std::vector<unsigned char> out(linear_rgb.size());
+  for (size_t i = 0; i < linear_rgb.size(); ++i) {
+    double v = linear_rgb[i] * exposure;
+    if (tone_map == ToneMap::Reinhard) v = v / (1.0 + v);
+    if (tone_map == ToneMap::Aces) v = acesFilm(v);
+    out[i] = static_cast<unsigned char>(std::lround(srgbEncode(v) * 255.0));
+  }
+  return out;
+}
+
+}  // namespace skybake
