@@ -60,15 +60,19 @@ struct TextureCoord2D {
   double v;
 };
 
+// The mu coordinate alone, for callers that hold rho = distanceToHorizon(r)
+// and H = horizonToTopDistance() for many directions from one r.
+inline double transmittanceCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho,
+                                   double H, double mu) {
+  const double dist = distanceToOuterSphere(r, mu, d.top_radius_m);
+  return textureCoordFromUnitRange(fractionOfRange(dist, d.top_radius_m - r, rho + H), size_mu);
+}
+
 inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int size_mu, int size_r,
                                                 double r, double mu) {
   const double H = d.horizonToTopDistance();
   const double rho = d.distanceToHorizon(r);
-  const double dist = distanceToOuterSphere(r, mu, d.top_radius_m);
-  const double d_min = d.top_radius_m - r;
-  const double d_max = rho + H;
-  return {textureCoordFromUnitRange(fractionOfRange(dist, d_min, d_max), size_mu),
-          textureCoordFromUnitRange(rho / H, size_r)};
+  return {transmittanceCoordMu(d, size_mu, r, rho, H, mu), textureCoordFromUnitRange(rho / H, size_r)};
 }
 
 // ---- irradiance (2D: u = mu_s across, v = r down) ----
@@ -113,29 +117,32 @@ inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, doubl
                                    size_mu_s);
 }
 
+// The mu coordinate alone (see transmittanceCoordMu).
+inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho, double H,
+                                double mu, bool ray_intersects_ground) {
+  const double r_mu = r * mu;
+  const double discriminant = r_mu * r_mu - r * r + d.bottom_radius_m * d.bottom_radius_m;
+  if (ray_intersects_ground) {
+    // Distance to the ground, between r - bottom (straight down) and rho (the horizon).
+    const double dist = -r_mu - safeSqrt(discriminant);
+    const double x = fractionOfRange(dist, r - d.bottom_radius_m, rho);
+    return 0.5 - 0.5 * textureCoordFromUnitRange(x, size_mu / 2);
+  }
+  // Distance to the top, between top - r (straight up) and rho + H (the horizon).
+  const double dist = -r_mu + safeSqrt(discriminant + H * H);
+  const double x = fractionOfRange(dist, d.top_radius_m - r, rho + H);
+  return 0.5 + 0.5 * textureCoordFromUnitRange(x, size_mu / 2);
+}
+
 inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
                                                    const ScatteringSizes& s, double r, double mu,
                                                    double mu_s, double nu,
                                                    bool ray_intersects_ground) {
   const double H = d.horizonToTopDistance();
   const double rho = d.distanceToHorizon(r);
-  const double u_r = textureCoordFromUnitRange(rho / H, s.r);
-
-  const double r_mu = r * mu;
-  const double discriminant = r_mu * r_mu - r * r + d.bottom_radius_m * d.bottom_radius_m;
-  double u_mu;
-  if (ray_intersects_ground) {
-    // Distance to the ground, between r - bottom (straight down) and rho (the horizon).
-    const double dist = -r_mu - safeSqrt(discriminant);
-    const double x = fractionOfRange(dist, r - d.bottom_radius_m, rho);
-    u_mu = 0.5 - 0.5 * textureCoordFromUnitRange(x, s.mu / 2);
-  } else {
-    // Distance to the top, between top - r (straight up) and rho + H (the horizon).
-    const double dist = -r_mu + safeSqrt(discriminant + H * H);
-    const double x = fractionOfRange(dist, d.top_radius_m - r, rho + H);
-    u_mu = 0.5 + 0.5 * textureCoordFromUnitRange(x, s.mu / 2);
-  }
-  return {(nu + 1.0) * 0.5, scatteringCoordMuS(d, s.mu_s, mu_s), u_mu, u_r};
+  return {(nu + 1.0) * 0.5, scatteringCoordMuS(d, s.mu_s, mu_s),
+          scatteringCoordMu(d, s.mu, r, rho, H, mu, ray_intersects_ground),
+          textureCoordFromUnitRange(rho / H, s.r)};
 }
 
 // The configuration at the centre of a texel.

@@ -210,16 +210,4 @@ Spectrum Sky::transmittance(const glm::dvec3& a, const glm::dvec3& b) const {
   return glm::exp(-sampler_.opticalDepthAlongRay(bake_.tables.transmittance, start.r, start.mu, inside, ground));
 }
 
-void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
-                           SpectrumBatch radiance, SpectrumBatch transmittance) const {
-  for (size_t i = 0; i < rays.count; ++i) {
-    const RadianceAndTransmittance v =
-        skyRadiance(camera, glm::dvec3(rays.dir_x[i], rays.dir_y[i], rays.dir_z[i]), sun_dir);
-    for (int c = 0; c < kMaxChannels; ++c) {
-      if (radiance.channel[c] != nullptr) radiance.channel[c][i] = v.radiance[c];
-      if (transmittance.channel[c] != nullptr) transmittance.channel[c][i] = v.transmittance[c];
-    }
-  }
-}
-
 }  // namespace skybake

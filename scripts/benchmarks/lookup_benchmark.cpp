@@ -1,0 +1,80 @@
+// Sky-radiance lookups per second on one core: scalar calls and the batch
+// entry point, over view directions spread over the whole sphere from a
+// camera 1 km up. The bake comes from $SKYBAKE_BAKE (scripts/bench_lookup.sh).
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <random>
+
+#include "runtime/sky.h"
+
+namespace {
+
+const skybake::Sky& benchSky() {
+  static const skybake::Sky sky = [] {
+    const char* path = std::getenv("SKYBAKE_BAKE");
+    return skybake::Sky::load(path != nullptr ? path : "out/earth.exr");
+  }();
+  return sky;
+}
+
+struct Directions {
+  std::vector<float> x, y, z;
+};
+
+// Uniform on the sphere, fixed seed.
+Directions randomDirections(size_t count) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  Directions d;
+  for (size_t i = 0; i < count; ++i) {
+    const float z = 2.0f * uniform(rng) - 1.0f;
+    const float phi = 6.2831853f * uniform(rng);
+    const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    d.x.push_back(s * std::cos(phi));
+    d.y.push_back(s * std::sin(phi));
+    d.z.push_back(z);
+  }
+  return d;
+}
+
+constexpr size_t kRays = 1 << 16;
+const glm::dvec3 kSun(0.5, 0.0, 0.8660254037844386);  // 30 deg from the zenith
+
+void BM_SkyRadianceScalar(benchmark::State& state) {
+  const skybake::Sky& sky = benchSky();
+  const Directions d = randomDirections(kRays);
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 1000.0);
+  size_t i = 0;
+  for (auto _ : state) {
+    const auto v = sky.skyRadiance(camera, glm::dvec3(d.x[i], d.y[i], d.z[i]), kSun);
+    benchmark::DoNotOptimize(v);
+    i = (i + 1) % kRays;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SkyRadianceScalar);
+
+void BM_SkyRadianceBatch(benchmark::State& state) {
+  const skybake::Sky& sky = benchSky();
+  const Directions d = randomDirections(kRays);
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 1000.0);
+  std::vector<float> radiance[3], transmittance[3];
+  skybake::SpectrumBatch r{}, t{};
+  for (int c = 0; c < 3; ++c) {
+    radiance[c].resize(kRays);
+    transmittance[c].resize(kRays);
+    r.channel[c] = radiance[c].data();
+    t.channel[c] = transmittance[c].data();
+  }
+  for (auto _ : state) {
+    sky.skyRadianceBatch(camera, kSun, {d.x.data(), d.y.data(), d.z.data(), kRays}, r, t);
+    benchmark::DoNotOptimize(radiance[0].data());
+  }
+  state.SetItemsProcessed(state.iterations() * kRays);
+}
+BENCHMARK(BM_SkyRadianceBatch)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
