@@ -112,12 +112,16 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   // Rayleigh phase function (so a lookup multiplies it back once).
   tables.scattering = delta_rayleigh;
   tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
+  tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   Texture4D delta_multiple;
   for (int order = 2; order <= config.bake.orders; ++order) {
     const OrderRadiance previous{order - 1, delta_rayleigh, tables.single_mie, delta_multiple};
-    const Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
+    const ScatteringDensity density = stage.run("scattering_density", order, slices_4d, [&] {
       return computeScatteringDensityTable(ctx, optical_depth, previous, delta_irradiance);
     });
+    for (size_t i = 0; i < tables.multiple_density.texels.size(); ++i) {
+      tables.multiple_density.texels[i] += density.at_density_texels.texels[i];
+    }
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
       return computeIndirectIrradianceTable(ctx, previous);
     });
@@ -127,7 +131,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 
     delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
-      return computeMultipleScatteringTable(ctx, optical_depth, density);
+      return computeMultipleScatteringTable(ctx, optical_depth, density.at_scattering_texels);
     });
     for (int i_r = 0; i_r < s.r; ++i_r)
       for (int i_mu = 0; i_mu < s.mu; ++i_mu)

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "baker/ray_quadrature.h"
+#include "runtime/ray_quadrature.h"
 #include "data_formats/ray_sphere.h"
 
 namespace skybake {

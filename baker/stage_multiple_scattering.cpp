@@ -1,6 +1,6 @@
 #include <omp.h>
 
-#include "baker/ray_quadrature.h"
+#include "runtime/ray_quadrature.h"
 #include "baker/stages.h"
 
 namespace skybake {

@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "baker/atmosphere_media.h"
+#include "runtime/atmosphere_media.h"
 #include "baker/stages.h"
 
 namespace skybake {
@@ -87,14 +87,14 @@ IncidentRadiance incidentRadiance(const StageContext& ctx, const DirectionGrid& 
 
 }  // namespace
 
-Texture4D computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
-                                        const OrderRadiance& previous,
-                                        const Texture2D& ground_irradiance) {
+ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
+                                                const OrderRadiance& previous,
+                                                const Texture2D& ground_irradiance) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
   const AtmosphereMedia media(a);
   const DirectionGrid grid = makeDirectionGrid();
-  Texture4D density(s.r, s.mu, s.mu_s, s.nu);
+  ScatteringDensity out{Texture4D(s.r, s.mu, s.mu_s, s.nu), Texture4D(s.r, s.mu, s.mu_s, s.nu)};
   const float g = static_cast<float>(a.mie_phase_g);
   const float cs_norm = static_cast<float>(3.0 / (8.0 * kPi) * (1.0 - a.mie_phase_g * a.mie_phase_g) /
                                            (2.0 + a.mie_phase_g * a.mie_phase_g));
@@ -109,44 +109,50 @@ Texture4D computeScatteringDensityTable(const StageContext& ctx, const Texture2D
           incidentRadiance(ctx, grid, optical_depth, previous, ground_irradiance, r, mu_s);
       const double altitude = r - a.bottom_radius_m;
       const Spectrum rayleigh_coefficient =
-          a.rayleigh_scattering * static_cast<float>(media.rayleighDensity(altitude));
-      const Spectrum mie_coefficient = a.mie_scattering * static_cast<float>(media.mieDensity(altitude));
+          a.rayleigh_scattering * (rayleigh_norm * static_cast<float>(media.rayleighDensity(altitude)));
+      const Spectrum mie_coefficient = a.mie_scattering * (cs_norm * static_cast<float>(media.mieDensity(altitude)));
       const double sun_x = safeSqrt(1.0 - mu_s * mu_s);
 
+      // Density toward the viewer looking along (mu, nu): the phase-weighted
+      // sum over incident directions.
+      auto densityToward = [&](double mu, double nu) {
+        const double ox = sun_x > 0.0 ? clampCosine((nu - mu * mu_s) / sun_x) : 0.0;
+        const float vx = static_cast<float>(ox);
+        const float vy = static_cast<float>(safeSqrt(1.0 - ox * ox - mu * mu));
+        const float vz = static_cast<float>(mu);
+        float r0 = 0, r1 = 0, r2 = 0, r3 = 0, m0 = 0, m1 = 0, m2 = 0, m3 = 0;
+#pragma omp simd reduction(+ : r0, r1, r2, r3, m0, m1, m2, m3)
+        for (int k = 0; k < kDirections; ++k) {
+          const float cos_angle = vx * grid.x[k] + vy * grid.y[k] + vz * grid.z[k];
+          const float shape = 1.0f + cos_angle * cos_angle;
+          const float base = 1.0f + g * g - 2.0f * g * cos_angle;
+          const float mie_shape = shape / (base * std::sqrt(base));
+          r0 += shape * in.weighted[0][k];
+          r1 += shape * in.weighted[1][k];
+          r2 += shape * in.weighted[2][k];
+          r3 += shape * in.weighted[3][k];
+          m0 += mie_shape * in.weighted[0][k];
+          m1 += mie_shape * in.weighted[1][k];
+          m2 += mie_shape * in.weighted[2][k];
+          m3 += mie_shape * in.weighted[3][k];
+        }
+        return rayleigh_coefficient * Spectrum(r0, r1, r2, r3) + mie_coefficient * Spectrum(m0, m1, m2, m3);
+      };
+
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
+        const double density_mu = muFromDensityTexel(i_mu, s.mu);
         for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
           const ScatteringTexelConfig c =
               scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
-          // The view direction: zenith cosine mu, cosine nu with the sun.
-          const double ox = sun_x > 0.0 ? clampCosine((c.nu - c.mu * mu_s) / sun_x) : 0.0;
-          const float vx = static_cast<float>(ox);
-          const float vy = static_cast<float>(safeSqrt(1.0 - ox * ox - c.mu * c.mu));
-          const float vz = static_cast<float>(c.mu);
-          float r0 = 0, r1 = 0, r2 = 0, r3 = 0, m0 = 0, m1 = 0, m2 = 0, m3 = 0;
-#pragma omp simd reduction(+ : r0, r1, r2, r3, m0, m1, m2, m3)
-          for (int k = 0; k < kDirections; ++k) {
-            const float cos_angle = vx * grid.x[k] + vy * grid.y[k] + vz * grid.z[k];
-            const float shape = 1.0f + cos_angle * cos_angle;
-            const float base = 1.0f + g * g - 2.0f * g * cos_angle;
-            const float mie_shape = shape / (base * std::sqrt(base));
-            r0 += shape * in.weighted[0][k];
-            r1 += shape * in.weighted[1][k];
-            r2 += shape * in.weighted[2][k];
-            r3 += shape * in.weighted[3][k];
-            m0 += mie_shape * in.weighted[0][k];
-            m1 += mie_shape * in.weighted[1][k];
-            m2 += mie_shape * in.weighted[2][k];
-            m3 += mie_shape * in.weighted[3][k];
-          }
-          density.at(i_r, i_mu, i_mu_s, i_nu) =
-              rayleigh_coefficient * (rayleigh_norm * Spectrum(r0, r1, r2, r3)) +
-              mie_coefficient * (cs_norm * Spectrum(m0, m1, m2, m3));
+          out.at_scattering_texels.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(c.mu, c.nu);
+          const double nu = clampNu(-1.0 + 2.0 * i_nu / (s.nu - 1), density_mu, mu_s);
+          out.at_density_texels.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(density_mu, nu);
         }
       }
       ctx.progress.advance(1);
     }
   }
-  return density;
+  return out;
 }
 
 }  // namespace skybake

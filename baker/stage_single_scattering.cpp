@@ -1,7 +1,7 @@
 #include <omp.h>
 
-#include "baker/atmosphere_media.h"
-#include "baker/ray_quadrature.h"
+#include "runtime/atmosphere_media.h"
+#include "runtime/ray_quadrature.h"
 #include "baker/stages.h"
 
 namespace skybake {

@@ -48,8 +48,14 @@ struct OrderRadiance {
 
 // Light scattered once more at each point, per unit length (W m^-3 sr^-1 nm^-1),
 // from the radiance of order n - 1 and, off the ground, the irradiance of
-// order n - 2 (`ground_irradiance`).
-Texture4D computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
+// order n - 2 (`ground_irradiance`). Evaluated on the scattering table's
+// texels (for the multiple-scattering stage) and on the linear-mu texels of
+// the stored density table (see densityCoordMu).
+struct ScatteringDensity {
+  Texture4D at_scattering_texels;
+  Texture4D at_density_texels;
+};
+ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
                                         const OrderRadiance& previous,
                                         const Texture2D& ground_irradiance);
 

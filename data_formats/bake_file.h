@@ -27,6 +27,12 @@ struct BakeTables {
   Texture4D single_mie;
   // Sky irradiance on a horizontal surface (direct sun excluded), W m^-2 nm^-1.
   Texture2D irradiance;
+  // Light scattered once more per unit length at (r, mu_s) toward the viewer
+  // looking along (mu, nu), summed over orders 2..N: W m^-3 sr^-1 nm^-1. The
+  // source of multiple scattering, which lets short segments (aerial
+  // perspective) be integrated directly instead of as a difference of two
+  // nearly equal lookups.
+  Texture4D multiple_density;
 };
 
 struct BakeFile {

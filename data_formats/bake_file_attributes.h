@@ -7,6 +7,7 @@ inline constexpr const char* kPartTransmittance = "transmittance";
 inline constexpr const char* kPartScattering = "scattering";
 inline constexpr const char* kPartSingleMie = "single_mie";
 inline constexpr const char* kPartIrradiance = "irradiance";
+inline constexpr const char* kPartMultipleDensity = "multiple_scattering_density";
 
 inline constexpr const char* kAttrFormatVersion = "skybake:format_version";
 inline constexpr const char* kAttrConfig = "skybake:config";

@@ -111,6 +111,9 @@ BakeFile readChecked(const std::filesystem::path& path) {
   t.single_mie = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   in.readPart(kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), a,
               t.single_mie.texels);
+  t.multiple_density = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
+  in.readPart(kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), a,
+              t.multiple_density.texels);
   return bake;
 }
 

@@ -135,6 +135,12 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake) {
       {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded",
        "W m^-2 nm^-1", &t.irradiance.texels, t.irradiance.width, t.irradiance.height,
        fmt::format("mu_s={} r={}", t.irradiance.width, t.irradiance.height)},
+      {kPartMultipleDensity,
+       "scattering density of orders 2 and up: light scattered per unit length toward the viewer",
+       "W m^-3 sr^-1 nm^-1", &t.multiple_density.texels, t.multiple_density.atlasWidth(),
+       t.multiple_density.atlasHeight(),
+       fmt::format("r={} mu={} mu_s={} nu={}", t.multiple_density.r_size, t.multiple_density.mu_size,
+                   t.multiple_density.mu_s_size, t.multiple_density.nu_size)},
   };
   for (const PartToWrite& part : parts) {
     if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0) {

@@ -145,6 +145,18 @@ inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
           textureCoordFromUnitRange(rho / H, s.r)};
 }
 
+// The multiple-scattering density table shares the scattering table's r,
+// mu_s and nu axes but maps mu linearly over [-1, 1], without the horizon
+// split: density depends on the direction only, not on where the ray ends,
+// and is smooth through the horizon. (In the split layout the ground half is
+// degenerate at r = bottom, where every ground ray points straight down.)
+inline double densityCoordMu(double mu, int size_mu) {
+  return textureCoordFromUnitRange((mu + 1.0) * 0.5, size_mu);
+}
+inline double muFromDensityTexel(int i_mu, int size_mu) {
+  return clampCosine(-1.0 + 2.0 * i_mu / (size_mu - 1));
+}
+
 // The configuration at the centre of a texel.
 struct ScatteringTexelConfig {
   double r;

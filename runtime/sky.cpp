@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 
 #include "data_formats/error.h"
+#include "runtime/atmosphere_media.h"
+#include "runtime/ray_quadrature.h"
 
 namespace skybake {
 namespace {
@@ -19,6 +21,19 @@ constexpr double kMieTwilightFadeCosine = 0.01;
 // blend removes that step. 0.002 is about 0.1 deg, a few texels of the mu axis
 // near the horizon at the default 128.
 constexpr double kHorizonBlendCosine = 0.002;
+
+// Radiance toward a point is found two ways. Over long segments, as the
+// scattering to the ray's end seen from the camera minus that seen from the
+// point (two lookups). Over short ones that difference is a few percent of
+// either term, so the tables' interpolation kinks, amplified 30 to 100 times,
+// show as seams; there the segment is integrated directly from the
+// single-scattering source and the tabulated multiple-scattering source.
+// Between the two lengths the results are blended linearly in distance.
+constexpr double kDirectSegmentMaxLength_m = 20000.0;
+constexpr double kDifferenceSegmentMinLength_m = 10000.0;
+// 4 sub-intervals x 4 Gauss nodes: a vertical 20 km segment holds 17 Mie
+// scale heights, 4 per sub-interval, integrated to ~1e-3.
+constexpr int kDirectSegmentSubintervals = 4;
 
 struct RayStart {
   bool misses_atmosphere;
@@ -126,6 +141,42 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
                    Spectrum(0.0f))};
 }
 
+// In-scattered radiance over [0, length] of the ray (r, mu) by direct
+// quadrature of the scattering sources, each attenuated back to the start,
+// with the optical depth along the segment integrated from the density
+// profiles (a difference of two tabulated depths to the top is two values
+// near 30 at the horizon whose difference over 1 km is 0.04: table error
+// would dominate it). Also gives the segment's transmittance.
+RadianceAndTransmittance directSegmentRadiance(const TableSampler& sampler, const BakeTables& t,
+                                               const AtmosphereParameters& a, double r, double mu, double mu_s,
+                                               double nu, double length) {
+  const AtmosphereDomain& domain = sampler.domain();
+  const AtmosphereMedia media(a);
+  const float rayleigh_phase = static_cast<float>(rayleighPhase(nu));
+  const float mie_phase = static_cast<float>(cornetteShanksPhase(a.mie_phase_g, nu));
+  auto altitudeAt = [&](double d) {
+    return std::clamp(radiusAlongRay(r, mu, d), domain.bottom_radius_m, domain.top_radius_m) - domain.bottom_radius_m;
+  };
+  Spectrum sum(0.0f);
+  const SpectrumD depth = forEachQuadratureNodeWithIntegral<SpectrumD>(
+      length, kDirectSegmentSubintervals, [&](double d) { return media.extinction(altitudeAt(d)); },
+      [&](double d, double w, const SpectrumD& depth_to_d) {
+        const double r_d = domain.bottom_radius_m + altitudeAt(d);
+        const double mu_d = cosineAlongRay(r, mu, d, r_d);
+        const double mu_s_d = clampCosine((r * mu_s + d * nu) / r_d);
+        const double altitude = r_d - domain.bottom_radius_m;
+        const Spectrum sunlight =
+            a.sun_irradiance * sampler.transmittanceToSun(t.transmittance, r_d, mu_s_d, a.sun_angular_radius_rad);
+        const Spectrum single_source =
+            (a.rayleigh_scattering * (static_cast<float>(media.rayleighDensity(altitude)) * rayleigh_phase) +
+             a.mie_scattering * (static_cast<float>(media.mieDensity(altitude)) * mie_phase)) *
+            sunlight;
+        const Spectrum multiple_source = sampler.multipleDensity(t.multiple_density, r_d, mu_d, mu_s_d, nu);
+        sum += (single_source + multiple_source) * Spectrum(glm::exp(-depth_to_d)) * static_cast<float>(w);
+      });
+  return {sum, Spectrum(glm::exp(-depth))};
+}
+
 }  // namespace
 
 RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
@@ -146,8 +197,35 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
   const BakeTables& t = bake_.tables;
 
   const bool ground = rayIntersectsSphere(r, mu, domain.bottom_radius_m);
-  const Spectrum transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground));
+  const double scattering_length = std::max(d - shadow, 0.0);
+  const double direct_weight =
+      std::clamp((kDirectSegmentMaxLength_m - scattering_length) /
+                     (kDirectSegmentMaxLength_m - kDifferenceSegmentMinLength_m),
+                 0.0, 1.0);
+  Spectrum radiance(0.0f);
+  Spectrum transmittance(0.0f);
+  if (direct_weight > 0.0) {
+    const float w = static_cast<float>(direct_weight);
+    const RadianceAndTransmittance direct =
+        directSegmentRadiance(sampler_, t, atmosphere(), r, mu, mu_s, nu, scattering_length);
+    radiance += direct.radiance * w;
+    // With a shadow the segment to the point is longer than the lit part.
+    transmittance += (shadow > 0.0 ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground))
+                                   : direct.transmittance) * w;
+  }
+  if (direct_weight < 1.0) {
+    const float w = static_cast<float>(1.0 - direct_weight);
+    const Spectrum table_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground));
+    radiance += differenceSegmentRadiance(r, mu, mu_s, nu, d, shadow, ground, table_transmittance) * w;
+    transmittance += table_transmittance * w;
+  }
+  return {radiance, transmittance};
+}
 
+Spectrum Sky::differenceSegmentRadiance(double r, double mu, double mu_s, double nu, double d, double shadow,
+                                        bool ground, const Spectrum& transmittance) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const BakeTables& t = bake_.tables;
   SegmentScattering s = segmentScattering(sampler_, t, r, mu, mu_s, nu, d, shadow, ground, transmittance);
   const double horizon_mu = -safeSqrt(1.0 - (domain.bottom_radius_m / r) * (domain.bottom_radius_m / r));
   const double from_horizon = mu - horizon_mu;
@@ -163,10 +241,8 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
   }
   const double mie_fade = std::clamp(mu_s / kMieTwilightFadeCosine, 0.0, 1.0);
   const double mie_weight = mie_fade * mie_fade * (3.0 - 2.0 * mie_fade);
-  const Spectrum radiance =
-      s.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-      s.mie * static_cast<float>(mie_weight * cornetteShanksPhase(atmosphere().mie_phase_g, nu));
-  return {radiance, transmittance};
+  return s.rayleigh * static_cast<float>(rayleighPhase(nu)) +
+         s.mie * static_cast<float>(mie_weight * cornetteShanksPhase(atmosphere().mie_phase_g, nu));
 }
 
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal,

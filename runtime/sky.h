@@ -95,6 +95,11 @@ class Sky {
   const BakeTables& tables() const { return bake_.tables; }
 
  private:
+  // In-scattering over [0, d - shadow] of the ray (r, mu) as the difference of
+  // two lookups (see radianceToPoint).
+  Spectrum differenceSegmentRadiance(double r, double mu, double mu_s, double nu, double d, double shadow,
+                                     bool ground, const Spectrum& transmittance) const;
+
   BakeFile bake_;
   TableSampler sampler_;
 };

@@ -132,6 +132,13 @@ class TableSampler {
     return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size));
   }
 
+  // The multiple-scattering density table (linear mu, see densityCoordMu).
+  Spectrum multipleDensity(const Texture4D& table, double r, double mu, double mu_s, double nu) const {
+    ScatteringCoord c = scatteringCoord(r, 1.0, mu_s, nu, false);
+    c.u_mu = densityCoordMu(mu, table.mu_size);
+    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size));
+  }
+
   Spectrum irradiance(const Texture2D& irradiance, double r, double mu_s) const {
     return sampleBilinear(irradiance, irradianceCoordFromRMuS(domain_, sizes_.irradiance_mu_s,
                                                               sizes_.irradiance_r, r, mu_s));

@@ -27,8 +27,10 @@ BakeFile syntheticBake() {
   t.irradiance = Texture2D(s.irradiance_mu_s, s.irradiance_r);
   t.scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.single_mie = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
+  t.multiple_density = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   float x = 0.1f;
-  for (auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.scattering.texels, &t.single_mie.texels}) {
+  for (auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.scattering.texels, &t.single_mie.texels,
+                       &t.multiple_density.texels}) {
     for (Spectrum& v : *texels) {
       v = Spectrum(x, x * 1.5f, x * 0.25f, 0.0f);
       x = x * 1.37f + 0.011f;
@@ -68,6 +70,7 @@ TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
   same(read.tables.irradiance.texels, written.tables.irradiance.texels);
   same(read.tables.scattering.texels, written.tables.scattering.texels);
   same(read.tables.single_mie.texels, written.tables.single_mie.texels);
+  same(read.tables.multiple_density.texels, written.tables.multiple_density.texels);
 }
 
 TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {

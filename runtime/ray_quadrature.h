@@ -28,3 +28,34 @@ inline void forEachQuadratureNode(double a, double b, int segments, NodeFn&& nod
 }
 
 }  // namespace skybake
+
+namespace skybake {
+
+// Like forEachQuadratureNode over [0, length] of a ray, also giving each node
+// the integral of `rate` (e.g. extinction) from 0 to the node: whole
+// sub-intervals by the same rule, the partial one by a 4-point rule of its
+// own. Calls node(t, weight, integral_to_t); returns the integral to `length`.
+template <typename Value, typename RateFn, typename NodeFn>
+inline Value forEachQuadratureNodeWithIntegral(double length, int segments, RateFn&& rate, NodeFn&& node) {
+  const double h = length / segments;
+  Value before(0.0);
+  for (int s = 0; s < segments; ++s) {
+    const double start = s * h;
+    Value whole(0.0);
+    for (int k = 0; k < kGaussNodes; ++k) {
+      const double t = start + 0.5 * h * (1.0 + kGaussAbscissa[k]);
+      const double partial_length = t - start;
+      Value partial(0.0);
+      for (int j = 0; j < kGaussNodes; ++j) {
+        partial += rate(start + 0.5 * partial_length * (1.0 + kGaussAbscissa[j])) * (0.5 * partial_length * kGaussWeight[j]);
+      }
+      const Value rate_t = rate(t);
+      whole += rate_t * (0.5 * h * kGaussWeight[k]);
+      node(t, 0.5 * h * kGaussWeight[k], before + partial);
+    }
+    before += whole;
+  }
+  return before;
+}
+
+}  // namespace skybake
