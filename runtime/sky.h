@@ -42,7 +42,9 @@ struct ViewRayBatch {
   size_t count;
 };
 struct SpectrumBatch {
-  float* channel[kMaxChannels];  // null for channels not wanted
+  // One array per channel of the bake, in its channel order; null for a
+  // channel not wanted. Entries past channelCount() are not written.
+  float* channel[kMaxChannels];
 };
 
 class Sky {

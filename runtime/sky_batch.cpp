@@ -57,7 +57,7 @@ struct OpticalDepthRow {
 void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
                            SpectrumBatch radiance, SpectrumBatch transmittance) const {
   auto store = [&](size_t i, const Spectrum& l, const Spectrum& t) {
-    for (int c = 0; c < kMaxChannels; ++c) {
+    for (int c = 0; c < channelCount(); ++c) {
       if (radiance.channel[c] != nullptr) radiance.channel[c][i] = l[c];
       if (transmittance.channel[c] != nullptr) transmittance.channel[c][i] = t[c];
     }
@@ -94,6 +94,10 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
                                                           textureCoordFromUnitRange(0.0, sizes.transmittance_r),
                                                           sizes.transmittance_r));
   const double g = atmosphere().mie_phase_g;
+  const int channels = channelCount();
+  // Cornette-Shanks without the per-call normalisation: 1 + g^2 and the constant.
+  const double cs_norm = 3.0 / (8.0 * kPi) * (1.0 - g * g) / (2.0 + g * g);
+  const double one_plus_g2 = 1.0 + g * g;
 
   for (size_t i = 0; i < rays.count; ++i) {
     const glm::dvec3 dir(rays.dir_x[i], rays.dir_y[i], rays.dir_z[i]);
@@ -102,8 +106,10 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
     const bool ground = rayIntersectsSphere(r, mu, d.bottom_radius_m);
     const AxisLerp mu_lerp = axisLerpFromTextureCoord(scatteringCoordMu(d, ss.mu, r, rho, H, mu, ground), ss.mu);
     const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, ss.nu);
+    const double base = one_plus_g2 - 2.0 * g * nu;
+    const double mie_phase = cs_norm * (1.0 + nu * nu) / (base * std::sqrt(base));
     const Spectrum l = rayleigh.sample(mu_lerp, nu_lerp) * static_cast<float>(rayleighPhase(nu)) +
-                       mie.sample(mu_lerp, nu_lerp) * static_cast<float>(cornetteShanksPhase(g, nu));
+                       mie.sample(mu_lerp, nu_lerp) * static_cast<float>(mie_phase);
     Spectrum tau;
     if (ground) {
       // Both legs reversed (pointing up), as TableSampler::opticalDepthAlongRay.
@@ -115,7 +121,9 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
     } else {
       tau = depth_here.sample(transmittanceCoordMu(d, sizes.transmittance_mu, r, rho, H, mu));
     }
-    store(i, l, glm::exp(-tau));
+    Spectrum t_out(0.0f);
+    for (int c = 0; c < channels; ++c) t_out[c] = std::exp(-tau[c]);  // unused lanes stay 0
+    store(i, l, t_out);
   }
 }
 
