@@ -7,6 +7,8 @@
 
 #include "baker/stages.h"
 
+#include <fmt/format.h>
+
 namespace skybake {
 namespace {
 
@@ -43,6 +45,60 @@ Spectrum meanSingleScatteringRadiance(const TableSampler& sampler, const Texture
                  SpectrumD(mie.at(i_r, i_mu, i_mu_s, i_nu)) * cornetteShanksPhase(g, nu);
         }
   return Spectrum(sum / static_cast<double>(rayleigh.texels.size()));
+}
+
+// scattering += scale * delta / Rayleigh phase, the phase taken at the nu of
+// the texel's slice, not at the (clamped) nu it was computed for: every texel
+// of a slice then shares one divisor, so interpolating in r, mu and mu_s and
+// multiplying back by the phase at the looked-up nu is consistent. With the
+// clamped nu, neighbouring texels carry different divisors and a nearly
+// isotropic multiple-scattering field comes back 30 % too bright toward the sun.
+void addToScattering(Texture4D& scattering, const Texture4D& delta, const Spectrum& scale) {
+  for (int i_nu = 0; i_nu < delta.nu_size; ++i_nu) {
+    const Spectrum factor = scale / static_cast<float>(rayleighPhase(nuOfScatteringSlice(i_nu, delta.nu_size)));
+    for (int i_r = 0; i_r < delta.r_size; ++i_r)
+      for (int i_mu = 0; i_mu < delta.mu_size; ++i_mu)
+        for (int i_mu_s = 0; i_mu_s < delta.mu_s_size; ++i_mu_s) {
+          scattering.at(i_r, i_mu, i_mu_s, i_nu) += delta.at(i_r, i_mu, i_mu_s, i_nu) * factor;
+        }
+  }
+}
+
+// Above this ratio between successive orders a geometric tail is too uncertain
+// (and too large) to add: such atmospheres need more computed orders.
+constexpr float kMaxTailRatio = 0.8f;
+
+TailEstimate addTailEstimate(const std::vector<OrderContribution>& orders, int channels, const Texture4D& last_radiance,
+                             const Texture4D& last_density, const Texture2D& last_irradiance, BakeTables& tables) {
+  TailEstimate tail;
+  const size_t n = orders.size();
+  if (n < 3) {
+    tail.reason = "not applied: needs at least 3 orders to estimate the ratio";
+    return tail;
+  }
+  Spectrum scale(0.0f);
+  for (int c = 0; c < channels; ++c) {
+    const float previous = orders[n - 2].mean_radiance[c];
+    tail.ratio[c] = previous > 0.0f ? orders[n - 1].mean_radiance[c] / previous : 0.0f;
+    if (!(tail.ratio[c] > 0.0f && tail.ratio[c] < kMaxTailRatio)) {
+      tail.ratio = Spectrum(0.0f);
+      tail.reason = fmt::format("not applied: order ratio {} outside (0, {})", orders[n - 1].mean_radiance[c] / previous, kMaxTailRatio);
+      return tail;
+    }
+    scale[c] = tail.ratio[c] / (1.0f - tail.ratio[c]);
+  }
+  addToScattering(tables.scattering, last_radiance, scale);
+  for (size_t i = 0; i < tables.multiple_density.texels.size(); ++i) {
+    tables.multiple_density.texels[i] += last_density.texels[i] * scale;
+  }
+  // The sky irradiance holds orders 1 .. N-1; the rest follow the same series
+  // from order N - 1 on.
+  for (size_t i = 0; i < tables.irradiance.texels.size(); ++i) {
+    tables.irradiance.texels[i] += last_irradiance.texels[i] * scale;
+  }
+  tail.applied = true;
+  tail.reason = fmt::format("applied after order {}: the remaining orders as a geometric series", orders[n - 1].order);
+  return tail;
 }
 
 class StageRunner {
@@ -114,6 +170,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
   tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   Texture4D delta_multiple;
+  Texture4D last_density;  // the last order's density at the stored texels
   for (int order = 2; order <= config.bake.orders; ++order) {
     const OrderRadiance previous{order - 1, delta_rayleigh, tables.single_mie, delta_multiple};
     const ScatteringDensity density = stage.run("scattering_density", order, slices_4d, [&] {
@@ -122,6 +179,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     for (size_t i = 0; i < tables.multiple_density.texels.size(); ++i) {
       tables.multiple_density.texels[i] += density.at_density_texels.texels[i];
     }
+    last_density = density.at_density_texels;
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
       return computeIndirectIrradianceTable(ctx, previous);
     });
@@ -133,15 +191,14 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
       return computeMultipleScatteringTable(ctx, optical_depth, density.at_scattering_texels);
     });
-    for (int i_r = 0; i_r < s.r; ++i_r)
-      for (int i_mu = 0; i_mu < s.mu; ++i_mu)
-        for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
-          for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-            const double nu = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu).nu;
-            tables.scattering.at(i_r, i_mu, i_mu_s, i_nu) +=
-                delta_multiple.at(i_r, i_mu, i_mu_s, i_nu) / static_cast<float>(rayleighPhase(nu));
-          }
+    addToScattering(tables.scattering, delta_multiple, Spectrum(1.0f));
     report.orders.push_back({order, meanOf(delta_multiple.texels), Spectrum(0.0f)});
+  }
+
+  if (config.bake.tail_estimate) {
+    report.tail = addTailEstimate(report.orders, a.channelCount(), delta_multiple, last_density, delta_irradiance, tables);
+  } else {
+    report.tail.reason = "disabled (bake.tail_estimate = false)";
   }
 
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -24,8 +24,20 @@ struct OrderContribution {
   Spectrum mean_irradiance;  // 0 for the last order (nothing reflects it yet)
 };
 
+// The orders after the last computed one, estimated as a geometric series:
+// each later order is `ratio` times the one before (per channel, from the
+// last two orders' mean radiance), so together they add ratio / (1 - ratio)
+// times the last order. Applied only where that is sound: at least 3 orders
+// and a ratio in (0, kMaxTailRatio).
+struct TailEstimate {
+  bool applied = false;
+  Spectrum ratio{0.0f};
+  std::string reason;  // why it was or was not applied
+};
+
 struct BakeReport {
   int threads = 1;
+  TailEstimate tail;
   double wall_seconds = 0.0;
   double cpu_seconds = 0.0;
   double peak_memory_mib = 0.0;

@@ -35,6 +35,9 @@ std::string BakeReport::toJson(bool with_run_facts) const {
                            {"mean_irradiance", {o.mean_irradiance[0], o.mean_irradiance[1], o.mean_irradiance[2], o.mean_irradiance[3]}}});
   }
   j["orders"] = orders_json;
+  j["tail_estimate"] = {{"applied", tail.applied},
+                        {"ratio", {tail.ratio[0], tail.ratio[1], tail.ratio[2], tail.ratio[3]}},
+                        {"reason", tail.reason}};
   return j.dump(2);
 }
 

@@ -9,11 +9,6 @@
 namespace skybake {
 namespace {
 
-// Sub-intervals per smooth piece: a vertical piece of 20 km holds 16 Mie scale
-// heights of 1.2 km; 16 sub-intervals of 1.25 km each keep the 4-point rule's
-// error below 1e-6 relative on exp(-h / 1.2 km).
-constexpr int kSegmentsPerPiece = 16;
-
 // Altitudes where a profile's density has a kink.
 void appendKinkAltitudes(const DensityProfile& profile, std::vector<double>& altitudes) {
   double layer_bottom = 0.0;
@@ -34,14 +29,17 @@ void appendKinkAltitudes(const DensityProfile& profile, std::vector<double>& alt
 
 }  // namespace
 
-SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m) {
+SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
+                               int segments_per_piece) {
   const AtmosphereParameters& a = media.parameters();
-  std::vector<double> kinks;
+  // Reused per thread: this runs millions of times in the reference solver.
+  thread_local std::vector<double> kinks, breaks;
+  kinks.clear();
   appendKinkAltitudes(a.rayleigh_density, kinks);
   appendKinkAltitudes(a.mie_density, kinks);
   appendKinkAltitudes(a.absorption_density, kinks);
 
-  std::vector<double> breaks = {0.0, length_m};
+  breaks.assign({0.0, length_m});
   for (double h : kinks) {
     const double radius = a.bottom_radius_m + h;
     const double discriminant = r * r * (mu * mu - 1.0) + radius * radius;
@@ -55,7 +53,7 @@ SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu
   SpectrumD depth(0.0);
   for (size_t p = 0; p + 1 < breaks.size(); ++p) {
     if (breaks[p + 1] <= breaks[p]) continue;
-    forEachQuadratureNode(breaks[p], breaks[p + 1], kSegmentsPerPiece, [&](double t, double w) {
+    forEachQuadratureNode(breaks[p], breaks[p + 1], segments_per_piece, [&](double t, double w) {
       const double altitude = radiusAlongRay(r, mu, t) - a.bottom_radius_m;
       depth += media.extinction(altitude) * w;
     });
@@ -63,9 +61,9 @@ SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu
   return depth;
 }
 
-SpectrumD opticalDepthToTop(const AtmosphereMedia& media, double r, double mu) {
-  return opticalDepthAlongRay(media, r, mu,
-                              distanceToOuterSphere(r, mu, media.parameters().top_radius_m));
+SpectrumD opticalDepthToTop(const AtmosphereMedia& media, double r, double mu, int segments_per_piece) {
+  return opticalDepthAlongRay(media, r, mu, distanceToOuterSphere(r, mu, media.parameters().top_radius_m),
+                              segments_per_piece);
 }
 
 }  // namespace skybake

@@ -10,9 +10,15 @@ namespace skybake {
 // crosses a layer boundary or a kink of a linear layer (where its value is
 // clamped at 0 or 1), so every piece is smooth and Gauss-Legendre converges
 // fast; the planet's surface does not stop the ray.
-SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m);
+// `segments_per_piece` sub-intervals of 4 Gauss nodes cover each smooth piece:
+// 16 (the default) puts the error near 1e-9 on Earth's steepest profile (Mie,
+// 1.2 km), 6 near 1e-6, enough where the result feeds a Monte Carlo estimate.
+inline constexpr int kOpticalDepthSegmentsPerPiece = 16;
+SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
+                               int segments_per_piece = kOpticalDepthSegmentsPerPiece);
 
 // Optical depth from (r, mu) to the top boundary.
-SpectrumD opticalDepthToTop(const AtmosphereMedia& media, double r, double mu);
+SpectrumD opticalDepthToTop(const AtmosphereMedia& media, double r, double mu,
+                            int segments_per_piece = kOpticalDepthSegmentsPerPiece);
 
 }  // namespace skybake

@@ -145,7 +145,7 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
           const ScatteringTexelConfig c =
               scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
           out.at_scattering_texels.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(c.mu, c.nu);
-          const double nu = clampNu(-1.0 + 2.0 * i_nu / (s.nu - 1), density_mu, mu_s);
+          const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), density_mu, mu_s);
           out.at_density_texels.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(density_mu, nu);
         }
       }

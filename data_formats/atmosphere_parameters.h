@@ -70,6 +70,8 @@ enum class StoragePrecision { Float, Half };
 struct BakeSettings {
   int orders = 4;  // scattering orders: 1 = single scattering only
   StoragePrecision precision = StoragePrecision::Float;
+  // Add the orders after the last as a geometric series (see BakeReport).
+  bool tail_estimate = true;
 };
 
 struct BakeConfig {

@@ -252,7 +252,12 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
 
   if (const toml::table* t = in.table(root, "", "bake", false)) {
-    in.rejectUnknownKeys(*t, "bake.", {"orders", "precision"});
+    in.rejectUnknownKeys(*t, "bake.", {"orders", "precision", "tail_estimate"});
+    if (const toml::node* tail = t->get("tail_estimate")) {
+      auto b = tail->as_boolean();
+      if (!b) in.fail(tail, "bake.tail_estimate", ConfigReader::describe(*tail), "must be true or false");
+      config.bake.tail_estimate = b->get();
+    }
     if (const toml::node* orders = t->get("orders")) {
       config.bake.orders = in.integer(*orders, "bake.orders");
     }

@@ -63,7 +63,7 @@ std::string configToToml(const BakeConfig& config) {
       "[absorption]\nextinction = {}\ndensity = {}\n\n"
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
       "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n\n"
-      "[bake]\norders = {}\nprecision = \"{}\"\n",
+      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n",
       name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
       spectrumList(a.ground_albedo, n), spectrumList(a.sun_irradiance, n),
       numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
@@ -73,7 +73,7 @@ std::string configToToml(const BakeConfig& config) {
       spectrumList(a.absorption_extinction, n), profileList(a.absorption_density),
       s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r,
       s.scattering_mu, s.scattering_mu_s, s.scattering_nu, config.bake.orders,
-      config.bake.precision == StoragePrecision::Half ? "half" : "float");
+      config.bake.precision == StoragePrecision::Half ? "half" : "float", config.bake.tail_estimate);
 }
 
 }  // namespace skybake

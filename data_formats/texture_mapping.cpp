@@ -79,8 +79,7 @@ ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const Sca
   }
   const double mu_s = muSFromScatteringTexel(d, s, i_mu_s);
   // nu texels sit at -1 + 2 i / (nu_size - 1): both ends are tabulated.
-  const double nu = clampCosine(-1.0 + 2.0 * i_nu / (s.nu - 1));
-  return {r, mu, mu_s, clampNu(nu, mu, mu_s), ground};
+  return {r, mu, mu_s, clampNu(nuOfScatteringSlice(i_nu, s.nu), mu, mu_s), ground};
 }
 
 }  // namespace skybake

@@ -180,6 +180,11 @@ RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r,
 RMu irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
                           int i_r);
 
+// The nu a slice of the 4D tables stands for: -1 + 2 i / (nu_size - 1).
+inline double nuOfScatteringSlice(int i_nu, int nu_size) {
+  return clampCosine(-1.0 + 2.0 * i_nu / (nu_size - 1));
+}
+
 // The range of nu a direction with zenith cosine mu can make with a sun at
 // zenith cosine mu_s; texels outside it describe impossible geometry and are
 // evaluated at the nearest possible nu.

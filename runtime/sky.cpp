@@ -245,6 +245,19 @@ Spectrum Sky::differenceSegmentRadiance(double r, double mu, double mu_s, double
          s.mie * static_cast<float>(mie_weight * cornetteShanksPhase(atmosphere().mie_phase_g, nu));
 }
 
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                               const glm::dvec3& sun_dir) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir);
+  const RayStart start = startInAtmosphere(domain, camera, view_dir);
+  if (start.misses_atmosphere || !rayIntersectsSphere(start.r, start.mu, domain.bottom_radius_m)) return v;
+  const glm::dvec3 ground =
+      start.position + view_dir * distanceToInnerSphere(start.r, start.mu, domain.bottom_radius_m);
+  const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun_dir);
+  v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
+  return v;
+}
+
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
                                     const glm::dvec3& sun_dir) const {
   const AtmosphereDomain& domain = sampler_.domain();

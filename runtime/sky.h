@@ -67,6 +67,12 @@ class Sky {
   RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                        const glm::dvec3& sun_dir, double shadow_length_m = 0.0) const;
 
+  // What a viewer receives along the ray, the sun disk aside: skyRadiance
+  // plus, for a ray that ends on the ground, the transmitted radiance of the
+  // Lambertian ground (the bake's albedo) lit by the sun and the sky.
+  RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                            const glm::dvec3& sun_dir) const;
+
   // Radiance scattered toward `camera` between it and `point` (aerial
   // perspective), and the transmittance between them.
   RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,

@@ -2,10 +2,12 @@
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "baker/bake.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/terminal_progress.h"
+#include "baker/report_sidecar.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 
@@ -49,6 +51,13 @@ void runBake(const BakeOptions& o) {
   setStoredReport(bake, !o.reproducible);
   writeBakeFile(output, bake.file);
   const auto bytes = std::filesystem::file_size(output);
+  nlohmann::ordered_json sidecar = nlohmann::ordered_json::parse(bake.report.toJson(!o.reproducible));
+  sidecar = nlohmann::ordered_json{{"bake_file", o.output_path},
+                                   {"atmosphere", config.name},
+                                   {"file_size_bytes", bytes},
+                                   {"orders", config.bake.orders},
+                                   {"bake", sidecar}};
+  writeReportSidecar(output, sidecar);
   fmt::print(stderr, "skybake: baked '{}' ({} orders) into {} ({:.1f} MiB) in {:.2f} s on {} threads: {}\n",
              config.name, config.bake.orders, o.output_path, bytes / (1024.0 * 1024.0),
              bake.report.wall_seconds, bake.report.threads, stageSummary(bake.report));

@@ -33,5 +33,6 @@ Command addBakeCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
 Command addLookupCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
+Command addValidateCommand(CLI::App& app);
 
 }  // namespace skybake::cli

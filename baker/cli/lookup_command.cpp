@@ -2,8 +2,8 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
-#include "baker/cli/csv_table.h"
-#include "baker/cli/local_frame.h"
+#include "baker/csv_table.h"
+#include "baker/local_frame.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
       skybake::cli::addInfoCommand(app),
       skybake::cli::addLookupCommand(app),
       skybake::cli::addRenderCommand(app),
+      skybake::cli::addValidateCommand(app),
   };
 
   try {

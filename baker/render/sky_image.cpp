@@ -60,22 +60,15 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
   return false;
 }
 
-// What a pixel sees along `dir`: sky in-scattering, plus the lit Lambertian
-// ground or the sun disk, each seen through the air in front of it.
+// What a pixel sees along `dir`: what the viewer receives (sky and lit
+// ground), plus the sun disk seen through the air.
 Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun) {
-  const AtmosphereParameters& a = sky.atmosphere();
-  const RadianceAndTransmittance in_scattered = sky.skyRadiance(camera, dir, sun);
-  Spectrum radiance = in_scattered.radiance;
-  // A camera below the ground sees from the ground, as the lookups do.
-  const double r = std::max(glm::length(camera), a.bottom_radius_m);
-  const glm::dvec3 eye = camera * (r / glm::length(camera));
-  const double mu = glm::dot(eye, dir) / r;
-  if (rayIntersectsSphere(r, mu, a.bottom_radius_m)) {
-    const glm::dvec3 ground = eye + dir * distanceToInnerSphere(r, mu, a.bottom_radius_m);
-    const SunAndSkyIrradiance e = sky.irradiance(ground, glm::normalize(ground), sun);
-    radiance += in_scattered.transmittance * a.ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
-  } else if (glm::dot(dir, sun) > std::cos(a.sun_angular_radius_rad)) {
-    radiance += in_scattered.transmittance * sky.solarRadiance();
+  const RadianceAndTransmittance received = sky.receivedRadiance(camera, dir, sun);
+  Spectrum radiance = received.radiance;
+  const double r = std::max(glm::length(camera), sky.atmosphere().bottom_radius_m);
+  const bool sees_ground = rayIntersectsSphere(r, glm::dot(camera, dir) / glm::length(camera), sky.atmosphere().bottom_radius_m);
+  if (!sees_ground && glm::dot(dir, sun) > std::cos(sky.atmosphere().sun_angular_radius_rad)) {
+    radiance += received.transmittance * sky.solarRadiance();
   }
   return radiance;
 }

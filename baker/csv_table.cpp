@@ -1,4 +1,4 @@
-#include "baker/cli/csv_table.h"
+#include "baker/csv_table.h"
 
 #include <charconv>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
 
-namespace skybake::cli {
+namespace skybake {
 namespace {
 
 std::vector<std::string> splitCells(const std::string& line) {
@@ -104,4 +104,4 @@ void writeCsvOutput(const std::string& path, const std::string& text) {
   });
 }
 
-}  // namespace skybake::cli
+}  // namespace skybake

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace skybake::cli {
+namespace skybake {
 
 class CsvTable {
  public:
@@ -38,4 +38,4 @@ class CsvTable {
 // Writes CSV text to `path` atomically, or to stdout when path is empty.
 void writeCsvOutput(const std::string& path, const std::string& text);
 
-}  // namespace skybake::cli
+}  // namespace skybake

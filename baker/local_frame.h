@@ -9,7 +9,7 @@
 
 #include "runtime/phase_functions.h"
 
-namespace skybake::cli {
+namespace skybake {
 
 inline glm::dvec3 directionFromZenithAzimuthDeg(double zenith_deg, double azimuth_deg) {
   const double t = zenith_deg * (kPi / 180.0);
@@ -21,4 +21,4 @@ inline glm::dvec3 cameraAtAltitude(double bottom_radius_m, double altitude_m) {
   return {0.0, 0.0, bottom_radius_m + altitude_m};
 }
 
-}  // namespace skybake::cli
+}  // namespace skybake

@@ -1,0 +1,131 @@
+// skybake validate FILE.exr [--queries standard|quick|Q.csv] [--reference-samples N] [--json OUT.json]
+#include <omp.h>
+
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "baker/cli/commands.h"
+#include "baker/cli/terminal_progress.h"
+#include "baker/report_sidecar.h"
+#include "baker/validation/validation.h"
+#include "data_formats/atomic_file.h"
+#include "data_formats/error.h"
+
+namespace skybake::cli {
+namespace {
+
+struct ValidateOptions {
+  std::string bake_path;
+  std::string queries = "standard";
+  int reference_samples = ReferenceSettings{}.paths;
+  std::string json_path;
+  std::string details_path;
+  std::string cache_dir;
+  bool no_cache = false;
+  int threads = 0;
+};
+
+QuerySet chooseQueries(const std::string& which, const AtmosphereParameters& a) {
+  const double thickness = a.top_radius_m - a.bottom_radius_m;
+  if (which == "standard") return standardQuerySet(thickness);
+  if (which == "quick") return quickQuerySet(thickness);
+  return querySetFromCsv(which);
+}
+
+// One row per query: the bake's and the reference's values side by side.
+void writeDetails(const std::string& path, const AtmosphereParameters& a, const QuerySet& queries,
+                  const ReferenceValues& reference, const MethodValues& bake) {
+  std::string text = "kind,altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m";
+  for (double w : a.wavelengths_nm) text += fmt::format(",bake_{0},reference_{0},reference_error_{0}", w);
+  text += "\n";
+  const int n = a.channelCount();
+  for (size_t i = 0; i < queries.radiance.size(); ++i) {
+    const RadianceQuery& q = queries.radiance[i];
+    text += fmt::format("radiance,{},{},{},{},{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
+                        q.view_azimuth_deg, q.distance_m);
+    for (int c = 0; c < n; ++c) {
+      text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.radiance[i][c], reference.radiance[i].value[c],
+                          reference.radiance[i].standard_error[c]);
+    }
+    text += "\n";
+  }
+  for (size_t i = 0; i < queries.irradiance.size(); ++i) {
+    const IrradianceQuery& q = queries.irradiance[i];
+    text += fmt::format("sky_irradiance,{},{},,,", q.altitude_m, q.sun_zenith_deg);
+    for (int c = 0; c < n; ++c) {
+      text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.irradiance[i][c], reference.irradiance[i].value[c],
+                          reference.irradiance[i].standard_error[c]);
+    }
+    text += "\n";
+  }
+  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
+    std::ofstream out(temp);
+    out << text;
+    if (!out) throwBadInput(fmt::format("{}: cannot write", path));
+  });
+}
+
+void runValidate(const ValidateOptions& o) {
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  const Sky sky = Sky::load(o.bake_path);
+  const AtmosphereParameters& a = sky.atmosphere();
+  const QuerySet queries = chooseQueries(o.queries, a);
+  ReferenceSettings settings;
+  settings.paths = o.reference_samples;
+  settings.cache_directory = o.no_cache ? std::filesystem::path() : o.cache_dir.empty() ? defaultReferenceCacheDirectory() : std::filesystem::path(o.cache_dir);
+
+  TerminalProgress progress;
+  const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
+  const MethodValues bake = evaluateBake(sky, queries);
+  const ErrorReport report = compareWithReference(a, queries, reference, bake, settings.paths);
+
+  fmt::print("validate {} against the reference ({} paths per query), query set '{}': {} radiance and {} "
+             "irradiance queries ({} from the cache, {} computed in {:.1f} s)\n",
+             o.bake_path, settings.paths, queries.name, queries.radiance.size(), queries.irradiance.size(),
+             reference.cached, reference.computed, reference.seconds);
+  fmt::print("relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
+             "0 to 10, twilight: -10 to 0\n\n{}",
+             kSmallestComparedValue, report.table());
+
+  nlohmann::ordered_json j = report.toJson();
+  j["bake_file"] = o.bake_path;
+  j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
+  if (!o.json_path.empty()) {
+    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
+      std::ofstream out(temp);
+      out << j.dump(2) << "\n";
+      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
+    });
+  }
+  if (!o.details_path.empty()) writeDetails(o.details_path, a, queries, reference, bake);
+  nlohmann::ordered_json sidecar = readReportSidecar(o.bake_path);
+  sidecar["validation"] = j;
+  writeReportSidecar(o.bake_path, sidecar);
+}
+
+}  // namespace
+
+Command addValidateCommand(CLI::App& app) {
+  auto o = std::make_shared<ValidateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "validate", "Measure a bake's error against the independent reference solver (results cached on disk).");
+  cmd->add_option("file", o->bake_path, "Bake file (.exr).")->required();
+  cmd->add_option("--queries", o->queries,
+                  "standard (docs/QUERIES.md), quick (a small subset) or a CSV with the columns of "
+                  "'lookup radiance'.")
+      ->capture_default_str();
+  cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
+      ->check(CLI::Range(1, 100000000))
+      ->capture_default_str();
+  cmd->add_option("--json", o->json_path, "Also write the report as JSON here.");
+  cmd->add_option("--details", o->details_path, "Also write every query's bake and reference values (CSV).");
+  cmd->add_option("--cache-dir", o->cache_dir,
+                  "Reference cache directory (default $SKYBAKE_CACHE_DIR, $XDG_CACHE_HOME/skybake or "
+                  "~/.cache/skybake).");
+  cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
+  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores).")->check(CLI::Range(1, 4096));
+  return {cmd, [o] { runValidate(*o); }};
+}
+
+}  // namespace skybake::cli

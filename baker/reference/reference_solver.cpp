@@ -1,0 +1,352 @@
+#include "baker/reference/reference_solver.h"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "baker/optical_depth.h"
+#include "baker/reference/shell_geometry.h"
+#include "runtime/atmosphere_media.h"
+#include "runtime/phase_functions.h"
+#include "runtime/ray_quadrature.h"
+
+namespace skybake {
+namespace {
+
+using reference::ShellRay;
+using reference::shellRay;
+
+// Sub-intervals per smooth piece of the view ray for the deterministic single
+// scattering: 64 x 4 Gauss nodes. A vertical piece of 60 km has 0.8 Mie scale
+// heights per sub-interval (error ~1e-9); a horizontal ray of 1000 km changes
+// altitude by less than that per sub-interval near its lowest point.
+constexpr int kSingleScatteringSubintervals = 64;
+// Bins of the tabulated proposal for vertex positions along a ray.
+constexpr int kVertexBins = 24;
+// Optical depths inside the Monte Carlo part: ~1e-6 relative (see
+// opticalDepthAlongRay), far below the noise they feed.
+constexpr int kPathOpticalDepthSegments = 6;
+// Share of the vertex proposal spread uniformly over the ray, so every point
+// where light can scatter has a positive probability (unbiasedness).
+constexpr double kUniformVertexShare = 0.1;
+constexpr int kMaxPathVertices = 512;
+
+// Uniform double in [0, 1) from 53 random bits: the same on every platform.
+class Random {
+ public:
+  explicit Random(uint64_t seed) : state_(seed) {}
+  double next() {
+    // splitmix64: small, fast, statistically sound for this use.
+    uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-53;
+  }
+
+ private:
+  uint64_t state_;
+};
+
+// Any unit vector perpendicular to n, and the third axis of a frame.
+void frameAround(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+  const glm::dvec3 helper = std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  t = glm::normalize(glm::cross(helper, n));
+  b = glm::cross(n, t);
+}
+
+glm::dvec3 directionAround(const glm::dvec3& axis, double cos_theta, double phi) {
+  glm::dvec3 t, b;
+  frameAround(axis, t, b);
+  const double sin_theta = safeSqrt(1.0 - cos_theta * cos_theta);
+  return glm::normalize(axis * cos_theta + t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)));
+}
+
+double henyeyGreenstein(double g, double cos_theta) {
+  const double base = 1.0 + g * g - 2.0 * g * cos_theta;
+  return (1.0 - g * g) / (4.0 * kPi * base * std::sqrt(base));
+}
+
+class PathTracer {
+ public:
+  explicit PathTracer(const AtmosphereParameters& a) : a_(a), media_(a) {}
+
+  double altitude(const glm::dvec3& p) const { return glm::length(p) - a_.bottom_radius_m; }
+
+  // Sun transmittance at p for a point sun: 0 in the planet's shadow.
+  SpectrumD sunTransmittance(const glm::dvec3& p, const glm::dvec3& sun, int segments) const {
+    const double r = std::max(glm::length(p), a_.bottom_radius_m);
+    const double mu_s = clampCosine(glm::dot(p, sun) / glm::length(p));
+    if (rayIntersectsSphere(r, mu_s, a_.bottom_radius_m)) return SpectrumD(0.0);
+    return glm::exp(-opticalDepthToTop(media_, r, mu_s, segments));
+  }
+
+  // Light scattered at p toward -view_dir, from the sun, per unit length.
+  SpectrumD sunScatteringSource(const glm::dvec3& p, const glm::dvec3& view_dir, const glm::dvec3& sun,
+                                int segments) const {
+    const double h = altitude(p);
+    const double nu = clampCosine(glm::dot(view_dir, sun));
+    const SpectrumD source = SpectrumD(a_.rayleigh_scattering) * (media_.rayleighDensity(h) * rayleighPhase(nu)) +
+                             SpectrumD(a_.mie_scattering) * (media_.mieDensity(h) * cornetteShanksPhase(a_.mie_phase_g, nu));
+    return source * SpectrumD(a_.sun_irradiance) * sunTransmittance(p, sun, segments);
+  }
+
+  // Radiance of the Lambertian ground at g lit by the sun alone.
+  SpectrumD groundSunRadiance(const glm::dvec3& g, const glm::dvec3& sun, int segments) const {
+    const double mu_s = glm::dot(glm::normalize(g), sun);
+    if (mu_s <= 0.0) return SpectrumD(0.0);
+    return SpectrumD(a_.ground_albedo) * (mu_s / kPi) * SpectrumD(a_.sun_irradiance) *
+           sunTransmittance(g, sun, segments);
+  }
+
+  // ---- single scattering along a ray, deterministic ----
+
+  // Distances along the ray where the integrand has a kink or a jump: the
+  // edges of the planet's shadow and the profiles' layer boundaries.
+  std::vector<double> breakpoints(const ShellRay& ray, const glm::dvec3& sun) const {
+    std::vector<double> t = {0.0, ray.length};
+    auto add = [&](double v) {
+      if (v > 0.0 && v < ray.length) t.push_back(v);
+    };
+    // Shadow: p(t) = o + t d is shadowed where p.s < 0 and |p - (p.s) s|^2 < R^2.
+    const glm::dvec3 o = ray.origin, d = ray.dir;
+    const double os = glm::dot(o, sun), ds = glm::dot(d, sun);
+    if (std::abs(ds) > 0.0) add(-os / ds);
+    const glm::dvec3 o_perp = o - sun * os, d_perp = d - sun * ds;
+    const double qa = glm::dot(d_perp, d_perp), qb = 2.0 * glm::dot(o_perp, d_perp);
+    const double qc = glm::dot(o_perp, o_perp) - a_.bottom_radius_m * a_.bottom_radius_m;
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (qa > 0.0 && disc >= 0.0) {
+      add((-qb - std::sqrt(disc)) / (2.0 * qa));
+      add((-qb + std::sqrt(disc)) / (2.0 * qa));
+    }
+    // Tangent point (lowest altitude), where altitude turns around.
+    add(-ray.r * ray.mu);
+    std::sort(t.begin(), t.end());
+    return t;
+  }
+
+  // Single-scattered radiance along the ray (in the air, plus the sunlit
+  // ground at its end if it ends there), with the segment's optical depth.
+  SpectrumD singleScattering(const ShellRay& ray, const glm::dvec3& sun, bool include_ground) const {
+    const std::vector<double> t = breakpoints(ray, sun);
+    SpectrumD depth_before(0.0);
+    SpectrumD radiance(0.0);
+    for (size_t p = 0; p + 1 < t.size(); ++p) {
+      const double start = t[p], length = t[p + 1] - t[p];
+      if (length <= 0.0) continue;
+      auto extinction = [&](double s) { return media_.extinction(altitude(ray.origin + ray.dir * (start + s))); };
+      const SpectrumD piece_depth = forEachQuadratureNodeWithIntegral<SpectrumD>(
+          length, kSingleScatteringSubintervals, extinction, [&](double s, double w, const SpectrumD& depth) {
+            const glm::dvec3 point = ray.origin + ray.dir * (start + s);
+            radiance += sunScatteringSource(point, ray.dir, sun, kOpticalDepthSegmentsPerPiece) *
+                        glm::exp(-(depth_before + depth)) * w;
+          });
+      depth_before += piece_depth;
+    }
+    if (include_ground && ray.ends_on_ground) {
+      const glm::dvec3 g = ray.origin + ray.dir * ray.length;
+      radiance += groundSunRadiance(g, sun, kOpticalDepthSegmentsPerPiece) * glm::exp(-depth_before);
+    }
+    return radiance;
+  }
+
+  // ---- path tracing of the higher orders ----
+
+  struct Vertex {
+    bool valid = false;
+    bool ground = false;
+    glm::dvec3 position;
+    SpectrumD weight;  // transmittance to the vertex over its probability density
+  };
+
+  // Samples where the next scattering event on the ray happens: a point in the
+  // air (density proportional to a tabulated estimate of scattering times
+  // transmittance, mixed with a uniform share) or the ground at its end.
+  Vertex sampleVertex(const ShellRay& ray, bool ground_allowed, Random& rng) const {
+    Vertex v;
+    if (!(ray.length > 0.0)) {
+      // A ray that starts on the ground pointing into it: the ground is all it meets.
+      if (!(ground_allowed && ray.ends_on_ground)) return v;
+      return {true, true, ray.origin, SpectrumD(1.0)};
+    }
+    const double dt = ray.length / kVertexBins;
+    std::array<double, kVertexBins> bin_weight;
+    SpectrumD depth(0.0);
+    SpectrumD previous_extinction = media_.extinction(altitude(ray.origin));
+    double total = 0.0;
+    for (int i = 0; i < kVertexBins; ++i) {
+      const glm::dvec3 mid = ray.origin + ray.dir * ((i + 0.5) * dt);
+      const double h = altitude(mid);
+      const SpectrumD extinction_mid = media_.extinction(h);
+      const SpectrumD depth_mid = depth + (previous_extinction + extinction_mid) * (0.25 * dt);
+      const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * media_.rayleighDensity(h) +
+                                   SpectrumD(a_.mie_scattering) * media_.mieDensity(h);
+      const SpectrumD w = scattering * glm::exp(-depth_mid) * dt;
+      bin_weight[i] = w.x + w.y + w.z + w.w;
+      total += bin_weight[i];
+      const SpectrumD extinction_end = media_.extinction(altitude(ray.origin + ray.dir * ((i + 1) * dt)));
+      depth += (previous_extinction + 2.0 * extinction_mid + extinction_end) * (0.25 * dt);
+      previous_extinction = extinction_end;
+    }
+    double ground_weight = 0.0;
+    if (ground_allowed && ray.ends_on_ground) {
+      const SpectrumD w = SpectrumD(a_.ground_albedo) * glm::exp(-depth);
+      ground_weight = w.x + w.y + w.z + w.w;
+    }
+    if (total + ground_weight <= 0.0) return v;
+    const double p_ground = ground_weight / (total + ground_weight);
+    const double u = rng.next();
+    if (u < p_ground) {
+      v.valid = true;
+      v.ground = true;
+      v.position = ray.origin + ray.dir * ray.length;
+      v.weight = glm::exp(-opticalDepthAlongRay(media_, ray.r, ray.mu, ray.length, kPathOpticalDepthSegments)) / p_ground;
+      return v;
+    }
+    // In the air: a bin by its weight (or uniformly), then uniform in the bin.
+    double t;
+    if (total > 0.0 && rng.next() >= kUniformVertexShare) {
+      double target = rng.next() * total;
+      int bin = 0;
+      while (bin + 1 < kVertexBins && target >= bin_weight[bin]) target -= bin_weight[bin++];
+      t = (bin + rng.next()) * dt;
+    } else {
+      t = rng.next() * ray.length;
+    }
+    const int bin = std::min(static_cast<int>(t / dt), kVertexBins - 1);
+    const double tabulated = total > 0.0 ? bin_weight[bin] / total / dt : 0.0;
+    const double pdf = (1.0 - p_ground) * ((1.0 - kUniformVertexShare) * tabulated +
+                                           kUniformVertexShare / ray.length);
+    v.valid = true;
+    v.position = ray.origin + ray.dir * t;
+    v.weight = glm::exp(-opticalDepthAlongRay(media_, ray.r, ray.mu, t, kPathOpticalDepthSegments)) / pdf;
+    return v;
+  }
+
+  // Samples the direction light came from before scattering at a point in
+  // the air toward -dir, and returns the phase-weighted scattering over the
+  // direction's density.
+  glm::dvec3 sampleScatteringDirection(const glm::dvec3& point, const glm::dvec3& dir, Random& rng,
+                                       SpectrumD& weight) const {
+    const double h = altitude(point);
+    const SpectrumD rayleigh = SpectrumD(a_.rayleigh_scattering) * media_.rayleighDensity(h);
+    const SpectrumD mie = SpectrumD(a_.mie_scattering) * media_.mieDensity(h);
+    const double rayleigh_sum = rayleigh.x + rayleigh.y + rayleigh.z + rayleigh.w;
+    const double mie_sum = mie.x + mie.y + mie.z + mie.w;
+    const double g = a_.mie_phase_g;
+    // Uniform directions for Rayleigh's gentle lobe, Henyey-Greenstein for
+    // Mie's forward peak, mixed by their shares (each at least 10 % when
+    // present, so neither lobe is ever left unsampled).
+    double p_uniform = rayleigh_sum + mie_sum > 0.0 ? rayleigh_sum / (rayleigh_sum + mie_sum) : 1.0;
+    if (rayleigh_sum > 0.0 && mie_sum > 0.0) p_uniform = std::clamp(p_uniform, 0.1, 0.9);
+    double cos_theta;
+    if (rng.next() < p_uniform || g == 0.0) {
+      cos_theta = 2.0 * rng.next() - 1.0;
+    } else {
+      const double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * rng.next());
+      cos_theta = std::clamp((1.0 + g * g - s * s) / (2.0 * g), -1.0, 1.0);
+    }
+    const glm::dvec3 incoming = directionAround(dir, cos_theta, 2.0 * kPi * rng.next());
+    const double c = clampCosine(glm::dot(incoming, dir));
+    const double pdf = p_uniform / (4.0 * kPi) + (1.0 - p_uniform) * henyeyGreenstein(g, c);
+    weight = (rayleigh * rayleighPhase(c) + mie * cornetteShanksPhase(g, c)) / pdf;
+    return incoming;
+  }
+
+  // Radiance arriving along -dir at `start` from scattering events along the
+  // ray (start, dir) and beyond, each connected to the sun. With
+  // `skip_first_sun`, the first event's own sun connection is left out (the
+  // caller has it already, deterministically).
+  SpectrumD tracePath(ShellRay ray, const glm::dvec3& sun, bool ground_allowed, bool skip_first_sun, Random& rng) const {
+    SpectrumD throughput(1.0);
+    SpectrumD total(0.0);
+    for (int depth = 0; depth < kMaxPathVertices && ray.inside; ++depth) {
+      const Vertex v = sampleVertex(ray, ground_allowed, rng);
+      if (!v.valid) break;
+      throughput *= v.weight;
+      glm::dvec3 next_dir;
+      if (v.ground) {
+        if (depth > 0 || !skip_first_sun) total += throughput * groundSunRadiance(v.position, sun, kPathOpticalDepthSegments);
+        const glm::dvec3 normal = glm::normalize(v.position);
+        const double u = rng.next();
+        next_dir = directionAround(normal, std::sqrt(u), 2.0 * kPi * rng.next());  // cosine-weighted
+        throughput *= SpectrumD(a_.ground_albedo);  // (albedo/pi) cos / (cos/pi)
+      } else {
+        if (depth > 0 || !skip_first_sun) total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
+        SpectrumD phase_weight;
+        next_dir = sampleScatteringDirection(v.position, ray.dir, rng, phase_weight);
+        throughput *= phase_weight;
+      }
+      // Russian roulette past the second event: unbiased, bounds path length.
+      if (depth >= 1) {
+        const double survive = std::min(1.0, std::max({throughput.x, throughput.y, throughput.z, throughput.w}));
+        if (!(survive > 0.0) || rng.next() >= survive) break;
+        throughput /= survive;
+      }
+      ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, v.position + (v.ground ? glm::normalize(v.position) * 1e-3 : glm::dvec3(0.0)),
+                     next_dir, 0.0);
+      ground_allowed = true;
+    }
+    return total;
+  }
+
+  const AtmosphereParameters& a_;
+  AtmosphereMedia media_;
+};
+
+// Mean and standard error of per-path samples.
+ReferenceEstimate summarize(const SpectrumD& sum, const SpectrumD& sum_squares, int n) {
+  const SpectrumD mean = sum / static_cast<double>(n);
+  const SpectrumD variance = glm::max(sum_squares / static_cast<double>(n) - mean * mean, SpectrumD(0.0));
+  return {mean, glm::sqrt(variance / static_cast<double>(std::max(n - 1, 1)))};
+}
+
+}  // namespace
+
+ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere) : a_(atmosphere) {}
+
+ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed) const {
+  const PathTracer tracer(a_);
+  const ShellRay ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
+  if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
+  const bool ground_end = ray.ends_on_ground && !(query.distance_m > 0.0);
+  const SpectrumD single = tracer.singleScattering(ray, query.sun, ground_end);
+  Random rng(seed);
+  SpectrumD sum(0.0), sum_squares(0.0);
+  for (int i = 0; i < paths; ++i) {
+    const SpectrumD x = tracer.tracePath(ray, query.sun, ground_end, true, rng);
+    sum += x;
+    sum_squares += x * x;
+  }
+  ReferenceEstimate e = summarize(sum, sum_squares, std::max(paths, 1));
+  e.value += single;
+  return e;
+}
+
+SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
+  const ShellRay ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
+  if (!ray.inside) return SpectrumD(1.0);
+  return glm::exp(-opticalDepthAlongRay(AtmosphereMedia(a_), ray.r, ray.mu, ray.length));
+}
+
+ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
+                                                 uint64_t seed) const {
+  const PathTracer tracer(a_);
+  const double length = glm::length(point);
+  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec3 start = up * std::clamp(length, a_.bottom_radius_m, a_.top_radius_m);
+  Random rng(seed);
+  SpectrumD sum(0.0), sum_squares(0.0);
+  for (int i = 0; i < paths; ++i) {
+    // Cosine-weighted directions: irradiance = pi x mean radiance.
+    const glm::dvec3 dir = directionAround(up, std::sqrt(rng.next()), 2.0 * kPi * rng.next());
+    const ShellRay ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, start, dir, 0.0);
+    const SpectrumD x = ray.inside ? tracer.tracePath(ray, sun, true, false, rng) * kPi : SpectrumD(0.0);
+    sum += x;
+    sum_squares += x * x;
+  }
+  return summarize(sum, sum_squares, std::max(paths, 1));
+}
+
+}  // namespace skybake

@@ -1,0 +1,55 @@
+// The reference: sky radiance, radiance to a point and ground irradiance at a
+// single query, computed without any precomputed table, so it is independent
+// of the parameterization and of the order-by-order scheme of the bake.
+//
+// Single scattering (the sun seen through one scattering event, in the air or
+// off the ground) is integrated deterministically along the view ray to high
+// accuracy. Higher orders are path traced in the spherical shell: vertices
+// sampled along each ray, next-event estimation toward a point sun, exact
+// optical depths by quadrature of the density profiles, Lambertian ground,
+// Rayleigh + Cornette-Shanks Mie + absorption, Russian roulette. Only that
+// part (10 to 30 % of the radiance) is noisy, which cuts the noise several
+// fold against tracing every order. Each query has its own fixed seed.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "data_formats/atmosphere_parameters.h"
+
+namespace skybake {
+
+struct ReferenceEstimate {
+  SpectrumD value;           // the estimate
+  SpectrumD standard_error;  // of the Monte Carlo part (the rest is deterministic)
+};
+
+struct ReferenceRay {
+  glm::dvec3 camera;   // metres from the planet centre
+  glm::dvec3 view;     // unit
+  glm::dvec3 sun;      // unit, toward the sun
+  double distance_m;   // > 0: up to the point at this distance; else to the ray's end
+};
+
+class ReferenceSolver {
+ public:
+  explicit ReferenceSolver(const AtmosphereParameters& atmosphere);
+
+  // The radiance the viewer receives along the ray, W m^-2 sr^-1 nm^-1:
+  // in-scattering of all orders plus, for a ray that ends on the ground (and
+  // has no distance limit), the transmitted radiance of the lit Lambertian
+  // ground. The direct sun disk is not included.
+  ReferenceEstimate radiance(const ReferenceRay& ray, int paths, uint64_t seed) const;
+
+  // Transmittance along the same segment (exact quadrature, no noise).
+  SpectrumD transmittance(const ReferenceRay& ray) const;
+
+  // Sky irradiance (direct sun excluded) on a horizontal surface at `point`.
+  ReferenceEstimate skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths, uint64_t seed) const;
+
+ private:
+  const AtmosphereParameters& a_;
+};
+
+}  // namespace skybake

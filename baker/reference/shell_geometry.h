@@ -1,0 +1,63 @@
+// Rays in the spherical shell, as the reference solver needs them: where a
+// ray starts inside the atmosphere, how far it goes and what it ends on.
+#pragma once
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "data_formats/ray_sphere.h"
+
+namespace skybake::reference {
+
+struct ShellRay {
+  bool inside = false;     // false: the ray misses the atmosphere
+  glm::dvec3 origin;       // in the atmosphere (moved in from space if needed)
+  glm::dvec3 dir;
+  double r = 0.0;          // |origin|
+  double mu = 0.0;         // zenith cosine of dir at origin
+  double length = 0.0;     // to its end: the ground, the top or a distance limit
+  bool ends_on_ground = false;
+  double moved = 0.0;      // distance from the given start to origin
+};
+
+// The ray from `start` along unit `dir`, limited to `max_length` (<= 0: none).
+// A start below the ground is put on the ground directly above.
+inline ShellRay shellRay(double bottom, double top, glm::dvec3 start, const glm::dvec3& dir, double max_length) {
+  ShellRay ray;
+  double r = glm::length(start);
+  if (r < bottom) {
+    start = r > 0.0 ? start * (bottom / r) : glm::dvec3(0.0, 0.0, bottom);
+    r = bottom;
+  }
+  double rmu = glm::dot(start, dir);
+  if (r > top) {
+    const double discriminant = rmu * rmu - r * r + top * top;
+    const double entry = -rmu - safeSqrt(discriminant);
+    if (discriminant < 0.0 || entry < 0.0) return ray;
+    start += dir * entry;
+    ray.moved = entry;
+    r = top;
+    rmu += entry;
+  }
+  ray.inside = true;
+  ray.origin = start;
+  ray.dir = dir;
+  ray.r = r;
+  ray.mu = clampCosine(rmu / r);
+  ray.ends_on_ground = rayIntersectsSphere(r, ray.mu, bottom);
+  ray.length = ray.ends_on_ground ? distanceToInnerSphere(r, ray.mu, bottom) : distanceToOuterSphere(r, ray.mu, top);
+  if (max_length > 0.0) {
+    const double limit = max_length - ray.moved;
+    if (limit <= 0.0) {
+      ray.inside = false;
+      return ray;
+    }
+    if (limit < ray.length) {
+      ray.length = limit;
+      ray.ends_on_ground = false;
+    }
+  }
+  return ray;
+}
+
+}  // namespace skybake::reference

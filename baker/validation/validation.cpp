@@ -1,0 +1,262 @@
+#include "baker/validation/validation.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "baker/reference/reference_solver.h"
+#include "baker/local_frame.h"
+#include "baker/reference/shell_geometry.h"
+
+namespace skybake {
+namespace {
+
+struct QueryGeometry {
+  glm::dvec3 camera, view, sun;
+};
+
+QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
+  return {{0.0, 0.0, a.bottom_radius_m + q.altitude_m}, directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
+          directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)};
+}
+
+std::string radianceKey(const RadianceQuery& q) {
+  return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
+                     q.distance_m);
+}
+std::string irradianceKey(const IrradianceQuery& q) { return fmt::format("e {} {}", q.altitude_m, q.sun_zenith_deg); }
+
+enum class RayKind { Sky, Ground, ToPoint, Misses };
+
+RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
+  const QueryGeometry g = geometryOf(a, q);
+  const reference::ShellRay ray = reference::shellRay(a.bottom_radius_m, a.top_radius_m, g.camera, g.view, q.distance_m);
+  if (!ray.inside) return RayKind::Misses;
+  if (q.distance_m > 0.0) return RayKind::ToPoint;
+  return ray.ends_on_ground ? RayKind::Ground : RayKind::Sky;
+}
+
+}  // namespace
+
+ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const QuerySet& queries,
+                                       const ReferenceSettings& settings, ProgressSink& progress) {
+  ReferenceCache cache(settings.cache_directory, a, settings.paths);
+  const ReferenceSolver solver(a);
+  ReferenceValues out;
+  out.radiance.resize(queries.radiance.size());
+  out.irradiance.resize(queries.irradiance.size());
+  std::vector<size_t> missing_radiance, missing_irradiance;
+  for (size_t i = 0; i < queries.radiance.size(); ++i) {
+    if (auto hit = cache.find(radianceKey(queries.radiance[i]))) {
+      out.radiance[i] = *hit;
+      ++out.cached;
+    } else {
+      missing_radiance.push_back(i);
+    }
+  }
+  for (size_t i = 0; i < queries.irradiance.size(); ++i) {
+    if (auto hit = cache.find(irradianceKey(queries.irradiance[i]))) {
+      out.irradiance[i] = *hit;
+      ++out.cached;
+    } else {
+      missing_irradiance.push_back(i);
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  progress.beginStage("reference", missing_radiance.size() + missing_irradiance.size());
+  // Each query has its own seed (a hash of the query), so results do not
+  // depend on the order or the thread that computes them.
+#pragma omp parallel for schedule(dynamic)
+  for (size_t k = 0; k < missing_radiance.size(); ++k) {
+    const RadianceQuery& q = queries.radiance[missing_radiance[k]];
+    const QueryGeometry g = geometryOf(a, q);
+    const ReferenceRay ray{g.camera, g.view, g.sun, q.distance_m};
+    const ReferenceEstimate e = solver.radiance(ray, settings.paths, stableHash(radianceKey(q)));
+    out.radiance[missing_radiance[k]] = {e.value, e.standard_error, solver.transmittance(ray)};
+    progress.advance(1);
+  }
+#pragma omp parallel for schedule(dynamic)
+  for (size_t k = 0; k < missing_irradiance.size(); ++k) {
+    const IrradianceQuery& q = queries.irradiance[missing_irradiance[k]];
+    const ReferenceEstimate e =
+        solver.skyIrradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m}, directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
+                             settings.paths, stableHash(irradianceKey(q)));
+    out.irradiance[missing_irradiance[k]] = {e.value, e.standard_error, SpectrumD(1.0)};
+    progress.advance(1);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.endStage(out.seconds);
+  for (size_t i : missing_radiance) cache.store(radianceKey(queries.radiance[i]), out.radiance[i]);
+  for (size_t i : missing_irradiance) cache.store(irradianceKey(queries.irradiance[i]), out.irradiance[i]);
+  out.computed = static_cast<int>(missing_radiance.size() + missing_irradiance.size());
+  cache.save();
+  return out;
+}
+
+MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
+  const AtmosphereParameters& a = sky.atmosphere();
+  MethodValues out;
+  const auto start = std::chrono::steady_clock::now();
+  for (const RadianceQuery& q : queries.radiance) {
+    const QueryGeometry g = geometryOf(a, q);
+    const RadianceAndTransmittance v = q.distance_m > 0.0
+                                           ? sky.radianceToPoint(g.camera, g.camera + g.view * q.distance_m, g.sun)
+                                           : sky.receivedRadiance(g.camera, g.view, g.sun);
+    out.radiance.push_back(v.radiance);
+    out.transmittance.push_back(v.transmittance);
+  }
+  out.seconds_per_ray = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                        std::max<size_t>(queries.radiance.size(), 1);
+  for (const IrradianceQuery& q : queries.irradiance) {
+    out.irradiance.push_back(sky.irradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m}, {0.0, 0.0, 1.0},
+                                            directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)).sky);
+  }
+  return out;
+}
+
+namespace {
+
+class StatsBuilder {
+ public:
+  void add(const std::string& quantity, const std::string& band, int channel, double value, double reference,
+           double reference_error) {
+    Samples& s = samples_[{quantity, band}][channel];
+    if (!(reference >= kSmallestComparedValue)) {
+      ++s.skipped;
+      return;
+    }
+    s.errors.push_back(std::abs(value - reference) / reference);
+    s.reference_errors.push_back(reference_error / reference);
+  }
+
+  std::vector<ErrorRow> rows(int channels) const {
+    static const char* kQuantityOrder[] = {"sky_radiance", "ground_radiance", "radiance_to_point", "transmittance",
+                                           "sky_irradiance"};
+    static const char* kBandOrder[] = {"day", "low_sun", "twilight", "night", "all"};
+    std::vector<ErrorRow> out;
+    for (const char* quantity : kQuantityOrder) {
+      for (const char* band : kBandOrder) {
+        auto it = samples_.find({quantity, band});
+        if (it == samples_.end()) continue;
+        ErrorRow row{quantity, band, {}};
+        for (int c = 0; c < channels; ++c) {
+          auto sc = it->second.find(c);
+          row.channels.push_back(sc == it->second.end() ? ErrorStats{} : summarize(sc->second));
+        }
+        out.push_back(row);
+      }
+    }
+    return out;
+  }
+
+ private:
+  struct Samples {
+    std::vector<double> errors, reference_errors;
+    int skipped = 0;
+  };
+
+  static ErrorStats summarize(Samples s) {
+    ErrorStats e;
+    e.count = static_cast<int>(s.errors.size());
+    e.skipped = s.skipped;
+    if (s.errors.empty()) return e;
+    double sum2 = 0.0, ref2 = 0.0;
+    for (double x : s.errors) sum2 += x * x;
+    for (double x : s.reference_errors) ref2 += x * x;
+    std::sort(s.errors.begin(), s.errors.end());
+    e.rms = std::sqrt(sum2 / e.count);
+    e.max = s.errors.back();
+    // Nearest-rank 95th percentile.
+    e.p95 = s.errors[static_cast<size_t>(std::ceil(0.95 * e.count)) - 1];
+    e.reference_standard_error = std::sqrt(ref2 / e.count);
+    return e;
+  }
+
+  std::map<std::pair<std::string, std::string>, std::map<int, Samples>> samples_;
+};
+
+}  // namespace
+
+ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& queries, const ReferenceValues& reference,
+                                 const MethodValues& method, int reference_paths) {
+  ErrorReport report;
+  report.query_set = queries.name;
+  report.wavelengths_nm = a.wavelengths_nm;
+  report.reference_paths = reference_paths;
+  const int channels = a.channelCount();
+  StatsBuilder stats;
+  for (size_t i = 0; i < queries.radiance.size(); ++i) {
+    const RadianceQuery& q = queries.radiance[i];
+    const RayKind kind = rayKind(a, q);
+    if (kind == RayKind::Misses) continue;
+    const char* quantity = kind == RayKind::Sky ? "sky_radiance" : kind == RayKind::Ground ? "ground_radiance" : "radiance_to_point";
+    const char* band = sunBandName(sunBand(q.sun_zenith_deg));
+    const CachedReference& r = reference.radiance[i];
+    for (int c = 0; c < channels; ++c) {
+      stats.add(quantity, band, c, method.radiance[i][c], r.value[c], r.standard_error[c]);
+      stats.add("transmittance", "all", c, method.transmittance[i][c], r.transmittance[c], 0.0);
+    }
+  }
+  if (!method.irradiance.empty()) {
+    for (size_t i = 0; i < queries.irradiance.size(); ++i) {
+      const char* band = sunBandName(sunBand(queries.irradiance[i].sun_zenith_deg));
+      for (int c = 0; c < channels; ++c) {
+        stats.add("sky_irradiance", band, c, method.irradiance[i][c], reference.irradiance[i].value[c],
+                  reference.irradiance[i].standard_error[c]);
+      }
+    }
+  }
+  report.rows = stats.rows(channels);
+  return report;
+}
+
+const ErrorRow* ErrorReport::find(const std::string& quantity, const std::string& band) const {
+  for (const ErrorRow& row : rows) {
+    if (row.quantity == quantity && row.band == band) return &row;
+  }
+  return nullptr;
+}
+
+nlohmann::ordered_json ErrorReport::toJson() const {
+  nlohmann::ordered_json j;
+  j["query_set"] = query_set;
+  j["reference_paths"] = reference_paths;
+  j["wavelengths_nm"] = wavelengths_nm;
+  j["smallest_compared_value"] = kSmallestComparedValue;
+  nlohmann::ordered_json rows_json = nlohmann::ordered_json::array();
+  for (const ErrorRow& row : rows) {
+    nlohmann::ordered_json channels = nlohmann::ordered_json::array();
+    for (const ErrorStats& s : row.channels) {
+      channels.push_back({{"count", s.count}, {"skipped", s.skipped}, {"rms", s.rms}, {"p95", s.p95},
+                          {"max", s.max}, {"reference_standard_error", s.reference_standard_error}});
+    }
+    rows_json.push_back({{"quantity", row.quantity}, {"band", row.band}, {"channels", channels}});
+  }
+  j["errors"] = rows_json;
+  return j;
+}
+
+std::string ErrorReport::table() const {
+  std::string out = fmt::format("{:<18} {:<9} {:>5} {:>5}", "quantity", "band", "n", "skip");
+  for (double w : wavelengths_nm) out += fmt::format("  {:>22}", fmt::format("{} nm rms/p95/max %", w));
+  out += "  ref stderr %\n";
+  for (const ErrorRow& row : rows) {
+    const ErrorStats& first = row.channels.front();
+    out += fmt::format("{:<18} {:<9} {:>5} {:>5}", row.quantity, row.band, first.count, first.skipped);
+    double ref = 0.0;
+    for (const ErrorStats& s : row.channels) {
+      out += fmt::format("  {:>22}", fmt::format("{:.2f} / {:.2f} / {:.2f}", 100 * s.rms, 100 * s.p95, 100 * s.max));
+      ref = std::max(ref, s.reference_standard_error);
+    }
+    out += fmt::format("  {:>11.2f}\n", 100 * ref);
+  }
+  return out;
+}
+
+}  // namespace skybake

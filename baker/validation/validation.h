@@ -1,0 +1,77 @@
+// Error against the reference: evaluates a method (the bake, or a comparator)
+// and the reference on a query set and reports relative errors per channel,
+// per sun band, for sky rays, ground rays and rays to a point separately.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "baker/progress.h"
+#include "baker/validation/reference_cache.h"
+#include "baker/validation/validation_queries.h"
+#include "runtime/sky.h"
+
+namespace skybake {
+
+// Reference values below this radiance (W m^-2 sr^-1 nm^-1), irradiance
+// (W m^-2 nm^-1) or transmittance are left out of relative errors: deep in
+// twilight or behind a thick atmosphere a relative error of a value this
+// small says nothing a renderer could show. They are counted as skipped.
+inline constexpr double kSmallestComparedValue = 1e-5;
+
+struct ReferenceSettings {
+  int paths = 32768;  // Monte Carlo paths per query (see docs/QUERIES.md for the noise this gives)
+  std::filesystem::path cache_directory = defaultReferenceCacheDirectory();  // empty: no cache
+};
+
+struct ReferenceValues {
+  std::vector<CachedReference> radiance;  // one per query of the set
+  std::vector<CachedReference> irradiance;
+  double seconds = 0.0;  // spent computing what the cache did not have
+  int computed = 0;
+  int cached = 0;
+};
+
+ReferenceValues computeReferenceValues(const AtmosphereParameters& atmosphere, const QuerySet& queries,
+                                       const ReferenceSettings& settings, ProgressSink& progress);
+
+// A method's answers for every query of a set.
+struct MethodValues {
+  std::vector<Spectrum> radiance;       // what the viewer receives (see Sky::receivedRadiance)
+  std::vector<Spectrum> transmittance;  // along the same segment
+  std::vector<Spectrum> irradiance;     // sky irradiance; empty if the method has none
+  double seconds_per_ray = 0.0;         // radiance lookups only
+};
+
+MethodValues evaluateBake(const Sky& sky, const QuerySet& queries);
+
+struct ErrorStats {
+  int count = 0;    // values compared (per channel)
+  int skipped = 0;  // reference below kSmallestComparedValue
+  double rms = 0.0, p95 = 0.0, max = 0.0;  // relative errors
+  double reference_standard_error = 0.0;   // RMS of the reference's own relative standard error
+};
+
+struct ErrorRow {
+  std::string quantity;  // sky_radiance, ground_radiance, radiance_to_point, transmittance, sky_irradiance
+  std::string band;      // day, low_sun, twilight, night, all
+  std::vector<ErrorStats> channels;
+};
+
+struct ErrorReport {
+  std::string query_set;
+  std::vector<double> wavelengths_nm;
+  int reference_paths = 0;
+  std::vector<ErrorRow> rows;
+
+  const ErrorRow* find(const std::string& quantity, const std::string& band) const;
+  nlohmann::ordered_json toJson() const;
+  std::string table() const;  // human-readable, one row per quantity and band
+};
+
+ErrorReport compareWithReference(const AtmosphereParameters& atmosphere, const QuerySet& queries,
+                                 const ReferenceValues& reference, const MethodValues& method, int reference_paths);
+
+}  // namespace skybake

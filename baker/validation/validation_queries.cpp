@@ -1,0 +1,93 @@
+#include "baker/validation/validation_queries.h"
+
+#include "baker/csv_table.h"
+
+namespace skybake {
+namespace {
+
+// Below the top by this much: "just under the top" without sitting on it.
+constexpr double kJustUnderTop_m = 100.0;
+// Far enough out that the whole atmosphere is below the horizon's limb.
+constexpr double kSpaceAltitudeAboveTop_m = 100000.0;
+
+QuerySet makeSet(const std::string& name, const std::vector<double>& altitudes, const std::vector<double>& suns,
+                 const std::vector<double>& views, const std::vector<double>& space_views,
+                 const std::vector<double>& azimuths, double thickness, bool with_points) {
+  QuerySet set;
+  set.name = name;
+  for (double altitude : altitudes) {
+    const bool in_space = altitude > thickness;
+    for (double sun : suns) {
+      for (double view : in_space ? space_views : views) {
+        for (double azimuth : azimuths) {
+          set.radiance.push_back({altitude, sun, view, azimuth, 0.0});
+        }
+      }
+      if (!in_space) set.irradiance.push_back({altitude, sun});
+    }
+  }
+  if (with_points) {
+    // Aerial perspective: points 1, 10 and 50 km away near the horizontal.
+    for (double altitude : {altitudes[0], altitudes[1]}) {
+      for (double sun : suns) {
+        for (double distance : {1000.0, 10000.0, 50000.0}) {
+          for (double view : {80.0, 89.0}) set.radiance.push_back({altitude, sun, view, 90.0, distance});
+        }
+      }
+    }
+  }
+  return set;
+}
+
+}  // namespace
+
+QuerySet standardQuerySet(double thickness) {
+  return makeSet("standard", {0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m},
+                 {0.0, 30.0, 60.0, 75.0, 85.0, 88.0, 90.0, 92.0, 95.0, 100.0},
+                 {0.0, 30.0, 60.0, 75.0, 84.0, 88.0, 89.5, 90.5, 92.0, 96.0, 120.0, 170.0},
+                 {100.0, 106.0, 110.0, 120.0, 150.0, 180.0}, {0.0, 90.0, 180.0}, thickness, true);
+}
+
+QuerySet quickQuerySet(double thickness) {
+  return makeSet("quick", {0.0, 10000.0}, {30.0, 85.0, 95.0}, {0.0, 60.0, 88.0, 120.0}, {}, {0.0, 180.0}, thickness,
+                 false);
+}
+
+QuerySet querySetFromCsv(const std::filesystem::path& path) {
+  const CsvTable q = CsvTable::read(path);
+  const size_t altitude = q.require("altitude_m");
+  const size_t sun_zenith = q.require("sun_zenith_deg");
+  const size_t view_zenith = q.require("view_zenith_deg");
+  const size_t view_azimuth = q.require("view_azimuth_deg");
+  const std::optional<size_t> distance = q.find("distance_m");
+  q.requireRange(altitude, -1e12, 1e12);
+  q.requireRange(sun_zenith, 0.0, 180.0);
+  q.requireRange(view_zenith, 0.0, 180.0);
+  q.requireRange(view_azimuth, -360.0, 360.0);
+  QuerySet set;
+  set.name = path.filename().string();
+  for (size_t row = 0; row < q.rowCount(); ++row) {
+    set.radiance.push_back({q.value(row, altitude), q.value(row, sun_zenith), q.value(row, view_zenith),
+                            q.value(row, view_azimuth), distance ? q.value(row, *distance) : 0.0});
+  }
+  return set;
+}
+
+SunBand sunBand(double sun_zenith_deg) {
+  if (sun_zenith_deg < 80.0) return SunBand::Day;
+  if (sun_zenith_deg <= 90.0) return SunBand::LowSun;
+  if (sun_zenith_deg <= 100.0) return SunBand::Twilight;
+  return SunBand::Night;
+}
+
+const char* sunBandName(SunBand band) {
+  switch (band) {
+    case SunBand::Day: return "day";
+    case SunBand::LowSun: return "low_sun";
+    case SunBand::Twilight: return "twilight";
+    case SunBand::Night: return "night";
+  }
+  return "?";
+}
+
+}  // namespace skybake
