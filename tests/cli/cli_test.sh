@@ -86,6 +86,14 @@ expect_status 2 ".png" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-de
 expect_status 2 "--size" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --size 0x10 -o "$work/s2.png"
 expect_status 2 "--sun-zenith-deg" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg nan -o "$work/s3.png"
 
+# validate: a quick query set with few paths (the figures are noisy; this
+# checks the command, its outputs and the report sidecar, not accuracy).
+expect_status 0 "sky_radiance" -- validate "$work/good.exr" --queries quick --reference-samples 64 --no-cache --json "$work/v.json"
+grep -q '"errors"' "$work/v.json" || fail "validate --json wrote no errors"
+grep -q '"validation"' "$work/good.report.json" || fail "validate did not add to the report sidecar"
+expect_status 2 "missing column" -- validate "$work/good.exr" --queries "$work/missing.csv" --no-cache
+expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples 0
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"
   exit 1
