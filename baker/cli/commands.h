@@ -34,5 +34,6 @@ Command addInfoCommand(CLI::App& app);
 Command addLookupCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addValidateCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
 
 }  // namespace skybake::cli

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
       skybake::cli::addLookupCommand(app),
       skybake::cli::addRenderCommand(app),
       skybake::cli::addValidateCommand(app),
+      skybake::cli::addCompareCommand(app),
   };
 
   try {

@@ -94,6 +94,14 @@ grep -q '"validation"' "$work/good.report.json" || fail "validate did not add to
 expect_status 2 "missing column" -- validate "$work/good.exr" --queries "$work/missing.csv" --no-cache
 expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples 0
 
+# compare: every method on a quick query set (CI's reduced run).
+expect_status 0 "" -- compare "$small" --queries quick --reference-samples 64 --resolutions 1 --no-cache --json "$work/c.json"
+for method in "ray-marched single scattering" "closed-form flat single scattering" "Hillaire 2020" "skybake 8x32x8x4"; do
+  grep -q "$method" "$work/stdout" || fail "compare lacks '$method': $(cat "$work/stdout")"
+done
+grep -q '"seconds_per_ray"' "$work/c.json" || fail "compare --json lacks timings"
+expect_status 2 "--resolutions" -- compare "$small" --resolutions 0
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"
   exit 1

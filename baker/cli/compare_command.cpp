@@ -1,0 +1,198 @@
+// skybake compare [CONFIG.toml] [--queries quick|standard|Q.csv] [--resolutions 0.5,1,2]
+// Error against the reference and cost, for the bake at several resolutions
+// and for the simpler methods people use instead, on the same queries.
+#include <omp.h>
+
+#include <chrono>
+#include <memory>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "baker/bake.h"
+#include "baker/cli/commands.h"
+#include "baker/cli/terminal_progress.h"
+#include "baker/comparators/flat_closed_form.h"
+#include "baker/comparators/hillaire_multiple_scattering.h"
+#include "baker/comparators/ray_marched_single.h"
+#include "baker/local_frame.h"
+#include "baker/validation/validation.h"
+#include "data_formats/atomic_file.h"
+#include "data_formats/config.h"
+#include "data_formats/error.h"
+
+namespace skybake::cli {
+namespace {
+
+struct CompareOptions {
+  std::string config_path;
+  std::string queries = "standard";
+  int reference_samples = ReferenceSettings{}.paths;
+  std::vector<double> resolutions = {0.5, 1.0, 2.0};
+  std::string json_path;
+  std::string cache_dir;
+  bool no_cache = false;
+};
+
+// The bake as a method.
+class BakedSky final : public SkyMethod {
+ public:
+  BakedSky(std::string name, BakeOutput bake)
+      : name_(std::move(name)), seconds_(bake.report.wall_seconds), sky_(std::move(bake.file)) {}
+  std::string name() const override { return name_; }
+  RadianceAndTransmittance received(const glm::dvec3& camera, const glm::dvec3& view, const glm::dvec3& sun) const override {
+    return sky_.receivedRadiance(camera, view, sun);
+  }
+  double precomputeSeconds() const override { return seconds_; }
+  size_t memoryBytes() const override {
+    const BakeTables& t = sky_.tables();
+    size_t texels = 0;
+    for (const auto* v : {&t.transmittance.texels, &t.irradiance.texels, &t.scattering.texels, &t.single_mie.texels,
+                          &t.multiple_density.texels}) {
+      texels += v->size();
+    }
+    return texels * sizeof(float) * sky_.channelCount();
+  }
+
+ private:
+  std::string name_;
+  double seconds_;
+  Sky sky_;
+};
+
+int scaled(int size, double factor, int minimum, bool even) {
+  int s = std::max(minimum, static_cast<int>(std::lround(size * factor)));
+  if (even && s % 2 != 0) ++s;
+  return s;
+}
+
+TextureSizes scaledSizes(const TextureSizes& s, double f) {
+  TextureSizes out;
+  out.transmittance_mu = scaled(s.transmittance_mu, f, 2, false);
+  out.transmittance_r = scaled(s.transmittance_r, f, 2, false);
+  out.irradiance_mu_s = scaled(s.irradiance_mu_s, f, 2, false);
+  out.irradiance_r = scaled(s.irradiance_r, f, 2, false);
+  out.scattering_r = scaled(s.scattering_r, f, 2, false);
+  out.scattering_mu = scaled(s.scattering_mu, f, 4, true);
+  out.scattering_mu_s = scaled(s.scattering_mu_s, f, 2, false);
+  out.scattering_nu = scaled(s.scattering_nu, f, 2, false);
+  return out;
+}
+
+MethodValues evaluate(const SkyMethod& method, const AtmosphereParameters& a, const QuerySet& queries) {
+  MethodValues out;
+  const auto start = std::chrono::steady_clock::now();
+  for (const RadianceQuery& q : queries.radiance) {
+    const glm::dvec3 camera = cameraAtAltitude(a.bottom_radius_m, q.altitude_m);
+    const RadianceAndTransmittance v =
+        method.received(camera, directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
+                        directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0));
+    out.radiance.push_back(v.radiance);
+    out.transmittance.push_back(v.transmittance);
+  }
+  out.seconds_per_ray = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                        std::max<size_t>(queries.radiance.size(), 1);
+  return out;
+}
+
+// Worst channel's figure in a row, or -1 where the row is absent.
+double worst(const ErrorReport& r, const char* quantity, const char* band, double ErrorStats::*field) {
+  const ErrorRow* row = r.find(quantity, band);
+  if (row == nullptr) return -1.0;
+  double w = 0.0;
+  for (const ErrorStats& s : row->channels) w = std::max(w, s.*field);
+  return w;
+}
+
+std::string bandCell(const ErrorReport& r, const char* quantity, const char* band) {
+  const double rms = worst(r, quantity, band, &ErrorStats::rms);
+  if (rms < 0.0) return "-";
+  return fmt::format("{:.1f} / {:.1f} / {:.0f}", 100 * rms, 100 * worst(r, quantity, band, &ErrorStats::p95),
+                     100 * worst(r, quantity, band, &ErrorStats::max));
+}
+
+void runCompare(const CompareOptions& o) {
+  const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
+  const AtmosphereParameters& a = config.atmosphere;
+  QuerySet all = o.queries == "standard" ? standardQuerySet(a.top_radius_m - a.bottom_radius_m)
+                 : o.queries == "quick"  ? quickQuerySet(a.top_radius_m - a.bottom_radius_m)
+                                         : querySetFromCsv(o.queries);
+  // Comparators answer rays to the sky or the ground; rays to a point and
+  // irradiance are validate's.
+  QuerySet queries{all.name, {}, {}};
+  for (const RadianceQuery& q : all.radiance) {
+    if (!(q.distance_m > 0.0)) queries.radiance.push_back(q);
+  }
+
+  TerminalProgress progress;
+  ReferenceSettings settings;
+  settings.paths = o.reference_samples;
+  settings.cache_directory = o.no_cache ? std::filesystem::path() : o.cache_dir.empty() ? defaultReferenceCacheDirectory() : std::filesystem::path(o.cache_dir);
+  const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
+
+  std::vector<std::unique_ptr<SkyMethod>> methods;
+  methods.push_back(std::make_unique<RayMarchedSingleScattering>(a));
+  methods.push_back(std::make_unique<FlatClosedFormSingleScattering>(a));
+  methods.push_back(std::make_unique<HillaireMultipleScattering>(a));
+  for (double factor : o.resolutions) {
+    BakeConfig scaled_config = config;
+    scaled_config.sizes = scaledSizes(config.sizes, factor);
+    const TextureSizes& s = scaled_config.sizes;
+    SilentProgress silent;
+    fmt::print(stderr, "baking at {}x the configured sizes ...\n", factor);
+    methods.push_back(std::make_unique<BakedSky>(
+        fmt::format("skybake {}x{}x{}x{}, {} orders", s.scattering_r, s.scattering_mu, s.scattering_mu_s,
+                    s.scattering_nu, config.bake.orders),
+        bakeAtmosphere(scaled_config, 0, silent)));
+  }
+
+  fmt::print("compare on '{}' ({} sky and ground rays; reference {} paths per query); errors: RMS / p95 / max %, "
+             "worst channel; {} cores\n\n",
+             queries.name, queries.radiance.size(), settings.paths, omp_get_num_procs());
+  fmt::print("{:<62} {:>10} {:>9} {:>9}  {:>16} {:>16} {:>16}  {:>16}\n", "method", "precomp s", "us/ray", "MiB",
+             "sky day", "sky low sun", "sky twilight", "ground day");
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const auto& method : methods) {
+    const MethodValues values = evaluate(*method, a, queries);
+    const ErrorReport report = compareWithReference(a, queries, reference, values, settings.paths);
+    fmt::print("{:<62} {:>10.2f} {:>9.2f} {:>9.2f}  {:>16} {:>16} {:>16}  {:>16}\n", method->name(),
+               method->precomputeSeconds(), values.seconds_per_ray * 1e6, method->memoryBytes() / (1024.0 * 1024.0),
+               bandCell(report, "sky_radiance", "day"), bandCell(report, "sky_radiance", "low_sun"),
+               bandCell(report, "sky_radiance", "twilight"), bandCell(report, "ground_radiance", "day"));
+    nlohmann::ordered_json row = report.toJson();
+    row["method"] = method->name();
+    row["precompute_seconds"] = method->precomputeSeconds();
+    row["seconds_per_ray"] = values.seconds_per_ray;
+    row["memory_bytes"] = method->memoryBytes();
+    rows.push_back(row);
+  }
+  if (!o.json_path.empty()) {
+    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
+      std::ofstream out(temp);
+      out << nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) << "\n";
+      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
+    });
+  }
+}
+
+}  // namespace
+
+Command addCompareCommand(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "Error against the reference and cost of the bake at several resolutions and of the simpler methods.");
+  cmd->add_option("config", o->config_path, "Atmosphere config (default: the built-in Earth).");
+  cmd->add_option("--queries", o->queries, "standard, quick or a CSV (see validate).")->capture_default_str();
+  cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
+      ->check(CLI::Range(1, 100000000))
+      ->capture_default_str();
+  cmd->add_option("--resolutions", o->resolutions, "Bake at these multiples of the configured table sizes.")
+      ->delimiter(',')
+      ->check(CLI::Range(0.05, 8.0));
+  cmd->add_option("--json", o->json_path, "Also write the table as JSON here.");
+  cmd->add_option("--cache-dir", o->cache_dir, "Reference cache directory (see validate).");
+  cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
+  return {cmd, [o] { runCompare(*o); }};
+}
+
+}  // namespace skybake::cli

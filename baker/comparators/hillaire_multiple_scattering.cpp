@@ -1,0 +1,153 @@
+#include "baker/comparators/hillaire_multiple_scattering.h"
+
+#include <chrono>
+
+#include <glm/geometric.hpp>
+
+#include "baker/progress.h"
+#include "baker/stages.h"
+#include "runtime/atmosphere_media.h"
+
+namespace skybake {
+namespace {
+
+constexpr int kTableSize = 32;          // multiple-scattering table: 32 altitudes x 32 sun cosines
+constexpr int kDirectionsPerAxis = 8;   // 8 x 8 directions over the sphere per texel
+constexpr int kTableRaySteps = 20;      // steps along each of those rays
+constexpr int kViewSteps = 32;          // steps along a view ray
+
+TextureSizes hillaireSizes() {
+  TextureSizes s;
+  s.transmittance_mu = 256;
+  s.transmittance_r = 64;
+  return s;
+}
+
+}  // namespace
+
+HillaireMultipleScattering::HillaireMultipleScattering(const AtmosphereParameters& a)
+    : a_(a), sizes_(hillaireSizes()), sampler_(AtmosphereDomain::fromParameters(a), sizes_) {
+  const auto start = std::chrono::steady_clock::now();
+  SilentProgress silent;
+  optical_depth_ = computeTransmittanceTable({a_, sampler_, silent});
+  const AtmosphereMedia media(a_);
+  multiple_ = Texture2D(kTableSize, kTableSize);
+  const double thickness = a_.top_radius_m - a_.bottom_radius_m;
+#pragma omp parallel for schedule(dynamic)
+  for (int i_h = 0; i_h < kTableSize; ++i_h) {
+    for (int i_s = 0; i_s < kTableSize; ++i_s) {
+      const double h = (i_h + 0.5) / kTableSize * thickness;
+      const double mu_s = -1.0 + 2.0 * (i_s + 0.5) / kTableSize;
+      const glm::dvec3 x(0.0, 0.0, a_.bottom_radius_m + h);
+      const glm::dvec3 sun(std::sqrt(std::max(0.0, 1.0 - mu_s * mu_s)), 0.0, mu_s);
+      SpectrumD second_order(0.0), transfer(0.0);  // L_2nd and f_ms, isotropic phase
+      for (int i = 0; i < kDirectionsPerAxis; ++i) {
+        for (int j = 0; j < kDirectionsPerAxis; ++j) {
+          // Equal-area directions: cos(theta) uniform, phi uniform.
+          const double cos_t = 1.0 - 2.0 * (i + 0.5) / kDirectionsPerAxis;
+          const double phi = 2.0 * kPi * (j + 0.5) / kDirectionsPerAxis;
+          const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+          const glm::dvec3 dir(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
+          const double r = glm::length(x);
+          const bool ground = rayIntersectsSphere(r, cos_t, a_.bottom_radius_m);
+          const double length = ground ? distanceToInnerSphere(r, cos_t, a_.bottom_radius_m)
+                                       : distanceToOuterSphere(r, cos_t, a_.top_radius_m);
+          const double dt = length / kTableRaySteps;
+          SpectrumD depth(0.0);
+          for (int k = 0; k < kTableRaySteps; ++k) {
+            const glm::dvec3 p = x + dir * ((k + 0.5) * dt);
+            const double hp = glm::length(p) - a_.bottom_radius_m;
+            const SpectrumD extinction = media.extinction(hp);
+            const SpectrumD t = glm::exp(-(depth + extinction * (0.5 * dt)));
+            depth += extinction * dt;
+            const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * media.rayleighDensity(hp) +
+                                         SpectrumD(a_.mie_scattering) * media.mieDensity(hp);
+            // Light scattered once (isotropic phase 1 / 4 pi) toward x.
+            second_order += t * scattering * SpectrumD(transmittanceToSun(p, sun)) * (dt / (4.0 * kPi));
+            transfer += t * scattering * dt;
+          }
+          if (ground) {
+            const glm::dvec3 g = x + dir * length;
+            const double g_mu_s = glm::dot(glm::normalize(g), sun);
+            if (g_mu_s > 0.0) {
+              second_order += glm::exp(-depth) * SpectrumD(a_.ground_albedo) * (g_mu_s / kPi) *
+                              SpectrumD(transmittanceToSun(g, sun));
+            }
+          }
+        }
+      }
+      // The mean over directions: second_order is the mean radiance of light
+      // scattered once arriving at x (per unit sun irradiance), transfer the
+      // fraction of isotropically scattered light that scatters again.
+      const double n = kDirectionsPerAxis * kDirectionsPerAxis;
+      second_order /= n;
+      transfer /= n;
+      multiple_.at(i_s, i_h) = Spectrum(second_order / (SpectrumD(1.0) - glm::min(transfer, SpectrumD(0.99))));
+    }
+  }
+  precompute_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+size_t HillaireMultipleScattering::memoryBytes() const {
+  return (optical_depth_.texels.size() + multiple_.texels.size()) * sizeof(float) * a_.channelCount();
+}
+
+Spectrum HillaireMultipleScattering::transmittanceToSun(const glm::dvec3& p, const glm::dvec3& sun) const {
+  const double r = std::max(glm::length(p), a_.bottom_radius_m);
+  const double mu_s = glm::dot(p, sun) / glm::length(p);
+  if (rayIntersectsSphere(r, mu_s, a_.bottom_radius_m)) return Spectrum(0.0f);
+  return glm::exp(-sampler_.opticalDepthToTop(optical_depth_, std::min(r, a_.top_radius_m), mu_s));
+}
+
+Spectrum HillaireMultipleScattering::multipleScattering(double altitude, double mu_s) const {
+  const double thickness = a_.top_radius_m - a_.bottom_radius_m;
+  return sampleBilinear(multiple_, {0.5 * (mu_s + 1.0), std::clamp(altitude / thickness, 0.0, 1.0)});
+}
+
+RadianceAndTransmittance HillaireMultipleScattering::received(const glm::dvec3& camera, const glm::dvec3& view,
+                                                              const glm::dvec3& sun) const {
+  const AtmosphereMedia media(a_);
+  const double r0 = std::max(glm::length(camera), a_.bottom_radius_m);
+  glm::dvec3 origin = camera * (r0 / glm::length(camera));
+  double rmu = glm::dot(origin, view);
+  if (r0 > a_.top_radius_m) {
+    const double disc = rmu * rmu - r0 * r0 + a_.top_radius_m * a_.top_radius_m;
+    const double entry = -rmu - safeSqrt(disc);
+    if (disc < 0.0 || entry < 0.0) return {Spectrum(0.0f), Spectrum(1.0f)};
+    origin += view * entry;
+    rmu += entry;
+  }
+  const double r = std::min(glm::length(origin), a_.top_radius_m), mu = clampCosine(rmu / r);
+  const bool ground = rayIntersectsSphere(r, mu, a_.bottom_radius_m);
+  const double length = ground ? distanceToInnerSphere(r, mu, a_.bottom_radius_m) : distanceToOuterSphere(r, mu, a_.top_radius_m);
+  const double nu = glm::dot(view, sun);
+  const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a_.mie_phase_g, nu);
+  const double dt = length / kViewSteps;
+  SpectrumD depth(0.0), radiance(0.0);
+  for (int k = 0; k < kViewSteps; ++k) {
+    const glm::dvec3 p = origin + view * ((k + 0.5) * dt);
+    const double h = glm::length(p) - a_.bottom_radius_m;
+    const SpectrumD extinction = media.extinction(h);
+    const SpectrumD t = glm::exp(-(depth + extinction * (0.5 * dt)));
+    depth += extinction * dt;
+    const double rayleigh = media.rayleighDensity(h), mie = media.mieDensity(h);
+    const SpectrumD single = (SpectrumD(a_.rayleigh_scattering) * (rayleigh * p_r) + SpectrumD(a_.mie_scattering) * (mie * p_m)) *
+                             SpectrumD(transmittanceToSun(p, sun));
+    const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * rayleigh + SpectrumD(a_.mie_scattering) * mie;
+    const SpectrumD multiple = scattering * SpectrumD(multipleScattering(h, glm::dot(glm::normalize(p), sun)));
+    radiance += t * (single + multiple) * dt;
+  }
+  radiance *= SpectrumD(a_.sun_irradiance);
+  const SpectrumD transmittance = glm::exp(-depth);
+  if (ground) {
+    const glm::dvec3 g = origin + view * length;
+    const double g_mu_s = glm::dot(glm::normalize(g), sun);
+    if (g_mu_s > 0.0) {
+      radiance += transmittance * SpectrumD(a_.ground_albedo) * (g_mu_s / kPi) * SpectrumD(a_.sun_irradiance) *
+                  SpectrumD(transmittanceToSun(g, sun));
+    }
+  }
+  return {Spectrum(radiance), Spectrum(transmittance)};
+}
+
+}  // namespace skybake
