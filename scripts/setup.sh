@@ -10,6 +10,7 @@ packages=(
   libopenexr-dev libopenimageio-dev libglm-dev libcli11-dev
   libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
   googletest libgtest-dev libbenchmark-dev
+  python3 python3-numpy python3-matplotlib snakemake
 )
 
 missing=()
