@@ -4,6 +4,7 @@
 
 #include "data_formats/error.h"
 #include "runtime/atmosphere_media.h"
+#include "runtime/atmosphere_ray.h"
 #include "runtime/ray_quadrature.h"
 
 namespace skybake {
@@ -43,28 +44,9 @@ struct RayStart {
   glm::dvec3 position;   // the (moved) start
 };
 
-// Puts the camera where the lookups can start: on the ground if below it, at
-// the atmosphere's entry point if in space.
-RayStart startInAtmosphere(const AtmosphereDomain& domain, glm::dvec3 camera, const glm::dvec3& dir) {
-  double r = glm::length(camera);
-  if (r < domain.bottom_radius_m) {
-    // Below the ground: treated as on the ground directly above. A camera at
-    // the very centre has no "above": use the +z pole.
-    camera = r > 0.0 ? camera * (domain.bottom_radius_m / r) : glm::dvec3(0.0, 0.0, domain.bottom_radius_m);
-    r = domain.bottom_radius_m;
-  }
-  double rmu = glm::dot(camera, dir);
-  double moved = 0.0;
-  if (r > domain.top_radius_m) {
-    const double discriminant = rmu * rmu - r * r + domain.top_radius_m * domain.top_radius_m;
-    const double distance_to_top = -rmu - safeSqrt(discriminant);
-    if (discriminant < 0.0 || distance_to_top < 0.0) return {true, r, 0.0, 0.0, camera};
-    camera += dir * distance_to_top;
-    moved = distance_to_top;
-    r = domain.top_radius_m;
-    rmu += distance_to_top;
-  }
-  return {false, r, clampCosine(rmu / r), moved, camera};
+RayStart startInAtmosphere(const AtmosphereDomain& domain, const glm::dvec3& camera, const glm::dvec3& dir) {
+  const AtmosphereRay ray = atmosphereRay(domain.bottom_radius_m, domain.top_radius_m, camera, dir, 0.0);
+  return {!ray.inside, ray.r, ray.mu, ray.moved, ray.origin};
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "baker/progress.h"
 #include "baker/stages.h"
 #include "runtime/atmosphere_media.h"
+#include "runtime/atmosphere_ray.h"
 
 namespace skybake {
 namespace {
@@ -107,19 +108,11 @@ Spectrum HillaireMultipleScattering::multipleScattering(double altitude, double 
 RadianceAndTransmittance HillaireMultipleScattering::received(const glm::dvec3& camera, const glm::dvec3& view,
                                                               const glm::dvec3& sun) const {
   const AtmosphereMedia media(a_);
-  const double r0 = std::max(glm::length(camera), a_.bottom_radius_m);
-  glm::dvec3 origin = camera * (r0 / glm::length(camera));
-  double rmu = glm::dot(origin, view);
-  if (r0 > a_.top_radius_m) {
-    const double disc = rmu * rmu - r0 * r0 + a_.top_radius_m * a_.top_radius_m;
-    const double entry = -rmu - safeSqrt(disc);
-    if (disc < 0.0 || entry < 0.0) return {Spectrum(0.0f), Spectrum(1.0f)};
-    origin += view * entry;
-    rmu += entry;
-  }
-  const double r = std::min(glm::length(origin), a_.top_radius_m), mu = clampCosine(rmu / r);
-  const bool ground = rayIntersectsSphere(r, mu, a_.bottom_radius_m);
-  const double length = ground ? distanceToInnerSphere(r, mu, a_.bottom_radius_m) : distanceToOuterSphere(r, mu, a_.top_radius_m);
+  const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, camera, view, 0.0);
+  if (!ray.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  const glm::dvec3 origin = ray.origin;
+  const bool ground = ray.ends_on_ground;
+  const double length = ray.length;
   const double nu = glm::dot(view, sun);
   const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a_.mie_phase_g, nu);
   const double dt = length / kViewSteps;

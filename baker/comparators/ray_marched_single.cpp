@@ -2,7 +2,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "baker/reference/shell_geometry.h"
+#include "runtime/atmosphere_ray.h"
 #include "runtime/atmosphere_media.h"
 
 namespace skybake {
@@ -16,7 +16,7 @@ constexpr int kLightSteps = 8;
 RadianceAndTransmittance RayMarchedSingleScattering::received(const glm::dvec3& camera, const glm::dvec3& view,
                                                               const glm::dvec3& sun) const {
   const AtmosphereMedia media(a_);
-  const reference::ShellRay ray = reference::shellRay(a_.bottom_radius_m, a_.top_radius_m, camera, view, 0.0);
+  const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, camera, view, 0.0);
   if (!ray.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   const double nu = glm::dot(view, sun);
   const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a_.mie_phase_g, nu);

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "baker/optical_depth.h"
-#include "baker/reference/shell_geometry.h"
+#include "runtime/atmosphere_ray.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/phase_functions.h"
 #include "runtime/ray_quadrature.h"
@@ -13,8 +13,6 @@
 namespace skybake {
 namespace {
 
-using reference::ShellRay;
-using reference::shellRay;
 
 // Sub-intervals per smooth piece of the view ray for the deterministic single
 // scattering: 64 x 4 Gauss nodes. A vertical piece of 60 km has 0.8 Mie scale
@@ -103,7 +101,7 @@ class PathTracer {
 
   // Distances along the ray where the integrand has a kink or a jump: the
   // edges of the planet's shadow and the profiles' layer boundaries.
-  std::vector<double> breakpoints(const ShellRay& ray, const glm::dvec3& sun) const {
+  std::vector<double> breakpoints(const AtmosphereRay& ray, const glm::dvec3& sun) const {
     std::vector<double> t = {0.0, ray.length};
     auto add = [&](double v) {
       if (v > 0.0 && v < ray.length) t.push_back(v);
@@ -128,7 +126,7 @@ class PathTracer {
 
   // Single-scattered radiance along the ray (in the air, plus the sunlit
   // ground at its end if it ends there), with the segment's optical depth.
-  SpectrumD singleScattering(const ShellRay& ray, const glm::dvec3& sun, bool include_ground) const {
+  SpectrumD singleScattering(const AtmosphereRay& ray, const glm::dvec3& sun, bool include_ground) const {
     const std::vector<double> t = breakpoints(ray, sun);
     SpectrumD depth_before(0.0);
     SpectrumD radiance(0.0);
@@ -163,7 +161,7 @@ class PathTracer {
   // Samples where the next scattering event on the ray happens: a point in the
   // air (density proportional to a tabulated estimate of scattering times
   // transmittance, mixed with a uniform share) or the ground at its end.
-  Vertex sampleVertex(const ShellRay& ray, bool ground_allowed, Random& rng) const {
+  Vertex sampleVertex(const AtmosphereRay& ray, bool ground_allowed, Random& rng) const {
     Vertex v;
     if (!(ray.length > 0.0)) {
       // A ray that starts on the ground pointing into it: the ground is all it meets.
@@ -258,7 +256,7 @@ class PathTracer {
   // ray (start, dir) and beyond, each connected to the sun. With
   // `skip_first_sun`, the first event's own sun connection is left out (the
   // caller has it already, deterministically).
-  SpectrumD tracePath(ShellRay ray, const glm::dvec3& sun, bool ground_allowed, bool skip_first_sun, Random& rng) const {
+  SpectrumD tracePath(AtmosphereRay ray, const glm::dvec3& sun, bool ground_allowed, bool skip_first_sun, Random& rng) const {
     SpectrumD throughput(1.0);
     SpectrumD total(0.0);
     for (int depth = 0; depth < kMaxPathVertices && ray.inside; ++depth) {
@@ -284,7 +282,7 @@ class PathTracer {
         if (!(survive > 0.0) || rng.next() >= survive) break;
         throughput /= survive;
       }
-      ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, v.position + (v.ground ? glm::normalize(v.position) * 1e-3 : glm::dvec3(0.0)),
+      ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, v.position + (v.ground ? glm::normalize(v.position) * 1e-3 : glm::dvec3(0.0)),
                      next_dir, 0.0);
       ground_allowed = true;
     }
@@ -308,7 +306,7 @@ ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere) : a_(at
 
 ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed) const {
   const PathTracer tracer(a_);
-  const ShellRay ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
+  const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
   const bool ground_end = ray.ends_on_ground && !(query.distance_m > 0.0);
   const SpectrumD single = tracer.singleScattering(ray, query.sun, ground_end);
@@ -325,7 +323,7 @@ ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths
 }
 
 SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
-  const ShellRay ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
+  const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return SpectrumD(1.0);
   return glm::exp(-opticalDepthAlongRay(AtmosphereMedia(a_), ray.r, ray.mu, ray.length));
 }
@@ -341,7 +339,7 @@ ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const 
   for (int i = 0; i < paths; ++i) {
     // Cosine-weighted directions: irradiance = pi x mean radiance.
     const glm::dvec3 dir = directionAround(up, std::sqrt(rng.next()), 2.0 * kPi * rng.next());
-    const ShellRay ray = shellRay(a_.bottom_radius_m, a_.top_radius_m, start, dir, 0.0);
+    const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, start, dir, 0.0);
     const SpectrumD x = ray.inside ? tracer.tracePath(ray, sun, true, false, rng) * kPi : SpectrumD(0.0);
     sum += x;
     sum_squares += x * x;

@@ -12,7 +12,7 @@
 
 #include "baker/reference/reference_solver.h"
 #include "baker/local_frame.h"
-#include "baker/reference/shell_geometry.h"
+#include "runtime/atmosphere_ray.h"
 
 namespace skybake {
 namespace {
@@ -36,7 +36,7 @@ enum class RayKind { Sky, Ground, ToPoint, Misses };
 
 RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
   const QueryGeometry g = geometryOf(a, q);
-  const reference::ShellRay ray = reference::shellRay(a.bottom_radius_m, a.top_radius_m, g.camera, g.view, q.distance_m);
+  const AtmosphereRay ray = atmosphereRay(a.bottom_radius_m, a.top_radius_m, g.camera, g.view, q.distance_m);
   if (!ray.inside) return RayKind::Misses;
   if (q.distance_m > 0.0) return RayKind::ToPoint;
   return ray.ends_on_ground ? RayKind::Ground : RayKind::Sky;

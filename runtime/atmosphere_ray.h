@@ -1,5 +1,7 @@
-// Rays in the spherical shell, as the reference solver needs them: where a
-// ray starts inside the atmosphere, how far it goes and what it ends on.
+// A ray in the spherical shell of the atmosphere: where it starts inside (a
+// camera in space is moved to where its ray enters, one below the ground is
+// put on the ground directly above), how far it goes and what it ends on.
+// Lookups, the reference solver and the comparators all start rays here.
 #pragma once
 
 #include <glm/geometric.hpp>
@@ -7,9 +9,9 @@
 
 #include "data_formats/ray_sphere.h"
 
-namespace skybake::reference {
+namespace skybake {
 
-struct ShellRay {
+struct AtmosphereRay {
   bool inside = false;     // false: the ray misses the atmosphere
   glm::dvec3 origin;       // in the atmosphere (moved in from space if needed)
   glm::dvec3 dir;
@@ -22,8 +24,8 @@ struct ShellRay {
 
 // The ray from `start` along unit `dir`, limited to `max_length` (<= 0: none).
 // A start below the ground is put on the ground directly above.
-inline ShellRay shellRay(double bottom, double top, glm::dvec3 start, const glm::dvec3& dir, double max_length) {
-  ShellRay ray;
+inline AtmosphereRay atmosphereRay(double bottom, double top, glm::dvec3 start, const glm::dvec3& dir, double max_length) {
+  AtmosphereRay ray;
   double r = glm::length(start);
   if (r < bottom) {
     start = r > 0.0 ? start * (bottom / r) : glm::dvec3(0.0, 0.0, bottom);
@@ -60,4 +62,4 @@ inline ShellRay shellRay(double bottom, double top, glm::dvec3 start, const glm:
   return ray;
 }
 
-}  // namespace skybake::reference
+}  // namespace skybake
