@@ -114,9 +114,7 @@ std::string bandCell(const ErrorReport& r, const char* quantity, const char* ban
 void runCompare(const CompareOptions& o) {
   const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
   const AtmosphereParameters& a = config.atmosphere;
-  QuerySet all = o.queries == "standard" ? standardQuerySet(a.top_radius_m - a.bottom_radius_m)
-                 : o.queries == "quick"  ? quickQuerySet(a.top_radius_m - a.bottom_radius_m)
-                                         : querySetFromCsv(o.queries);
+  const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
   // Comparators answer rays to the sky or the ground; rays to a point and
   // irradiance are validate's.
   QuerySet queries{all.name, {}, {}};
@@ -125,9 +123,7 @@ void runCompare(const CompareOptions& o) {
   }
 
   TerminalProgress progress;
-  ReferenceSettings settings;
-  settings.paths = o.reference_samples;
-  settings.cache_directory = o.no_cache ? std::filesystem::path() : o.cache_dir.empty() ? defaultReferenceCacheDirectory() : std::filesystem::path(o.cache_dir);
+  const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
   const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
 
   std::vector<std::unique_ptr<SkyMethod>> methods;

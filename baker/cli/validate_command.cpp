@@ -26,13 +26,6 @@ struct ValidateOptions {
   int threads = 0;
 };
 
-QuerySet chooseQueries(const std::string& which, const AtmosphereParameters& a) {
-  const double thickness = a.top_radius_m - a.bottom_radius_m;
-  if (which == "standard") return standardQuerySet(thickness);
-  if (which == "quick") return quickQuerySet(thickness);
-  return querySetFromCsv(which);
-}
-
 // One row per query: the bake's and the reference's values side by side.
 void writeDetails(const std::string& path, const AtmosphereParameters& a, const QuerySet& queries,
                   const ReferenceValues& reference, const MethodValues& bake) {
@@ -70,10 +63,8 @@ void runValidate(const ValidateOptions& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
   const Sky sky = Sky::load(o.bake_path);
   const AtmosphereParameters& a = sky.atmosphere();
-  const QuerySet queries = chooseQueries(o.queries, a);
-  ReferenceSettings settings;
-  settings.paths = o.reference_samples;
-  settings.cache_directory = o.no_cache ? std::filesystem::path() : o.cache_dir.empty() ? defaultReferenceCacheDirectory() : std::filesystem::path(o.cache_dir);
+  const QuerySet queries = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
+  const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
 
   TerminalProgress progress;
   const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);

@@ -44,6 +44,15 @@ RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
 
 }  // namespace
 
+ReferenceSettings referenceSettings(int paths, const std::string& cache_dir, bool no_cache) {
+  ReferenceSettings settings;
+  settings.paths = paths;
+  settings.cache_directory = no_cache            ? std::filesystem::path()
+                             : cache_dir.empty() ? defaultReferenceCacheDirectory()
+                                                 : std::filesystem::path(cache_dir);
+  return settings;
+}
+
 ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const QuerySet& queries,
                                        const ReferenceSettings& settings, ProgressSink& progress) {
   ReferenceCache cache(settings.cache_directory, a, settings.paths);

@@ -26,6 +26,10 @@ struct ReferenceSettings {
   std::filesystem::path cache_directory = defaultReferenceCacheDirectory();  // empty: no cache
 };
 
+// Settings from the command-line options shared by validate and compare: an
+// empty cache_dir means the default directory, no_cache disables caching.
+ReferenceSettings referenceSettings(int paths, const std::string& cache_dir, bool no_cache);
+
 struct ReferenceValues {
   std::vector<CachedReference> radiance;  // one per query of the set
   std::vector<CachedReference> irradiance;

@@ -73,6 +73,12 @@ QuerySet querySetFromCsv(const std::filesystem::path& path) {
   return set;
 }
 
+QuerySet querySetNamed(const std::string& which, double thickness) {
+  if (which == "standard") return standardQuerySet(thickness);
+  if (which == "quick") return quickQuerySet(thickness);
+  return querySetFromCsv(which);
+}
+
 SunBand sunBand(double sun_zenith_deg) {
   if (sun_zenith_deg < 80.0) return SunBand::Day;
   if (sun_zenith_deg <= 90.0) return SunBand::LowSun;

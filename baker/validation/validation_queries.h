@@ -39,6 +39,9 @@ QuerySet quickQuerySet(double atmosphere_thickness_m);
 // Radiance queries from a CSV with the columns of `skybake lookup radiance`.
 QuerySet querySetFromCsv(const std::filesystem::path& path);
 
+// "standard", "quick", or else the path of a CSV (the --queries option).
+QuerySet querySetNamed(const std::string& which, double atmosphere_thickness_m);
+
 // Sun bands: day (elevation > 10 deg), low sun (0 to 10), twilight (-10 to 0).
 enum class SunBand { Day, LowSun, Twilight, Night };
 SunBand sunBand(double sun_zenith_deg);
