@@ -19,6 +19,11 @@ def scaled(value, factor, minimum=2, even=False):
 def main():
     base, factor, out = sys.argv[1], float(sys.argv[2]), sys.argv[3]
     text = open(base).read()
+    if not re.search(r"^\[resolution\]", text, flags=re.M):
+        # The defaults of data_formats/CONFIG.md, written out so they can be scaled.
+        defaults = ("\n[resolution]\ntransmittance = [256, 64]\nirradiance = [64, 16]\n"
+                    "scattering = { r = 32, mu = 128, mu_s = 32, nu = 8 }\n")
+        text = text.replace("\n[bake]", defaults + "\n[bake]", 1) if "\n[bake]" in text else text + defaults
     pair = r"(\s*=\s*\[)\s*(\d+)\s*,\s*(\d+)\s*\]"
 
     def scale_pair(m):
