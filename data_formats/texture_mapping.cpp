@@ -31,10 +31,8 @@ RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r,
 
 RMu irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
                           int i_r) {
-  const double x_mu_s = unitRangeFromTextureCoord(texelCentre(i_mu_s, size_mu_s), size_mu_s);
   const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
-  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m),
-          clampCosine(2.0 * x_mu_s - 1.0)};
+  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m), muSFromTexel(d, size_mu_s, i_mu_s)};
 }
 
 double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r) {
@@ -44,7 +42,11 @@ double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s,
 }
 
 double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_mu_s) {
-  const double x_mu_s = unitRangeFromTextureCoord(texelCentre(i_mu_s, s.mu_s), s.mu_s);
+  return muSFromTexel(d, s.mu_s, i_mu_s);
+}
+
+double muSFromTexel(const AtmosphereDomain& d, int size, int i_mu_s) {
+  const double x_mu_s = unitRangeFromTextureCoord(texelCentre(i_mu_s, size), size);
   const double H = d.horizonToTopDistance();
   const double d_min = d.top_radius_m - d.bottom_radius_m;
   const double d_max = H;

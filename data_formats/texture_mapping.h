@@ -75,14 +75,6 @@ inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int s
   return {transmittanceCoordMu(d, size_mu, r, rho, H, mu), textureCoordFromUnitRange(rho / H, size_r)};
 }
 
-// ---- irradiance (2D: u = mu_s across, v = r down) ----
-
-inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s,
-                                              int size_r, double r, double mu_s) {
-  const double x_r = (r - d.bottom_radius_m) / (d.top_radius_m - d.bottom_radius_m);
-  return {textureCoordFromUnitRange(mu_s * 0.5 + 0.5, size_mu_s),
-          textureCoordFromUnitRange(x_r, size_r)};
-}
 
 // ---- scattering (4D) ----
 
@@ -134,6 +126,17 @@ inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r
   return 0.5 + 0.5 * textureCoordFromUnitRange(x, size_mu / 2);
 }
 
+// ---- irradiance (2D: u = mu_s across, v = r down) ----
+
+// mu_s uses the scattering table's coordinate (dense near the horizon, ending
+// at mu_s_min): across the terminator irradiance falls tenfold within a few
+// degrees, which a coordinate linear in mu_s would straddle with one texel.
+inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s,
+                                              int size_r, double r, double mu_s) {
+  const double x_r = (r - d.bottom_radius_m) / (d.top_radius_m - d.bottom_radius_m);
+  return {scatteringCoordMuS(d, size_mu_s, mu_s), textureCoordFromUnitRange(x_r, size_r)};
+}
+
 inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
                                                    const ScatteringSizes& s, double r, double mu,
                                                    double mu_s, double nu,
@@ -168,6 +171,9 @@ struct ScatteringTexelConfig {
 
 double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r);
 double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_mu_s);
+// mu_s at the centre of texel i_mu_s of a mu_s axis of `size` texels (the
+// scattering and irradiance tables share this axis's mapping).
+double muSFromTexel(const AtmosphereDomain& d, int size, int i_mu_s);
 ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s,
                                             int i_r, int i_mu, int i_mu_s, int i_nu);
 
