@@ -36,17 +36,9 @@ constexpr double kDifferenceSegmentMinLength_m = 10000.0;
 // scale heights, 4 per sub-interval, integrated to ~1e-3.
 constexpr int kDirectSegmentSubintervals = 4;
 
-struct RayStart {
-  bool misses_atmosphere;
-  double r;              // radius of the (moved) start, in [bottom, top]
-  double mu;             // view zenith cosine there
-  double moved_m;        // how far the start was moved from the camera along the ray
-  glm::dvec3 position;   // the (moved) start
-};
-
-RayStart startInAtmosphere(const AtmosphereDomain& domain, const glm::dvec3& camera, const glm::dvec3& dir) {
-  const AtmosphereRay ray = atmosphereRay(domain.bottom_radius_m, domain.top_radius_m, camera, dir, 0.0);
-  return {!ray.inside, ray.r, ray.mu, ray.moved, ray.origin};
+// Where lookups start: the camera, or where its ray enters the atmosphere.
+AtmosphereRay enter(const AtmosphereDomain& domain, const glm::dvec3& camera, const glm::dvec3& dir) {
+  return atmosphereRay(domain.bottom_radius_m, domain.top_radius_m, camera, dir, 0.0);
 }
 
 }  // namespace
@@ -60,22 +52,21 @@ Sky::Sky(BakeFile bake)
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                           const glm::dvec3& sun_dir, double shadow_length_m) const {
   const AtmosphereDomain& domain = sampler_.domain();
-  const RayStart start = startInAtmosphere(domain, camera, view_dir);
-  if (start.misses_atmosphere) return {Spectrum(0.0f), Spectrum(1.0f)};
+  const AtmosphereRay start = enter(domain, camera, view_dir);
+  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   const double r = start.r;
   const double mu = start.mu;
-  const double mu_s = clampCosine(glm::dot(start.position, sun_dir) / r);
+  const double mu_s = clampCosine(glm::dot(start.origin, sun_dir) / r);
   const double nu = clampCosine(glm::dot(view_dir, sun_dir));
-  const bool ground = rayIntersectsSphere(r, mu, domain.bottom_radius_m);
+  const bool ground = start.ends_on_ground;
   const BakeTables& t = bake_.tables;
 
   const Spectrum transmittance =
-      ground ? glm::exp(-sampler_.opticalDepthAlongRay(
-                   t.transmittance, r, mu, distanceToInnerSphere(r, mu, domain.bottom_radius_m), true))
+      ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, start.length, true))
              : glm::exp(-sampler_.opticalDepthToTop(t.transmittance, r, mu));
 
   Spectrum rayleigh, mie;
-  const double shadow = std::max(shadow_length_m - start.moved_m, 0.0);
+  const double shadow = std::max(shadow_length_m - start.moved, 0.0);
   if (shadow == 0.0) {
     rayleigh = sampler_.scattering(t.scattering, r, mu, mu_s, nu, ground);
     mie = sampler_.scattering(t.single_mie, r, mu, mu_s, nu, ground);
@@ -168,17 +159,17 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
   const double distance = glm::length(offset);
   if (!(distance > 0.0)) return {Spectrum(0.0f), Spectrum(1.0f)};
   const glm::dvec3 view_dir = offset / distance;
-  const RayStart start = startInAtmosphere(domain, camera, view_dir);
-  const double d = distance - start.moved_m;
-  if (start.misses_atmosphere || d <= 0.0) return {Spectrum(0.0f), Spectrum(1.0f)};
+  const AtmosphereRay start = enter(domain, camera, view_dir);
+  const double d = distance - start.moved;
+  if (!start.inside || d <= 0.0) return {Spectrum(0.0f), Spectrum(1.0f)};
   const double r = start.r;
   const double mu = start.mu;
-  const double mu_s = clampCosine(glm::dot(start.position, sun_dir) / r);
+  const double mu_s = clampCosine(glm::dot(start.origin, sun_dir) / r);
   const double nu = clampCosine(glm::dot(view_dir, sun_dir));
-  const double shadow = std::max(shadow_length_m - start.moved_m, 0.0);
+  const double shadow = std::max(shadow_length_m - start.moved, 0.0);
   const BakeTables& t = bake_.tables;
 
-  const bool ground = rayIntersectsSphere(r, mu, domain.bottom_radius_m);
+  const bool ground = start.ends_on_ground;
   const double scattering_length = std::max(d - shadow, 0.0);
   const double direct_weight =
       std::clamp((kDirectSegmentMaxLength_m - scattering_length) /
@@ -231,10 +222,9 @@ RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const g
                                                const glm::dvec3& sun_dir) const {
   const AtmosphereDomain& domain = sampler_.domain();
   RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir);
-  const RayStart start = startInAtmosphere(domain, camera, view_dir);
-  if (start.misses_atmosphere || !rayIntersectsSphere(start.r, start.mu, domain.bottom_radius_m)) return v;
-  const glm::dvec3 ground =
-      start.position + view_dir * distanceToInnerSphere(start.r, start.mu, domain.bottom_radius_m);
+  const AtmosphereRay start = enter(domain, camera, view_dir);
+  if (!start.inside || !start.ends_on_ground) return v;
+  const glm::dvec3 ground = start.origin + view_dir * start.length;
   const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun_dir);
   v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
   return v;
@@ -269,15 +259,15 @@ Spectrum Sky::transmittance(const glm::dvec3& a, const glm::dvec3& b) const {
   const double distance = glm::length(offset);
   if (!(distance > 0.0)) return Spectrum(1.0f);
   const glm::dvec3 dir = offset / distance;
-  const RayStart start = startInAtmosphere(domain, a, dir);
-  const double d = distance - start.moved_m;
-  if (start.misses_atmosphere || d <= 0.0) return Spectrum(1.0f);
-  const bool ground = rayIntersectsSphere(start.r, start.mu, domain.bottom_radius_m);
-  if (ground && d > distanceToInnerSphere(start.r, start.mu, domain.bottom_radius_m)) {
+  const AtmosphereRay start = enter(domain, a, dir);
+  const double d = distance - start.moved;
+  if (!start.inside || d <= 0.0) return Spectrum(1.0f);
+  const bool ground = start.ends_on_ground;
+  if (ground && d > start.length) {
     return Spectrum(0.0f);  // the segment passes through the planet
   }
   // Beyond the top the ray is in vacuum: only the part inside counts.
-  const double inside = ground ? d : std::min(d, distanceToOuterSphere(start.r, start.mu, domain.top_radius_m));
+  const double inside = std::min(d, start.length);
   return glm::exp(-sampler_.opticalDepthAlongRay(bake_.tables.transmittance, start.r, start.mu, inside, ground));
 }
 

@@ -15,7 +15,6 @@
 #include "baker/comparators/flat_closed_form.h"
 #include "baker/comparators/hillaire_multiple_scattering.h"
 #include "baker/comparators/ray_marched_single.h"
-#include "baker/local_frame.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
@@ -83,10 +82,8 @@ MethodValues evaluate(const SkyMethod& method, const AtmosphereParameters& a, co
   MethodValues out;
   const auto start = std::chrono::steady_clock::now();
   for (const RadianceQuery& q : queries.radiance) {
-    const glm::dvec3 camera = cameraAtAltitude(a.bottom_radius_m, q.altitude_m);
-    const RadianceAndTransmittance v =
-        method.received(camera, directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
-                        directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0));
+    const QueryGeometry g = geometryOf(a, q);
+    const RadianceAndTransmittance v = method.received(g.camera, g.view, g.sun);
     out.radiance.push_back(v.radiance);
     out.transmittance.push_back(v.transmittance);
   }

@@ -1,5 +1,7 @@
 #include "baker/render/sky_image.h"
 
+#include "runtime/atmosphere_ray.h"
+
 #include <omp.h>
 
 #include <cmath>
@@ -65,9 +67,9 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
 Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun) {
   const RadianceAndTransmittance received = sky.receivedRadiance(camera, dir, sun);
   Spectrum radiance = received.radiance;
-  const double r = std::max(glm::length(camera), sky.atmosphere().bottom_radius_m);
-  const bool sees_ground = rayIntersectsSphere(r, glm::dot(camera, dir) / glm::length(camera), sky.atmosphere().bottom_radius_m);
-  if (!sees_ground && glm::dot(dir, sun) > std::cos(sky.atmosphere().sun_angular_radius_rad)) {
+  const AtmosphereRay ray =
+      atmosphereRay(sky.atmosphere().bottom_radius_m, sky.atmosphere().top_radius_m, camera, dir, 0.0);
+  if (!ray.ends_on_ground && glm::dot(dir, sun) > std::cos(sky.atmosphere().sun_angular_radius_rad)) {
     radiance += received.transmittance * sky.solarRadiance();
   }
   return radiance;

@@ -17,15 +17,6 @@
 namespace skybake {
 namespace {
 
-struct QueryGeometry {
-  glm::dvec3 camera, view, sun;
-};
-
-QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
-  return {{0.0, 0.0, a.bottom_radius_m + q.altitude_m}, directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
-          directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)};
-}
-
 std::string radianceKey(const RadianceQuery& q) {
   return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
                      q.distance_m);
@@ -43,6 +34,11 @@ RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
 }
 
 }  // namespace
+
+QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
+  return {cameraAtAltitude(a.bottom_radius_m, q.altitude_m), directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
+          directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)};
+}
 
 ReferenceSettings referenceSettings(int paths, const std::string& cache_dir, bool no_cache) {
   ReferenceSettings settings;

@@ -41,6 +41,13 @@ struct ReferenceValues {
 ReferenceValues computeReferenceValues(const AtmosphereParameters& atmosphere, const QuerySet& queries,
                                        const ReferenceSettings& settings, ProgressSink& progress);
 
+// A radiance query in the local frame: camera above the +z pole, sun in the
+// x-z plane, view azimuth from the sun's.
+struct QueryGeometry {
+  glm::dvec3 camera, view, sun;
+};
+QueryGeometry geometryOf(const AtmosphereParameters& atmosphere, const RadianceQuery& query);
+
 // A method's answers for every query of a set.
 struct MethodValues {
   std::vector<Spectrum> radiance;       // what the viewer receives (see Sky::receivedRadiance)

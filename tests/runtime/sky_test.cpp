@@ -37,17 +37,19 @@ glm::dvec3 direction(double zenith_deg, double azimuth_deg) {
   return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
 }
 
-// Single-scattered radiance by direct integration, no tables: 800 Gauss nodes
-// along the view ray, optical depths by quadrature of the density profiles
-// (validated against closed forms in the baker tests), a point sun.
+// Single-scattered radiance by direct integration, no tables: 200 x 4 Gauss
+// nodes along the view ray (to its end, or to `distance` when > 0), optical
+// depths by quadrature of the density profiles (validated against closed
+// forms in the baker tests), a point sun.
 Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, const glm::dvec3& view,
-                                const glm::dvec3& sun) {
+                                const glm::dvec3& sun, double distance = 0.0) {
   const AtmosphereMedia media(a);
   const double r = a.bottom_radius_m + altitude;
   const double mu = view.z, mu_s = sun.z, nu = glm::dot(view, sun);
   const bool ground = rayIntersectsSphere(r, mu, a.bottom_radius_m);
-  const double length = ground ? distanceToInnerSphere(r, mu, a.bottom_radius_m)
-                               : distanceToOuterSphere(r, mu, a.top_radius_m);
+  const double length = distance > 0.0 ? distance
+                        : ground       ? distanceToInnerSphere(r, mu, a.bottom_radius_m)
+                                       : distanceToOuterSphere(r, mu, a.top_radius_m);
   const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a.mie_phase_g, nu);
   SpectrumD sum(0.0);
   forEachQuadratureNode(0.0, length, 200, [&](double t, double w) {
@@ -61,6 +63,11 @@ Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, 
     sum += scattering * glm::exp(-depth) * w;
   });
   return Spectrum(sum * SpectrumD(a.sun_irradiance));
+}
+
+// Zenith angle (deg) of the geometric horizon seen from radius r.
+double horizonZenithDeg(const AtmosphereParameters& a, double r) {
+  return 180.0 - std::asin(a.bottom_radius_m / r) * 180.0 / kPi;
 }
 
 TEST(Sky, SingleScatteringLookupsMatchDirectIntegration) {
@@ -138,7 +145,7 @@ TEST(Sky, RadianceToPointHasNoSeamThroughHorizontalAndHorizon) {
   const glm::dvec3 sun = direction(60.0, 30.0);
   for (double altitude : {10.0, 1000.0, 10000.0}) {
     const double r = a.bottom_radius_m + altitude;
-    const double horizon_zenith = 180.0 - std::asin(a.bottom_radius_m / r) * 180.0 / kPi;
+    const double horizon_zenith = horizonZenithDeg(a, r);
     for (double distance : {1000.0, 10000.0, 50000.0}) {
       std::vector<double> radiance;
       // Sweep from 1 deg above the horizontal through the geometric horizon,
@@ -161,7 +168,7 @@ TEST(Sky, SkyRadianceHasNoSeamThroughHorizontalButGroundEdgeStaysSharp) {
   const glm::dvec3 sun = direction(60.0, 30.0);
   for (double altitude : {10.0, 1000.0, 10000.0}) {
     const double r = a.bottom_radius_m + altitude;
-    const double horizon_zenith = 180.0 - std::asin(a.bottom_radius_m / r) * 180.0 / kPi;
+    const double horizon_zenith = horizonZenithDeg(a, r);
     const glm::dvec3 camera(0.0, 0.0, r);
     std::vector<double> radiance;
     for (double zenith = 89.0; zenith < horizon_zenith - 0.01; zenith += 0.05) {
@@ -175,7 +182,7 @@ TEST(Sky, SkyRadianceHasNoSeamThroughHorizontalButGroundEdgeStaysSharp) {
   // by more than half (blue). (From high cameras the step is physically small:
   // the path beyond the tangent point is hidden behind its own optical depth.)
   const glm::dvec3 camera(0.0, 0.0, a.bottom_radius_m + 10.0);
-  const double horizon_zenith = 180.0 - std::asin(a.bottom_radius_m / camera.z) * 180.0 / kPi;
+  const double horizon_zenith = horizonZenithDeg(a, camera.z);
   const double above = sky.skyRadiance(camera, direction(horizon_zenith - 0.005, 0.0), sun).radiance[2];
   const double below = sky.skyRadiance(camera, direction(horizon_zenith + 0.005, 0.0), sun).radiance[2];
   EXPECT_GT(above - below, 0.5 * above);
@@ -205,26 +212,6 @@ TEST(Sky, CameraInSpaceSeesWhatACameraAtTheEntryPointSees) {
   EXPECT_EQ(miss.transmittance, Spectrum(1.0f));
 }
 
-// Single-scattered radiance toward a point by direct integration, no tables.
-Spectrum directSingleScatteringToPoint(const AtmosphereParameters& a, double altitude, const glm::dvec3& view,
-                                       const glm::dvec3& sun, double distance) {
-  const AtmosphereMedia media(a);
-  const double r = a.bottom_radius_m + altitude;
-  const double mu = view.z, mu_s = sun.z, nu = glm::dot(view, sun);
-  const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a.mie_phase_g, nu);
-  SpectrumD sum(0.0);
-  forEachQuadratureNode(0.0, distance, 100, [&](double t, double w) {
-    const double r_t = radiusAlongRay(r, mu, t);
-    const double mu_s_t = (r * mu_s + t * nu) / r_t;
-    if (rayIntersectsSphere(r_t, mu_s_t, a.bottom_radius_m)) return;
-    const SpectrumD depth = opticalDepthAlongRay(media, r, mu, t) + opticalDepthToTop(media, r_t, mu_s_t);
-    const double h = r_t - a.bottom_radius_m;
-    sum += (SpectrumD(a.rayleigh_scattering) * (media.rayleighDensity(h) * p_r) +
-            SpectrumD(a.mie_scattering) * (media.mieDensity(h) * p_m)) * glm::exp(-depth) * w;
-  });
-  return Spectrum(sum * SpectrumD(a.sun_irradiance));
-}
-
 TEST(Sky, RadianceToPointMatchesDirectIntegrationForSingleScattering) {
   const Sky& sky = bakedSky("earth_single.exr");
   const AtmosphereParameters& a = sky.atmosphere();
@@ -236,7 +223,7 @@ TEST(Sky, RadianceToPointMatchesDirectIntegrationForSingleScattering) {
           const glm::dvec3 view = direction(view_zenith, 30.0), sun = direction(sun_zenith, 0.0);
           if (glm::length(camera + view * distance) < a.bottom_radius_m + 1.0) continue;
           const Spectrum looked_up = sky.radianceToPoint(camera, camera + view * distance, sun).radiance;
-          const Spectrum direct = directSingleScatteringToPoint(a, altitude, view, sun, distance);
+          const Spectrum direct = directSingleScattering(a, altitude, view, sun, distance);
           for (int c = 0; c < 3; ++c) {
             // Short segments are integrated directly (tables for transmittance
             // only): ~1e-3. Long ones are a difference of two lookups, each
