@@ -1,13 +1,15 @@
 #include <omp.h>
 
+#include "baker/local_frame.h"
 #include "runtime/atmosphere_media.h"
+#include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
 #include "baker/stages.h"
 
 namespace skybake {
 namespace {
 
-// 16 sub-intervals x 4 Gauss nodes: a vertical ray through Earth's 60 km
+// 16 sub-intervals x 4 Gauss nodes per sunlit or shadowed piece of the ray: a vertical ray through Earth's 60 km
 // holds 50 Mie scale heights, 3.1 per sub-interval, where the 4-point rule is
 // accurate to ~1e-4 (a 50-step trapezoid is 8 % high on the same ray).
 constexpr int kSingleScatteringSegments = 16;
@@ -24,7 +26,7 @@ SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2
                                               : distanceToOuterSphere(r, mu, a.top_radius_m);
   Spectrum rayleigh(0.0f);
   Spectrum mie(0.0f);
-  forEachQuadratureNode(0.0, length, kSingleScatteringSegments, [&](double t, double w) {
+  auto addNode = [&](double t, double w) {
     const double r_t = std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m);
     const double mu_s_t = clampCosine((r * mu_s + t * nu) / r_t);
     const Spectrum transmittance =
@@ -33,7 +35,18 @@ SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2
     const double altitude = r_t - a.bottom_radius_m;
     rayleigh += transmittance * static_cast<float>(w * media.rayleighDensity(altitude));
     mie += transmittance * static_cast<float>(w * media.mieDensity(altitude));
-  });
+  };
+  // Each piece between the shadow's edges gets its own rule, so none spans
+  // the jump where the sun appears or disappears.
+  const ShadowCrossings crossings = planetShadowCrossings(
+      glm::dvec3(0.0, 0.0, r), directionFromZenithCosine(mu), sunDirectionInViewFrame(mu, mu_s, nu),
+      a.bottom_radius_m, length);
+  double piece_start = 0.0;
+  for (int i = 0; i <= crossings.count; ++i) {
+    const double piece_end = i < crossings.count ? crossings.distance[i] : length;
+    forEachQuadratureNode(piece_start, piece_end, kSingleScatteringSegments, addNode);
+    piece_start = piece_end;
+  }
   return {rayleigh * a.sun_irradiance * a.rayleigh_scattering,
           mie * a.sun_irradiance * a.mie_scattering};
 }

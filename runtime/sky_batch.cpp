@@ -22,9 +22,7 @@ struct MuNuSlice {
     for (int i_mu = 0; i_mu < mu_size; ++i_mu) {
       for (int i_nu = 0; i_nu < nu_size; ++i_nu) {
         auto row = [&](int i_r) {
-          const Spectrum& a = t.at(i_r, i_mu, mu_s.i0, i_nu);
-          const Spectrum& b = t.at(i_r, i_mu, mu_s.i1, i_nu);
-          return a + (b - a) * mu_s.w1;
+          return blendAcrossMuS(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
         };
         const Spectrum r0 = row(r.i0);
         texels[static_cast<size_t>(i_mu) * nu_size + i_nu] = r0 + (row(r.i1) - r0) * r.w1;
@@ -36,7 +34,7 @@ struct MuNuSlice {
     auto at = [&](int i_mu, int i_nu) -> const Spectrum& { return texels[static_cast<size_t>(i_mu) * nu_size + i_nu]; };
     const Spectrum a = at(mu.i0, nu.i0) + (at(mu.i1, nu.i0) - at(mu.i0, nu.i0)) * mu.w1;
     const Spectrum b = at(mu.i0, nu.i1) + (at(mu.i1, nu.i1) - at(mu.i0, nu.i1)) * mu.w1;
-    return a + (b - a) * nu.w1;
+    return blendAcrossMuS(a, b, nu.w1);
   }
 };
 

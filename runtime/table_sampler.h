@@ -47,17 +47,33 @@ inline Spectrum sampleBilinear(const Texture2D& t, TextureCoord2D uv) {
   return a + (b - a) * y.w1;
 }
 
+// Interpolation across mu_s. Below the horizon the sky dims by orders of
+// magnitude per degree of sun depression, roughly exponentially, and a linear
+// blend of two texels that far apart overestimates it (by tens of percent at
+// twilight); a geometric blend is exact for exponential falloff. Where
+// neighbours differ less than kGeometricMuSRatio (the whole day sky) the two
+// blends agree to a fraction of a percent, and the cheaper linear one is kept.
+inline constexpr float kGeometricMuSRatio = 1.5f;
+
+inline Spectrum blendAcrossMuS(const Spectrum& a, const Spectrum& b, float w) {
+  Spectrum out = a + (b - a) * w;
+  for (int c = 0; c < Spectrum::length(); ++c) {
+    if (a[c] > 0.0f && b[c] > 0.0f && (b[c] > kGeometricMuSRatio * a[c] || a[c] > kGeometricMuSRatio * b[c])) {
+      out[c] = a[c] * std::pow(b[c] / a[c], w);
+    }
+  }
+  return out;
+}
+
 // Quadrilinear lookup: trilinear in (mu_s, mu, r) within the two nearest nu
-// slices, then linear in nu.
+// slices (mu_s blended as blendAcrossMuS says), then linear in nu.
 inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu) {
   const AxisLerp r = axisLerpFromTextureCoord(c.u_r, t.r_size);
   const AxisLerp mu = axisLerpFromTextureCoord(c.u_mu, t.mu_size);
   const AxisLerp mu_s = axisLerpFromTextureCoord(c.u_mu_s, t.mu_s_size);
   auto slice = [&](int i_nu) {
     auto row = [&](int i_r, int i_mu) {
-      const Spectrum& a = t.at(i_r, i_mu, mu_s.i0, i_nu);
-      const Spectrum& b = t.at(i_r, i_mu, mu_s.i1, i_nu);
-      return a + (b - a) * mu_s.w1;
+      return blendAcrossMuS(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
     };
     const Spectrum r0 = row(r.i0, mu.i0) + (row(r.i0, mu.i1) - row(r.i0, mu.i0)) * mu.w1;
     const Spectrum r1 = row(r.i1, mu.i0) + (row(r.i1, mu.i1) - row(r.i1, mu.i0)) * mu.w1;
@@ -65,7 +81,7 @@ inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const Axi
   };
   const Spectrum s0 = slice(nu.i0);
   const Spectrum s1 = slice(nu.i1);
-  return s0 + (s1 - s0) * nu.w1;
+  return blendAcrossMuS(s0, s1, nu.w1);
 }
 
 class TableSampler {

@@ -5,9 +5,12 @@
 #include <vector>
 
 #include "baker/optical_depth.h"
+#include "baker/reference/log_linear_proposal.h"
+#include "baker/reference/path_sampler.h"
 #include "runtime/atmosphere_ray.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/phase_functions.h"
+#include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
 
 namespace skybake {
@@ -19,8 +22,9 @@ namespace {
 // heights per sub-interval (error ~1e-9); a horizontal ray of 1000 km changes
 // altitude by less than that per sub-interval near its lowest point.
 constexpr int kSingleScatteringSubintervals = 64;
-// Bins of the tabulated proposal for vertex positions along a ray.
-constexpr int kVertexBins = 24;
+// Bins of the proposal for vertex positions along a ray (exponential inside
+// each bin, see LogLinearProposal).
+constexpr int kVertexBins = 32;
 // Optical depths inside the Monte Carlo part: ~1e-6 relative (see
 // opticalDepthAlongRay), far below the noise they feed.
 constexpr int kPathOpticalDepthSegments = 6;
@@ -28,23 +32,9 @@ constexpr int kPathOpticalDepthSegments = 6;
 // where light can scatter has a positive probability (unbiasedness).
 constexpr double kUniformVertexShare = 0.1;
 constexpr int kMaxPathVertices = 512;
-
-// Uniform double in [0, 1) from 53 random bits: the same on every platform.
-class Random {
- public:
-  explicit Random(uint64_t seed) : state_(seed) {}
-  double next() {
-    // splitmix64: small, fast, statistically sound for this use.
-    uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) * 0x1.0p-53;
-  }
-
- private:
-  uint64_t state_;
-};
+// Russian roulette starts after this many scattering events (0-based), so the
+// second and third orders, most of the multiple scattering, are never cut.
+constexpr int kRouletteFromEvent = 2;
 
 // Any unit vector perpendicular to n, and the third axis of a frame.
 void frameAround(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
@@ -106,18 +96,8 @@ class PathTracer {
     auto add = [&](double v) {
       if (v > 0.0 && v < ray.length) t.push_back(v);
     };
-    // Shadow: p(t) = o + t d is shadowed where p.s < 0 and |p - (p.s) s|^2 < R^2.
-    const glm::dvec3 o = ray.origin, d = ray.dir;
-    const double os = glm::dot(o, sun), ds = glm::dot(d, sun);
-    if (std::abs(ds) > 0.0) add(-os / ds);
-    const glm::dvec3 o_perp = o - sun * os, d_perp = d - sun * ds;
-    const double qa = glm::dot(d_perp, d_perp), qb = 2.0 * glm::dot(o_perp, d_perp);
-    const double qc = glm::dot(o_perp, o_perp) - a_.bottom_radius_m * a_.bottom_radius_m;
-    const double disc = qb * qb - 4.0 * qa * qc;
-    if (qa > 0.0 && disc >= 0.0) {
-      add((-qb - std::sqrt(disc)) / (2.0 * qa));
-      add((-qb + std::sqrt(disc)) / (2.0 * qa));
-    }
+    const ShadowCrossings shadow = planetShadowCrossings(ray.origin, ray.dir, sun, a_.bottom_radius_m, ray.length);
+    for (int i = 0; i < shadow.count; ++i) add(shadow.distance[i]);
     // Tangent point (lowest altitude), where altitude turns around.
     add(-ray.r * ray.mu);
     std::sort(t.begin(), t.end());
@@ -158,43 +138,46 @@ class PathTracer {
     SpectrumD weight;  // transmittance to the vertex over its probability density
   };
 
-  // Samples where the next scattering event on the ray happens: a point in the
-  // air (density proportional to a tabulated estimate of scattering times
-  // transmittance, mixed with a uniform share) or the ground at its end.
-  Vertex sampleVertex(const AtmosphereRay& ray, bool ground_allowed, Random& rng) const {
+  // Samples where the next scattering event on the ray happens, from one
+  // uniform number u: a point in the air (density following scattering times
+  // transmittance along the ray, mixed with a uniform share) or the ground at
+  // its end.
+  Vertex sampleVertex(const AtmosphereRay& ray, bool ground_allowed, double u) const {
     Vertex v;
     if (!(ray.length > 0.0)) {
       // A ray that starts on the ground pointing into it: the ground is all it meets.
       if (!(ground_allowed && ray.ends_on_ground)) return v;
       return {true, true, ray.origin, SpectrumD(1.0)};
     }
+    // Scattering times transmittance (summed over channels) at the bin edges;
+    // optical depth by Simpson's rule per bin, ample for a proposal.
     const double dt = ray.length / kVertexBins;
-    std::array<double, kVertexBins> bin_weight;
+    auto extinctionAt = [&](double t) { return media_.extinction(altitude(ray.origin + ray.dir * t)); };
+    auto scatteringAt = [&](double t) {
+      const double h = altitude(ray.origin + ray.dir * t);
+      return SpectrumD(a_.rayleigh_scattering) * media_.rayleighDensity(h) +
+             SpectrumD(a_.mie_scattering) * media_.mieDensity(h);
+    };
+    std::array<double, kVertexBins + 1> node_value;
     SpectrumD depth(0.0);
-    SpectrumD previous_extinction = media_.extinction(altitude(ray.origin));
-    double total = 0.0;
-    for (int i = 0; i < kVertexBins; ++i) {
-      const glm::dvec3 mid = ray.origin + ray.dir * ((i + 0.5) * dt);
-      const double h = altitude(mid);
-      const SpectrumD extinction_mid = media_.extinction(h);
-      const SpectrumD depth_mid = depth + (previous_extinction + extinction_mid) * (0.25 * dt);
-      const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * media_.rayleighDensity(h) +
-                                   SpectrumD(a_.mie_scattering) * media_.mieDensity(h);
-      const SpectrumD w = scattering * glm::exp(-depth_mid) * dt;
-      bin_weight[i] = w.x + w.y + w.z + w.w;
-      total += bin_weight[i];
-      const SpectrumD extinction_end = media_.extinction(altitude(ray.origin + ray.dir * ((i + 1) * dt)));
-      depth += (previous_extinction + 2.0 * extinction_mid + extinction_end) * (0.25 * dt);
-      previous_extinction = extinction_end;
+    SpectrumD extinction_start = extinctionAt(0.0);
+    for (int i = 0; i <= kVertexBins; ++i) {
+      const SpectrumD w = scatteringAt(i * dt) * glm::exp(-depth);
+      node_value[i] = w.x + w.y + w.z + w.w;
+      if (i == kVertexBins) break;
+      const SpectrumD extinction_end = extinctionAt((i + 1) * dt);
+      depth += (extinction_start + 4.0 * extinctionAt((i + 0.5) * dt) + extinction_end) * (dt / 6.0);
+      extinction_start = extinction_end;
     }
+    const LogLinearProposal<kVertexBins> proposal(ray.length, node_value);
     double ground_weight = 0.0;
     if (ground_allowed && ray.ends_on_ground) {
       const SpectrumD w = SpectrumD(a_.ground_albedo) * glm::exp(-depth);
       ground_weight = w.x + w.y + w.z + w.w;
     }
-    if (total + ground_weight <= 0.0) return v;
-    const double p_ground = ground_weight / (total + ground_weight);
-    const double u = rng.next();
+    const double air_weight = proposal.usable() ? proposal.total() : 0.0;
+    if (air_weight + ground_weight <= 0.0) return v;
+    const double p_ground = ground_weight / (air_weight + ground_weight);
     if (u < p_ground) {
       v.valid = true;
       v.ground = true;
@@ -202,30 +185,22 @@ class PathTracer {
       v.weight = glm::exp(-opticalDepthAlongRay(media_, ray.r, ray.mu, ray.length, kPathOpticalDepthSegments)) / p_ground;
       return v;
     }
-    // In the air: a bin by its weight (or uniformly), then uniform in the bin.
-    double t;
-    if (total > 0.0 && rng.next() >= kUniformVertexShare) {
-      double target = rng.next() * total;
-      int bin = 0;
-      while (bin + 1 < kVertexBins && target >= bin_weight[bin]) target -= bin_weight[bin++];
-      t = (bin + rng.next()) * dt;
-    } else {
-      t = rng.next() * ray.length;
-    }
-    const int bin = std::min(static_cast<int>(t / dt), kVertexBins - 1);
-    const double tabulated = total > 0.0 ? bin_weight[bin] / total / dt : 0.0;
-    const double pdf = (1.0 - p_ground) * ((1.0 - kUniformVertexShare) * tabulated +
-                                           kUniformVertexShare / ray.length);
+    // In the air: uniformly or by the proposal, the rest of u choosing where.
+    const double uniform_share = proposal.usable() ? kUniformVertexShare : 1.0;
+    const double u_air = std::min((u - p_ground) / (1.0 - p_ground), std::nextafter(1.0, 0.0));
+    const double t = u_air < uniform_share ? u_air / uniform_share * ray.length
+                                           : proposal.sample((u_air - uniform_share) / (1.0 - uniform_share));
+    const double pdf = (1.0 - p_ground) * ((1.0 - uniform_share) * proposal.pdf(t) + uniform_share / ray.length);
     v.valid = true;
     v.position = ray.origin + ray.dir * t;
     v.weight = glm::exp(-opticalDepthAlongRay(media_, ray.r, ray.mu, t, kPathOpticalDepthSegments)) / pdf;
     return v;
   }
 
-  // Samples the direction light came from before scattering at a point in
-  // the air toward -dir, and returns the phase-weighted scattering over the
-  // direction's density.
-  glm::dvec3 sampleScatteringDirection(const glm::dvec3& point, const glm::dvec3& dir, Random& rng,
+  // Samples, from two uniform numbers, the direction light came from before
+  // scattering at a point in the air toward -dir, and returns the
+  // phase-weighted scattering over the direction's density.
+  glm::dvec3 sampleScatteringDirection(const glm::dvec3& point, const glm::dvec3& dir, double u_cos, double u_phi,
                                        SpectrumD& weight) const {
     const double h = altitude(point);
     const SpectrumD rayleigh = SpectrumD(a_.rayleigh_scattering) * media_.rayleighDensity(h);
@@ -235,17 +210,20 @@ class PathTracer {
     const double g = a_.mie_phase_g;
     // Uniform directions for Rayleigh's gentle lobe, Henyey-Greenstein for
     // Mie's forward peak, mixed by their shares (each at least 10 % when
-    // present, so neither lobe is ever left unsampled).
+    // present, so neither lobe is ever left unsampled). One number picks the
+    // lobe and, rescaled, the cosine within it.
     double p_uniform = rayleigh_sum + mie_sum > 0.0 ? rayleigh_sum / (rayleigh_sum + mie_sum) : 1.0;
     if (rayleigh_sum > 0.0 && mie_sum > 0.0) p_uniform = std::clamp(p_uniform, 0.1, 0.9);
+    if (g == 0.0) p_uniform = 1.0;
     double cos_theta;
-    if (rng.next() < p_uniform || g == 0.0) {
-      cos_theta = 2.0 * rng.next() - 1.0;
+    if (u_cos < p_uniform) {
+      cos_theta = 2.0 * (u_cos / p_uniform) - 1.0;
     } else {
-      const double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * rng.next());
+      const double x = (u_cos - p_uniform) / (1.0 - p_uniform);
+      const double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * x);
       cos_theta = std::clamp((1.0 + g * g - s * s) / (2.0 * g), -1.0, 1.0);
     }
-    const glm::dvec3 incoming = directionAround(dir, cos_theta, 2.0 * kPi * rng.next());
+    const glm::dvec3 incoming = directionAround(dir, cos_theta, 2.0 * kPi * u_phi);
     const double c = clampCosine(glm::dot(incoming, dir));
     const double pdf = p_uniform / (4.0 * kPi) + (1.0 - p_uniform) * henyeyGreenstein(g, c);
     weight = (rayleigh * rayleighPhase(c) + mie * cornetteShanksPhase(g, c)) / pdf;
@@ -256,30 +234,40 @@ class PathTracer {
   // ray (start, dir) and beyond, each connected to the sun. With
   // `skip_first_sun`, the first event's own sun connection is left out (the
   // caller has it already, deterministically).
-  SpectrumD tracePath(AtmosphereRay ray, const glm::dvec3& sun, bool ground_allowed, bool skip_first_sun, Random& rng) const {
+  SpectrumD tracePath(AtmosphereRay ray, const glm::dvec3& sun, bool ground_allowed, bool skip_first_sun, PathSampler& rng) const {
     SpectrumD throughput(1.0);
+    double first_event_peak = 0.0;
     SpectrumD total(0.0);
     for (int depth = 0; depth < kMaxPathVertices && ray.inside; ++depth) {
-      const Vertex v = sampleVertex(ray, ground_allowed, rng);
+      const Vertex v = sampleVertex(ray, ground_allowed, rng.next());
       if (!v.valid) break;
       throughput *= v.weight;
       glm::dvec3 next_dir;
       if (v.ground) {
         if (depth > 0 || !skip_first_sun) total += throughput * groundSunRadiance(v.position, sun, kPathOpticalDepthSegments);
         const glm::dvec3 normal = glm::normalize(v.position);
-        const double u = rng.next();
-        next_dir = directionAround(normal, std::sqrt(u), 2.0 * kPi * rng.next());  // cosine-weighted
+        const double u_cos = rng.next(), u_phi = rng.next();
+        next_dir = directionAround(normal, std::sqrt(u_cos), 2.0 * kPi * u_phi);  // cosine-weighted
         throughput *= SpectrumD(a_.ground_albedo);  // (albedo/pi) cos / (cos/pi)
       } else {
         if (depth > 0 || !skip_first_sun) total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
         SpectrumD phase_weight;
-        next_dir = sampleScatteringDirection(v.position, ray.dir, rng, phase_weight);
+        const double u_cos = rng.next(), u_phi = rng.next();
+        next_dir = sampleScatteringDirection(v.position, ray.dir, u_cos, u_phi, phase_weight);
         throughput *= phase_weight;
       }
-      // Russian roulette past the second event: unbiased, bounds path length.
-      if (depth >= 1) {
-        const double survive = std::min(1.0, std::max({throughput.x, throughput.y, throughput.z, throughput.w}));
-        if (!(survive > 0.0) || rng.next() >= survive) break;
+      // Russian roulette from the third event on: unbiased, bounds path
+      // length. The survival probability is the throughput relative to the
+      // one after the first event, i.e. the share of light that each later
+      // ray scatters back (<= 1, falling with the order); the first event's
+      // own factor only says how much the view ray scatters and, in thin air,
+      // is so small that rouletting on it would kill nearly every path and
+      // multiply the noise.
+      const double peak = std::max({throughput.x, throughput.y, throughput.z, throughput.w});
+      if (depth == 0) first_event_peak = peak;
+      if (depth >= kRouletteFromEvent) {
+        const double survive = first_event_peak > 0.0 ? std::min(1.0, peak / first_event_peak) : 0.0;
+        if (!(survive > 0.0) || rng.nextIndependent() >= survive) break;
         throughput /= survive;
       }
       ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, v.position + (v.ground ? glm::normalize(v.position) * 1e-3 : glm::dvec3(0.0)),
@@ -293,11 +281,29 @@ class PathTracer {
   AtmosphereMedia media_;
 };
 
-// Mean and standard error of per-path samples.
-ReferenceEstimate summarize(const SpectrumD& sum, const SpectrumD& sum_squares, int n) {
-  const SpectrumD mean = sum / static_cast<double>(n);
-  const SpectrumD variance = glm::max(sum_squares / static_cast<double>(n) - mean * mean, SpectrumD(0.0));
-  return {mean, glm::sqrt(variance / static_cast<double>(std::max(n - 1, 1)))};
+// Estimates the mean of path(sampler) from `paths` paths split into
+// independently shifted replicates (see PathSampler): the mean of the
+// replicate means and its standard error from their spread.
+template <typename PathFn>
+ReferenceEstimate estimateOverReplicates(int paths, uint64_t seed, PathFn&& path) {
+  if (paths <= 0) return {SpectrumD(0.0), SpectrumD(0.0)};
+  const int replicates = std::min(kReplicates, paths);
+  const int per_replicate = paths / replicates;
+  PathSampler sampler(seed);
+  SpectrumD sum(0.0), sum_squares(0.0);
+  for (int r = 0; r < replicates; ++r) {
+    SpectrumD replicate_sum(0.0);
+    for (int i = 0; i < per_replicate; ++i) {
+      sampler.startPath(r, static_cast<uint64_t>(i));
+      replicate_sum += path(sampler);
+    }
+    const SpectrumD mean = replicate_sum / static_cast<double>(per_replicate);
+    sum += mean;
+    sum_squares += mean * mean;
+  }
+  const SpectrumD mean = sum / static_cast<double>(replicates);
+  const SpectrumD variance = glm::max(sum_squares / static_cast<double>(replicates) - mean * mean, SpectrumD(0.0));
+  return {mean, glm::sqrt(variance / static_cast<double>(std::max(replicates - 1, 1)))};
 }
 
 }  // namespace
@@ -310,14 +316,9 @@ ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths
   if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
   const bool ground_end = ray.ends_on_ground && !(query.distance_m > 0.0);
   const SpectrumD single = tracer.singleScattering(ray, query.sun, ground_end);
-  Random rng(seed);
-  SpectrumD sum(0.0), sum_squares(0.0);
-  for (int i = 0; i < paths; ++i) {
-    const SpectrumD x = tracer.tracePath(ray, query.sun, ground_end, true, rng);
-    sum += x;
-    sum_squares += x * x;
-  }
-  ReferenceEstimate e = summarize(sum, sum_squares, std::max(paths, 1));
+  ReferenceEstimate e = estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
+    return tracer.tracePath(ray, query.sun, ground_end, true, sampler);
+  });
   e.value += single;
   return e;
 }
@@ -334,17 +335,13 @@ ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const 
   const double length = glm::length(point);
   const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
   const glm::dvec3 start = up * std::clamp(length, a_.bottom_radius_m, a_.top_radius_m);
-  Random rng(seed);
-  SpectrumD sum(0.0), sum_squares(0.0);
-  for (int i = 0; i < paths; ++i) {
+  return estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
     // Cosine-weighted directions: irradiance = pi x mean radiance.
-    const glm::dvec3 dir = directionAround(up, std::sqrt(rng.next()), 2.0 * kPi * rng.next());
+    const double u_cos = sampler.next(), u_phi = sampler.next();
+    const glm::dvec3 dir = directionAround(up, std::sqrt(u_cos), 2.0 * kPi * u_phi);
     const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, start, dir, 0.0);
-    const SpectrumD x = ray.inside ? tracer.tracePath(ray, sun, true, false, rng) * kPi : SpectrumD(0.0);
-    sum += x;
-    sum_squares += x * x;
-  }
-  return summarize(sum, sum_squares, std::max(paths, 1));
+    return ray.inside ? tracer.tracePath(ray, sun, true, false, sampler) * kPi : SpectrumD(0.0);
+  });
 }
 
 }  // namespace skybake
