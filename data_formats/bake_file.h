@@ -3,7 +3,9 @@
 // the specification.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
 
 #include "atmosphere_parameters.h"
@@ -49,8 +51,13 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake);
 
 // Reads a bake back, every attribute included. Throws Error(BadInput) naming
 // the file and the reason for a missing, truncated, corrupt, foreign or
-// unknown-version file.
+// unknown-version file, and for one whose header promises more table data
+// than a file of its size can hold; Error(Internal) if memory runs out.
 BakeFile readBakeFile(const std::filesystem::path& path);
+
+// The same from a bake already in memory (`bytes` is the whole file);
+// `source_name` stands for the file in error messages.
+BakeFile readBakeFileFromMemory(std::span<const std::byte> bytes, const std::string& source_name);
 
 // Channel name in the file for a wavelength: "680nm", "532p5nm" ('.' is the
 // EXR layer separator, so fractions use 'p').

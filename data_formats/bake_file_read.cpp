@@ -1,7 +1,15 @@
-// Bake file reader. Trusts nothing in the file: every part, channel, size and
-// attribute is checked against the config carried in the header before a
-// table is filled, and any OpenEXR failure becomes an Error naming the file.
+// Bake file reader. Trusts nothing in the file: OpenEXRCore checks the
+// headers before OpenEXR's C++ reader parses them (exr_header_check.h), every
+// part, channel, size and attribute is checked against the config carried in
+// the header before a table is allocated or filled, and any OpenEXR failure
+// becomes an Error naming the file. Files and memory buffers share this one
+// reader through OpenEXR's stream interface.
 #include <cmath>
+#include <cstdint>
+#include <memory>
+#include <new>
+#include <span>
+#include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -9,6 +17,7 @@
 #include <OpenEXR/ImfInputPart.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfMultiPartInputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <fmt/format.h>
 
@@ -16,18 +25,41 @@
 #include "bake_file_attributes.h"
 #include "config.h"
 #include "error.h"
+#include "exr_header_check.h"
+#include "exr_memory_stream.h"
 
 namespace skybake {
 namespace {
 
 using namespace bake_file;
 
+// The most bytes of uncompressed pixel data one byte of an OpenEXR file can
+// hold. deflate (ZIP, the compression FORMAT.md specifies) cannot exceed
+// 1032:1; PXR24 puts at most 4:3 in front of deflate (1376:1), and OpenEXR's
+// other codecs (RLE 64:1, PIZ, B44, and DWA, which stores channels named as
+// skybake names them losslessly with deflate) stay below that. A header whose
+// table sizes need more data than the file could hold is corrupt, and is
+// refused before gigabytes are allocated for a small file.
+constexpr uint64_t kMaxExrExpansion = 2048;
+
+uint64_t pixelBytes(Imf::PixelType type) { return type == Imf::HALF ? 2 : 4; }
+
+// A part found in the file and checked against the table it must hold.
+struct PartLayout {
+  const char* name = nullptr;
+  int index = 0;
+  int width = 0;
+  int height = 0;
+  uint64_t stored_bytes = 0;  // its channels' pixel data, uncompressed
+};
+
 class Reader {
  public:
-  explicit Reader(const std::filesystem::path& path) : path_(path.string()), file_(path_.c_str()) {}
+  Reader(Imf::IStream& stream, const std::string& source)
+      : source_(source), file_(stream) {}
 
   [[noreturn]] void fail(const std::string& what) const {
-    throwBadInput(fmt::format("{}: {}", path_, what));
+    throwBadInput(fmt::format("{}: {}", source_, what));
   }
 
   int findPart(const char* name) const {
@@ -37,8 +69,6 @@ class Reader {
     fail(fmt::format("part '{}' is missing", name));
   }
 
-  const Imf::Header& header(int part) const { return file_.header(part); }
-
   template <typename Attribute>
   const Attribute& attribute(int part, const char* name) const {
     const Attribute* a = file_.header(part).findTypedAttribute<Attribute>(name);
@@ -46,11 +76,11 @@ class Reader {
     return *a;
   }
 
-  // Reads a part of the expected size into `texels`.
-  void readPart(const char* name, int width, int height, const AtmosphereParameters& a,
-                std::vector<Spectrum>& texels) {
-    const int part = findPart(name);
-    const Imf::Header& h = file_.header(part);
+  // Finds a part and checks its window and channels against the table size
+  // the config gives it. Allocates nothing.
+  PartLayout checkPart(const char* name, int width, int height, const AtmosphereParameters& a) const {
+    PartLayout layout{name, findPart(name), width, height, 0};
+    const Imf::Header& h = file_.header(layout.index);
     const Imath::Box2i window = h.dataWindow();
     const long long w = 1LL * window.max.x - window.min.x + 1;
     const long long ht = 1LL * window.max.y - window.min.y + 1;
@@ -58,34 +88,67 @@ class Reader {
       fail(fmt::format("part '{}' is {}x{} texels at ({}, {}); the config says {}x{} at (0, 0)",
                        name, w, ht, window.min.x, window.min.y, width, height));
     }
-    texels.assign(static_cast<size_t>(width) * height, Spectrum(0.0f));
+    uint64_t bytes_per_texel = 0;
+    for (int c = 0; c < a.channelCount(); ++c) {
+      const std::string channel = channelName(a.wavelengths_nm[c]);
+      const Imf::Channel* found = h.channels().findChannel(channel);
+      if (found == nullptr) fail(fmt::format("part '{}' has no channel {}", name, channel));
+      if (found->xSampling != 1 || found->ySampling != 1) {
+        fail(fmt::format("part '{}' channel {} is subsampled ({}x{}); tables have one value per texel",
+                         name, channel, found->xSampling, found->ySampling));
+      }
+      bytes_per_texel += pixelBytes(found->type);
+    }
+    layout.stored_bytes = bytes_per_texel * static_cast<uint64_t>(width) * static_cast<uint64_t>(height);
+    return layout;
+  }
+
+  // Reads a checked part into `texels` (width * height texels, channels in
+  // the config's wavelength order, unused lanes 0).
+  void readPart(const PartLayout& part, const AtmosphereParameters& a, std::vector<Spectrum>& texels) {
+    texels.assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
     Imf::FrameBuffer frame;
     char* base = reinterpret_cast<char*>(texels.data());
     for (int c = 0; c < a.channelCount(); ++c) {
-      const std::string channel = channelName(a.wavelengths_nm[c]);
-      if (h.channels().findChannel(channel) == nullptr) {
-        fail(fmt::format("part '{}' has no channel {}", name, channel));
-      }
-      frame.insert(channel, Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum),
-                                       sizeof(Spectrum) * width));
+      frame.insert(channelName(a.wavelengths_nm[c]),
+                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum),
+                              sizeof(Spectrum) * part.width));
     }
-    Imf::InputPart in(file_, part);
+    Imf::InputPart in(file_, part.index);
     in.setFrameBuffer(frame);
-    in.readPixels(0, height - 1);
+    in.readPixels(0, part.height - 1);
     for (const Spectrum& s : texels) {
       for (int c = 0; c < a.channelCount(); ++c) {
-        if (!std::isfinite(s[c])) fail(fmt::format("part '{}' holds a non-finite value", name));
+        if (!std::isfinite(s[c])) fail(fmt::format("part '{}' holds a non-finite value", part.name));
       }
     }
   }
 
  private:
-  std::string path_;
+  std::string source_;
   Imf::MultiPartInputFile file_;
 };
 
-BakeFile readChecked(const std::filesystem::path& path) {
-  Reader in(path);
+// A table's shape without its texels: they are allocated only once every part
+// has passed its checks.
+Texture2D emptyTexture2D(int width, int height) {
+  Texture2D t;
+  t.width = width;
+  t.height = height;
+  return t;
+}
+
+Texture4D emptyTexture4D(const TextureSizes& s) {
+  Texture4D t;
+  t.r_size = s.scattering_r;
+  t.mu_size = s.scattering_mu;
+  t.mu_s_size = s.scattering_mu_s;
+  t.nu_size = s.scattering_nu;
+  return t;
+}
+
+BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t file_bytes) {
+  Reader in(stream, source);
   const int first = in.findPart(kPartScattering);
   const int version = in.attribute<Imf::IntAttribute>(first, kAttrFormatVersion).value();
   if (version != kBakeFormatVersion) {
@@ -94,44 +157,84 @@ BakeFile readChecked(const std::filesystem::path& path) {
   }
   BakeFile bake;
   bake.config = parseConfig(in.attribute<Imf::StringAttribute>(first, kAttrConfig).value(),
-                            path.string() + " [" + kAttrConfig + "]");
+                            source + " [" + kAttrConfig + "]");
   bake.orders_computed = in.attribute<Imf::IntAttribute>(first, kAttrOrders).value();
   bake.report_json = in.attribute<Imf::StringAttribute>(first, kAttrBakeReport).value();
 
   const TextureSizes& s = bake.config.sizes;
   const AtmosphereParameters& a = bake.config.atmosphere;
   BakeTables& t = bake.tables;
-  t.transmittance = Texture2D(s.transmittance_mu, s.transmittance_r);
-  in.readPart(kPartTransmittance, s.transmittance_mu, s.transmittance_r, a, t.transmittance.texels);
-  t.irradiance = Texture2D(s.irradiance_mu_s, s.irradiance_r);
-  in.readPart(kPartIrradiance, s.irradiance_mu_s, s.irradiance_r, a, t.irradiance.texels);
-  t.scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
-  in.readPart(kPartScattering, t.scattering.atlasWidth(), t.scattering.atlasHeight(), a,
-              t.scattering.texels);
-  t.single_mie = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
-  in.readPart(kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), a,
-              t.single_mie.texels);
-  t.multiple_density = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
-  in.readPart(kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), a,
-              t.multiple_density.texels);
+  t.transmittance = emptyTexture2D(s.transmittance_mu, s.transmittance_r);
+  t.irradiance = emptyTexture2D(s.irradiance_mu_s, s.irradiance_r);
+  t.scattering = emptyTexture4D(s);
+  t.single_mie = emptyTexture4D(s);
+  t.multiple_density = emptyTexture4D(s);
+  struct Table {
+    const char* part;
+    int width;
+    int height;
+    std::vector<Spectrum>* texels;
+  };
+  const Table tables[] = {
+      {kPartTransmittance, t.transmittance.width, t.transmittance.height, &t.transmittance.texels},
+      {kPartIrradiance, t.irradiance.width, t.irradiance.height, &t.irradiance.texels},
+      {kPartScattering, t.scattering.atlasWidth(), t.scattering.atlasHeight(), &t.scattering.texels},
+      {kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), &t.single_mie.texels},
+      {kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(),
+       &t.multiple_density.texels},
+  };
+  std::vector<PartLayout> layouts;
+  uint64_t stored_bytes = 0;
+  for (const Table& table : tables) {
+    layouts.push_back(in.checkPart(table.part, table.width, table.height, a));
+    stored_bytes += layouts.back().stored_bytes;
+  }
+  if (stored_bytes / kMaxExrExpansion > file_bytes) {
+    in.fail(fmt::format("the config's table sizes need {} bytes of pixel data, more than a file of {} "
+                        "bytes can hold: the header is corrupt",
+                        stored_bytes, file_bytes));
+  }
+  for (size_t i = 0; i < layouts.size(); ++i) in.readPart(layouts[i], a, *tables[i].texels);
   return bake;
+}
+
+// Opens the stream inside the error conversion: OpenEXR reports truncated and
+// corrupt files through its own exceptions, which become Error(BadInput).
+template <typename OpenStream>
+BakeFile readConverted(const std::string& source, uint64_t file_bytes, OpenStream open) {
+  try {
+    auto stream = open();
+    return readChecked(*stream, source, file_bytes);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw Error(ErrorKind::Internal, fmt::format("{}: out of memory reading the bake file", source));
+  } catch (const std::exception& e) {
+    throwBadInput(fmt::format("{}: not a readable skybake bake file: {}", source, e.what()));
+  }
 }
 
 }  // namespace
 
 BakeFile readBakeFile(const std::filesystem::path& path) {
   std::error_code error;
+  const std::string source = path.string();
   if (!std::filesystem::is_regular_file(path, error)) {
-    throwBadInput(fmt::format("{}: no such bake file", path.string()));
+    throwBadInput(fmt::format("{}: no such bake file", source));
   }
-  try {
-    return readChecked(path);
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {
-    // OpenEXR reports truncated and corrupt files through its own exceptions.
-    throwBadInput(fmt::format("{}: not a readable skybake bake file: {}", path.string(), e.what()));
-  }
+  const uintmax_t file_bytes = std::filesystem::file_size(path, error);
+  if (error) throwBadInput(fmt::format("{}: cannot read the file size: {}", source, error.message()));
+  return readConverted(source, file_bytes, [&] {
+    checkExrHeaders(path, source);
+    return std::make_unique<Imf::StdIFStream>(source.c_str());
+  });
+}
+
+BakeFile readBakeFileFromMemory(std::span<const std::byte> bytes, const std::string& source_name) {
+  return readConverted(source_name, bytes.size(), [&] {
+    checkExrHeaders(bytes, source_name);
+    return std::make_unique<ExrMemoryStream>(bytes, source_name.c_str());
+  });
 }
 
 }  // namespace skybake

@@ -10,6 +10,8 @@
 
 #include "config.h"
 #include "error.h"
+#include "toml_text_check.h"
+#include "toml_value_text.h"
 
 namespace skybake {
 namespace {
@@ -141,14 +143,7 @@ class ConfigReader {
     return profile;
   }
 
-  static std::string describe(const toml::node& node) {
-    std::ostringstream out;
-    node.visit([&](auto&& v) { out << v; });
-    std::string text = out.str();
-    constexpr size_t kMaxShown = 60;  // keep one-line messages readable
-    if (text.size() > kMaxShown) text = text.substr(0, kMaxShown) + "...";
-    return text;
-  }
+  static std::string describe(const toml::node& node) { return tomlValueText(node); }
 
  private:
   std::string source_;
@@ -157,6 +152,7 @@ class ConfigReader {
 }  // namespace
 
 BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
+  checkTomlCharacters(toml_text, source);
   toml::table root;
   try {
     root = toml::parse(toml_text, source);

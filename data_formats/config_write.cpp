@@ -8,6 +8,9 @@
 namespace skybake {
 namespace {
 
+// The one control character above U+001F, which TOML strings must escape too.
+constexpr char kDelete = 0x7F;
+
 template <typename Real>  // float or double: each prints its own shortest form
 std::string numberText(Real v) {
   // TOML needs a '.' or exponent to read a float back as a float.
@@ -47,7 +50,9 @@ std::string configToToml(const BakeConfig& config) {
   std::string name;
   for (char ch : config.name) {  // TOML basic string escaping
     if (ch == '"' || ch == '\\') name += '\\';
-    if (static_cast<unsigned char>(ch) < 0x20) {
+    // TOML forbids control characters unescaped in strings: U+0000 to U+001F
+    // and DEL; a raw one would make a bake whose stored config cannot be read.
+    if (static_cast<unsigned char>(ch) < 0x20 || ch == kDelete) {
       name += fmt::format("\\u{:04x}", static_cast<unsigned char>(ch));
       continue;
     }

@@ -10,6 +10,9 @@ packages=(
   libopenexr-dev libopenimageio-dev libglm-dev libcli11-dev
   libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
   googletest libgtest-dev libbenchmark-dev
+  # The fuzz targets (tests/fuzz) build with Clang: libFuzzer is in
+  # libclang-rt, and the Clang build configures OpenMP through libomp.
+  clang libclang-rt-14-dev libomp-dev
   python3 python3-numpy python3-matplotlib snakemake
 )
 

@@ -159,5 +159,47 @@ TEST(Config, MissingFileIsBadInput) {
   }
 }
 
+// Inputs found by tests/fuzz/fuzz_config.
+
+TEST(Config, NameWithControlCharactersRoundTrips) {
+  // The canonical TOML is what a bake file stores: a raw DEL in it made the
+  // file's own config unreadable.
+  BakeConfig c = parseConfig(kMinimal, "minimal");
+  c.name = std::string("a\x7f" "b\x01" "c\td\"e\\f");
+  const BakeConfig again = parseConfig(configToToml(c), "round trip");
+  EXPECT_EQ(again.name, c.name);
+}
+
+TEST(Config, NonAsciiIsAcceptedInStringsAndComments) {
+  const std::string comment = "# Ünïcödé — a comment\n";
+  EXPECT_EQ(parseConfig(comment + "name = \"café — Ελλάδα\"  # é\n" + kMinimal, "a").name, "café — Ελλάδα");
+  EXPECT_EQ(parseConfig(comment + "name = \"\"\"\\\n  text: é\"\"\"\n" + kMinimal, "b").name, "text: é");
+  EXPECT_EQ(parseConfig(comment + "name = \'\'\'é\n§\'\'\'\n" + kMinimal, "c").name, "é\n§");
+}
+
+TEST(Config, RejectsNonAsciiOutsideStringsWithPosition) {
+  // The TOML parser's whitespace test is undefined behaviour on these
+  // characters, so they must be refused before it runs.
+  expectRejected(kMinimal + "\n[bake]\norders = 4é\n", {"test.toml:11:11:", "non-ASCII"});
+  expectRejected("\xcc\xaa", {"test.toml:1:1:", "non-ASCII"});
+  expectRejected("[bakë]\n", {"test.toml:1:5:", "non-ASCII"});
+}
+
+TEST(Config, RejectsNonAsciiAfterBackslashInMultiLineString) {
+  expectRejected("name = \"\"\"\\\n  §\"\"\"\n" + kMinimal, {"test.toml:2:3:", "line-ending backslash"});
+  // The parser skips its non-ASCII whitespace (here U+FEFF) as it skips spaces.
+  expectRejected("name = \"\"\"\\\n \xEF\xBB\xBF §\"\"\"\n" + kMinimal, {"test.toml:2:4:", "U+00A7"});
+  expectRejected("name = \"\"\"\\§\"\"\"\n" + kMinimal, {"test.toml:1:12:", "escape code"});
+}
+
+TEST(Config, DescribesArraysOfSmallAndExtremeNumbers) {
+  // Wrong-length arrays are quoted in the message; toml++'s own formatter is
+  // undefined behaviour on numbers between -1 and 1 and on INT64_MIN.
+  expectRejected(edited("irradiance = [1.8]", "irradiance = [1e-7, -9223372036854775808, 0.5]"),
+                 {"sun.irradiance = [", "-9223372036854775808", "one per wavelength"});
+  expectRejected(edited("irradiance = [1.8]", "irradiance = [[0.25, { a = -0.5 }], 2]"),
+                 {"sun.irradiance[0] = [0.25, { a = -0.5 }]", "number"});
+}
+
 }  // namespace
 }  // namespace skybake

@@ -1,0 +1,24 @@
+// A character check of config text made before toml++ parses it.
+//
+// toml++ 3.3 (Debian 12's) reaches __builtin_unreachable, undefined
+// behaviour, when it asks whether one of many non-ASCII code points (U+00A1 to
+// U+0499 among them) is whitespace. It asks outside strings and comments,
+// where TOML allows no non-ASCII characters anyway, after a backslash in a
+// multi-line basic string, and of the first character after a line-ending
+// backslash there. Refusing those few inputs first keeps every config away
+// from that code.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace skybake {
+
+// Throws Error(BadInput) "<source>:<line>:<column>: TOML syntax error: ..."
+// for a non-ASCII character outside strings and comments or right after a
+// backslash in a multi-line basic string (neither is valid TOML), and for one
+// of the misread code points starting the text after a line-ending backslash
+// there. Everything else, malformed TOML included, is left for the parser.
+void checkTomlCharacters(std::string_view text, const std::string& source);
+
+}  // namespace skybake

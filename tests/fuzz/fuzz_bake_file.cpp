@@ -1,0 +1,48 @@
+// libFuzzer target: readBakeFileFromMemory on arbitrary bytes. A bake file is
+// untrusted input (downloaded, copied, half-written), so any outcome other
+// than a BakeFile or an Error(BadInput) is a finding. A bake that is accepted
+// must hold exactly the tables its config describes, since the runtime indexes
+// them by those sizes without further checks.
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <span>
+#include <string>
+
+#include "data_formats/bake_file.h"
+#include "data_formats/error.h"
+#include "fuzz_checks.h"
+
+namespace {
+
+// The name error messages must start with.
+constexpr const char* kSource = "fuzz.exr";
+
+void expectTableSizes(const skybake::BakeFile& bake) {
+  const skybake::TextureSizes& s = bake.config.sizes;
+  const skybake::BakeTables& t = bake.tables;
+  const size_t texels_4d = static_cast<size_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s *
+                           s.scattering_nu;
+  const bool ok =
+      t.transmittance.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
+      t.irradiance.texels.size() == static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r &&
+      t.scattering.texels.size() == texels_4d && t.single_mie.texels.size() == texels_4d &&
+      t.multiple_density.texels.size() == texels_4d;
+  if (!ok) skybake::fuzz::finding("accepted bake's tables do not match its config", bake.config.name);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  try {
+    expectTableSizes(skybake::readBakeFileFromMemory(bytes, kSource));
+  } catch (const skybake::Error& e) {
+    skybake::fuzz::expectBadInputError(e, kSource);
+  } catch (const std::exception& e) {
+    skybake::fuzz::finding("exception other than skybake::Error", e.what());
+  } catch (...) {
+    skybake::fuzz::finding("exception of a non-standard type", "");
+  }
+  return 0;
+}
