@@ -64,6 +64,19 @@ void addToScattering(Texture4D& scattering, const Texture4D& delta, const Spectr
   }
 }
 
+// The last order's mean radiance over the sum of all orders so far, worst
+// channel: how much the last order still changed the sky. A channel whose
+// total is zero (nothing scatters) has converged trivially.
+float lastOrderShare(const std::vector<OrderContribution>& orders, int channels) {
+  float worst = 0.0f;
+  for (int c = 0; c < channels; ++c) {
+    float total = 0.0f;
+    for (const OrderContribution& o : orders) total += o.mean_radiance[c];
+    if (total > 0.0f) worst = std::max(worst, orders.back().mean_radiance[c] / total);
+  }
+  return worst;
+}
+
 // Above this ratio between successive orders a geometric tail is too uncertain
 // (and too large) to add: such atmospheres need more computed orders.
 constexpr float kMaxTailRatio = 0.8f;
@@ -171,7 +184,12 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   Texture4D delta_multiple;
   Texture4D last_density;  // the last order's density at the stored texels
-  for (int order = 2; order <= config.bake.orders; ++order) {
+  const BakeSettings& settings = config.bake;
+  const int last_order = settings.auto_orders ? settings.max_orders : settings.orders;
+  report.orders_decision.automatic = settings.auto_orders;
+  report.orders_decision.tolerance = settings.auto_orders ? settings.order_tolerance : 0.0;
+  report.orders_decision.cap = settings.auto_orders ? settings.max_orders : 0;
+  for (int order = 2; order <= last_order; ++order) {
     const OrderRadiance previous{order - 1, delta_rayleigh, tables.single_mie, delta_multiple};
     const ScatteringDensity density = stage.run("scattering_density", order, slices_4d, [&] {
       return computeScatteringDensityTable(ctx, optical_depth, previous, delta_irradiance);
@@ -193,6 +211,11 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     });
     addToScattering(tables.scattering, delta_multiple, Spectrum(1.0f));
     report.orders.push_back({order, meanOf(delta_multiple.texels), Spectrum(0.0f)});
+    report.orders_decision.last_order_share = lastOrderShare(report.orders, a.channelCount());
+    if (settings.auto_orders && report.orders_decision.last_order_share < settings.order_tolerance) {
+      report.orders_decision.converged = true;
+      break;
+    }
   }
 
   if (config.bake.tail_estimate) {
@@ -206,7 +229,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   report.peak_memory_mib = peakMemoryMiB();
 
   out.file.config = config;
-  out.file.orders_computed = config.bake.orders;
+  out.file.orders_computed = static_cast<int>(report.orders.size());
   out.file.report_json = report.toJson();
   return out;
 }

@@ -35,8 +35,19 @@ struct TailEstimate {
   std::string reason;  // why it was or was not applied
 };
 
+// How the number of orders was decided: fixed by the config, or computed
+// until the last order's share of the total fell below the tolerance.
+struct OrdersDecision {
+  bool automatic = false;
+  bool converged = false;      // automatic only: the tolerance was met
+  double tolerance = 0.0;      // automatic only
+  int cap = 0;                 // automatic only: bake.max_orders
+  float last_order_share = 0;  // the last order's share of the total, worst channel
+};
+
 struct BakeReport {
   int threads = 1;
+  OrdersDecision orders_decision;
   TailEstimate tail;
   double wall_seconds = 0.0;
   double cpu_seconds = 0.0;

@@ -35,6 +35,15 @@ std::string BakeReport::toJson(bool with_run_facts) const {
                            {"mean_irradiance", {o.mean_irradiance[0], o.mean_irradiance[1], o.mean_irradiance[2], o.mean_irradiance[3]}}});
   }
   j["orders"] = orders_json;
+  nlohmann::ordered_json decision = {{"orders_used", static_cast<int>(orders.size())},
+                                     {"mode", orders_decision.automatic ? "auto" : "fixed"},
+                                     {"last_order_share", orders_decision.last_order_share}};
+  if (orders_decision.automatic) {
+    decision["tolerance"] = orders_decision.tolerance;
+    decision["max_orders"] = orders_decision.cap;
+    decision["converged"] = orders_decision.converged;
+  }
+  j["orders_decision"] = decision;
   j["tail_estimate"] = {{"applied", tail.applied},
                         {"ratio", {tail.ratio[0], tail.ratio[1], tail.ratio[2], tail.ratio[3]}},
                         {"reason", tail.reason}};

@@ -69,6 +69,13 @@ enum class StoragePrecision { Float, Half };
 
 struct BakeSettings {
   int orders = 4;  // scattering orders: 1 = single scattering only
+  // orders = "auto": compute orders until the last one adds less than
+  // order_tolerance of the total so far (mean radiance over the scattering
+  // table, worst channel), at most max_orders. Optically thick atmospheres
+  // need tens of orders; Earth's clear sky converges to 1e-3 in about 8.
+  bool auto_orders = false;
+  double order_tolerance = 1e-3;
+  int max_orders = 64;
   StoragePrecision precision = StoragePrecision::Float;
   // Add the orders after the last as a geometric series (see BakeReport).
   bool tail_estimate = true;

@@ -248,14 +248,27 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
 
   if (const toml::table* t = in.table(root, "", "bake", false)) {
-    in.rejectUnknownKeys(*t, "bake.", {"orders", "precision", "tail_estimate"});
+    in.rejectUnknownKeys(*t, "bake.", {"orders", "order_tolerance", "max_orders", "precision", "tail_estimate"});
     if (const toml::node* tail = t->get("tail_estimate")) {
       auto b = tail->as_boolean();
       if (!b) in.fail(tail, "bake.tail_estimate", ConfigReader::describe(*tail), "must be true or false");
       config.bake.tail_estimate = b->get();
     }
     if (const toml::node* orders = t->get("orders")) {
-      config.bake.orders = in.integer(*orders, "bake.orders");
+      const auto text = orders->as_string();
+      if (text && text->get() == "auto") {
+        config.bake.auto_orders = true;
+      } else if (text) {
+        in.fail(orders, "bake.orders", ConfigReader::describe(*orders), "must be a whole number or \"auto\"");
+      } else {
+        config.bake.orders = in.integer(*orders, "bake.orders");
+      }
+    }
+    if (const toml::node* tolerance = t->get("order_tolerance")) {
+      config.bake.order_tolerance = in.number(*tolerance, "bake.order_tolerance");
+    }
+    if (const toml::node* cap = t->get("max_orders")) {
+      config.bake.max_orders = in.integer(*cap, "bake.max_orders");
     }
     if (const toml::node* precision = t->get("precision")) {
       auto s = precision->as_string();

@@ -29,6 +29,11 @@ constexpr int kMax2DSize = 8192;
 constexpr int kMax4DAxis = 1024;
 constexpr long long kMaxScatteringTexels = 1LL << 28;  // 4 GiB of float4
 constexpr int kMaxOrders = 1000;
+// Automatic orders: below 1e-9 float sums cannot resolve the last order's
+// share (it would never stop before the cap); above 0.5 "converged" would
+// mean the last order still doubled the sky.
+constexpr double kMinOrderTolerance = 1e-9;
+constexpr double kMaxOrderTolerance = 0.5;
 
 class Checker {
  public:
@@ -156,6 +161,14 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
   if (config.bake.orders < 1 || config.bake.orders > kMaxOrders) {
     check.fail("bake.orders", fmt::format("{}", config.bake.orders),
                fmt::format("must be in [1, {}]", kMaxOrders));
+  }
+  if (!(config.bake.order_tolerance >= kMinOrderTolerance && config.bake.order_tolerance <= kMaxOrderTolerance)) {
+    check.fail("bake.order_tolerance", fmt::format("{}", config.bake.order_tolerance),
+               fmt::format("must be in [{}, {}]", kMinOrderTolerance, kMaxOrderTolerance));
+  }
+  if (config.bake.max_orders < 2 || config.bake.max_orders > kMaxOrders) {
+    check.fail("bake.max_orders", fmt::format("{}", config.bake.max_orders),
+               fmt::format("must be in [2, {}]", kMaxOrders));
   }
 }
 

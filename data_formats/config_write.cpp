@@ -68,7 +68,7 @@ std::string configToToml(const BakeConfig& config) {
       "[absorption]\nextinction = {}\ndensity = {}\n\n"
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
       "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n\n"
-      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n",
+      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}",
       name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
       spectrumList(a.ground_albedo, n), spectrumList(a.sun_irradiance, n),
       numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
@@ -77,8 +77,14 @@ std::string configToToml(const BakeConfig& config) {
       numberText(a.mie_phase_g), profileList(a.mie_density),
       spectrumList(a.absorption_extinction, n), profileList(a.absorption_density),
       s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r,
-      s.scattering_mu, s.scattering_mu_s, s.scattering_nu, config.bake.orders,
-      config.bake.precision == StoragePrecision::Half ? "half" : "float", config.bake.tail_estimate);
+      s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
+      config.bake.auto_orders ? std::string("\"auto\"") : std::to_string(config.bake.orders),
+      config.bake.precision == StoragePrecision::Half ? "half" : "float", config.bake.tail_estimate,
+      // Written only for automatic orders, so fixed-order configs keep their
+      // canonical text (and the reference cache keys hashed from it).
+      config.bake.auto_orders ? fmt::format("order_tolerance = {}\nmax_orders = {}\n",
+                                            numberText(config.bake.order_tolerance), config.bake.max_orders)
+                              : std::string());
 }
 
 }  // namespace skybake

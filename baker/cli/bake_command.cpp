@@ -1,4 +1,5 @@
 // skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float]
+#include <charconv>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -17,7 +18,8 @@ namespace {
 struct BakeOptions {
   std::string config_path;  // empty: the built-in Earth
   std::string output_path;
-  int orders = 0;      // 0: from the config
+  std::string orders;  // empty: from the config; "auto" or a count
+  double order_tolerance = 0.0;  // 0: from the config
   int threads = 0;     // 0: all cores (OpenMP's default)
   std::string precision;  // empty: from the config
   bool reproducible = false;
@@ -35,7 +37,13 @@ std::string stageSummary(const BakeReport& report) {
 void runBake(const BakeOptions& o) {
   BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
   const std::string source = o.config_path.empty() ? "<built-in earth>" : o.config_path;
-  if (o.orders != 0) config.bake.orders = o.orders;
+  if (o.orders == "auto") {
+    config.bake.auto_orders = true;
+  } else if (!o.orders.empty()) {
+    config.bake.auto_orders = false;
+    config.bake.orders = std::stoi(o.orders);  // checked by the option's validator
+  }
+  if (o.order_tolerance > 0.0) config.bake.order_tolerance = o.order_tolerance;
   if (o.precision == "half") config.bake.precision = StoragePrecision::Half;
   if (o.precision == "float") config.bake.precision = StoragePrecision::Float;
   validateConfig(config, source + " (with command-line overrides)");
@@ -55,11 +63,18 @@ void runBake(const BakeOptions& o) {
   sidecar = nlohmann::ordered_json{{"bake_file", o.output_path},
                                    {"atmosphere", config.name},
                                    {"file_size_bytes", bytes},
-                                   {"orders", config.bake.orders},
+                                   {"orders", bake.file.orders_computed},
                                    {"bake", sidecar}};
   writeReportSidecar(output, sidecar);
-  fmt::print(stderr, "skybake: baked '{}' ({} orders) into {} ({:.1f} MiB) in {:.2f} s on {} threads: {}\n",
-             config.name, config.bake.orders, o.output_path, bytes / (1024.0 * 1024.0),
+  const OrdersDecision& decision = bake.report.orders_decision;
+  const std::string orders_note =
+      !decision.automatic ? ""
+      : decision.converged
+          ? fmt::format(", automatic: last order {:.2g} of the total", decision.last_order_share)
+          : fmt::format(", automatic: NOT converged, last order {:.2g} of the total at the cap of {}",
+                        decision.last_order_share, decision.cap);
+  fmt::print(stderr, "skybake: baked '{}' ({} orders{}) into {} ({:.1f} MiB) in {:.2f} s on {} threads: {}\n",
+             config.name, bake.file.orders_computed, orders_note, o.output_path, bytes / (1024.0 * 1024.0),
              bake.report.wall_seconds, bake.report.threads, stageSummary(bake.report));
 }
 
@@ -72,8 +87,24 @@ Command addBakeCommand(CLI::App& app) {
                   "Atmosphere config (TOML, see data_formats/CONFIG.md). Without it, the built-in "
                   "Earth (data_formats/presets/earth.toml).");
   cmd->add_option("-o,--output", options->output_path, "Output bake file (.exr).")->required();
-  cmd->add_option("--orders", options->orders, "Scattering orders to compute (overrides bake.orders).")
-      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--orders", options->orders,
+                  "Scattering orders to compute, or 'auto' to iterate until the last order adds less than "
+                  "bake.order_tolerance of the total (overrides bake.orders).")
+      ->check(CLI::Validator(
+          [](std::string& value) -> std::string {
+            if (value == "auto") return "";
+            int count = 0;
+            const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), count);
+            if (error != std::errc() || end != value.data() + value.size() || count < 1 || count > 1000) {
+              return "must be 'auto' or a whole number in [1, 1000]";
+            }
+            return "";
+          },
+          "auto|1..1000"));
+  cmd->add_option("--order-tolerance", options->order_tolerance,
+                  "With automatic orders: stop when the last order adds less than this share of the total "
+                  "(overrides bake.order_tolerance).")
+      ->check(CLI::Range(1e-9, 0.5));
   cmd->add_option("--threads", options->threads, "Worker threads (default: all cores).")
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--precision", options->precision,

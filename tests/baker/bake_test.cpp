@@ -2,6 +2,7 @@
 // thread count, and the values are physically sensible.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -32,6 +33,41 @@ TEST(Bake, EachOrderAddsLessThanThePrevious) {
   for (int c = 0; c < 3; ++c) {
     EXPECT_LT(orders[3].mean_radiance[c], 0.5f * orders[2].mean_radiance[c]);
   }
+}
+
+// Automatic orders stop at the first order whose share of the total is under
+// the tolerance, and not before: the order before it must still be above it
+// (else the loop ran one order too many), and the report says so.
+TEST(Bake, AutomaticOrdersStopWhenTheLastOrderIsBelowTheTolerance) {
+  SilentProgress silent;
+  BakeConfig config = test::smallEarth(4);
+  config.bake.auto_orders = true;
+  config.bake.order_tolerance = 1e-2;
+  config.bake.max_orders = 40;
+  const BakeOutput bake = bakeAtmosphere(config, 0, silent);
+  const std::vector<OrderContribution>& orders = bake.report.orders;
+  ASSERT_GE(orders.size(), 3u);
+  ASSERT_LT(orders.size(), 40u) << "Earth converges to 1 % long before 40 orders";
+  EXPECT_EQ(bake.file.orders_computed, static_cast<int>(orders.size()));
+  EXPECT_TRUE(bake.report.orders_decision.converged);
+  auto share = [&](size_t last) {
+    float worst = 0.0f;
+    for (int c = 0; c < 3; ++c) {
+      float total = 0.0f;
+      for (size_t i = 0; i <= last; ++i) total += orders[i].mean_radiance[c];
+      worst = std::max(worst, orders[last].mean_radiance[c] / total);
+    }
+    return worst;
+  };
+  EXPECT_LT(share(orders.size() - 1), 1e-2f);
+  EXPECT_GE(share(orders.size() - 2), 1e-2f);
+  EXPECT_FLOAT_EQ(bake.report.orders_decision.last_order_share, share(orders.size() - 1));
+
+  // A cap below what convergence needs: stops at the cap, reported unconverged.
+  config.bake.max_orders = 2;
+  const BakeOutput capped = bakeAtmosphere(config, 0, silent);
+  EXPECT_EQ(capped.file.orders_computed, 2);
+  EXPECT_FALSE(capped.report.orders_decision.converged);
 }
 
 TEST(Bake, TablesAreFiniteAndNonNegative) {

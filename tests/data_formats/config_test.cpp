@@ -73,6 +73,27 @@ TEST(Config, CanonicalTomlRoundTripsExactly) {
   }
 }
 
+TEST(Config, AutomaticOrdersParseAndRoundTrip) {
+  const BakeConfig c =
+      parseConfig(kMinimal + "[bake]\norders = \"auto\"\norder_tolerance = 0.002\nmax_orders = 20\n", "auto");
+  EXPECT_TRUE(c.bake.auto_orders);
+  EXPECT_DOUBLE_EQ(c.bake.order_tolerance, 0.002);
+  EXPECT_EQ(c.bake.max_orders, 20);
+  const std::string text = configToToml(c);
+  const BakeConfig again = parseConfig(text, "round trip");
+  EXPECT_TRUE(again.bake.auto_orders);
+  EXPECT_DOUBLE_EQ(again.bake.order_tolerance, 0.002);
+  EXPECT_EQ(again.bake.max_orders, 20);
+  EXPECT_EQ(configToToml(again), text);
+}
+
+TEST(Config, RejectsBadOrderSettings) {
+  expectRejected(kMinimal + "[bake]\norders = \"many\"\n", {"bake.orders", "many", "\"auto\""});
+  expectRejected(kMinimal + "[bake]\norders = \"auto\"\norder_tolerance = 0.0\n", {"bake.order_tolerance", "must be in"});
+  expectRejected(kMinimal + "[bake]\norder_tolerance = 0.9\n", {"bake.order_tolerance", "0.9"});
+  expectRejected(kMinimal + "[bake]\nmax_orders = 1\n", {"bake.max_orders", "1", "must be in [2, 1000]"});
+}
+
 TEST(Config, MinimalConfigGetsDefaults) {
   const BakeConfig c = parseConfig(kMinimal, "minimal");
   EXPECT_EQ(c.atmosphere.rayleigh_scattering[0], 0.0f);
