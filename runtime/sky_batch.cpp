@@ -14,15 +14,16 @@ namespace {
 struct MuNuSlice {
   int mu_size;
   int nu_size;
+  Blend blend;
   std::vector<Spectrum> texels;  // [i_mu * nu_size + i_nu]
 
-  MuNuSlice(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu_s)
-      : mu_size(t.mu_size), nu_size(t.nu_size), texels(static_cast<size_t>(t.mu_size) * t.nu_size) {
+  MuNuSlice(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu_s, Blend blend)
+      : mu_size(t.mu_size), nu_size(t.nu_size), blend(blend), texels(static_cast<size_t>(t.mu_size) * t.nu_size) {
     // Same multilinear weights as sample4D, applied in a different order.
     for (int i_mu = 0; i_mu < mu_size; ++i_mu) {
       for (int i_nu = 0; i_nu < nu_size; ++i_nu) {
         auto row = [&](int i_r) {
-          return blendAcrossMuS(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
+          return blendAcross(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1, blend);
         };
         const Spectrum r0 = row(r.i0);
         texels[static_cast<size_t>(i_mu) * nu_size + i_nu] = r0 + (row(r.i1) - r0) * r.w1;
@@ -34,7 +35,7 @@ struct MuNuSlice {
     auto at = [&](int i_mu, int i_nu) -> const Spectrum& { return texels[static_cast<size_t>(i_mu) * nu_size + i_nu]; };
     const Spectrum a = at(mu.i0, nu.i0) + (at(mu.i1, nu.i0) - at(mu.i0, nu.i0)) * mu.w1;
     const Spectrum b = at(mu.i0, nu.i1) + (at(mu.i1, nu.i1) - at(mu.i0, nu.i1)) * mu.w1;
-    return blendAcrossMuS(a, b, nu.w1);
+    return blendAcross(a, b, nu.w1, blend);
   }
 };
 
@@ -83,8 +84,8 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
 
   const AxisLerp r_lerp = axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, ss.r), ss.r);
   const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(scatteringCoordMuS(d, ss.mu_s, mu_s), ss.mu_s);
-  const MuNuSlice rayleigh(t.scattering, r_lerp, mu_s_lerp);
-  const MuNuSlice mie(t.single_mie, r_lerp, mu_s_lerp);
+  const MuNuSlice rayleigh(t.scattering, r_lerp, mu_s_lerp, radianceBlend(mu_s));
+  const MuNuSlice mie(t.single_mie, r_lerp, mu_s_lerp, radianceBlend(mu_s));
   const OpticalDepthRow depth_here(
       t.transmittance, axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, sizes.transmittance_r),
                                                 sizes.transmittance_r));

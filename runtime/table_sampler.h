@@ -47,41 +47,53 @@ inline Spectrum sampleBilinear(const Texture2D& t, TextureCoord2D uv) {
   return a + (b - a) * y.w1;
 }
 
-// Interpolation across mu_s. Below the horizon the sky dims by orders of
-// magnitude per degree of sun depression, roughly exponentially, and a linear
-// blend of two texels that far apart overestimates it (by tens of percent at
-// twilight); a geometric blend is exact for exponential falloff. Where
-// neighbours differ less than kGeometricMuSRatio (the whole day sky) the two
-// blends agree to a fraction of a percent, and the cheaper linear one is kept.
-inline constexpr float kGeometricMuSRatio = 1.5f;
+// How sample4D blends across mu_s and nu. With the sun below the horizon the
+// sky dims by orders of magnitude per degree of sun depression, roughly
+// exponentially, and toward or away from the sun by as much across one nu
+// slice; a linear blend of two texels that far apart overestimates it (by
+// tens of percent), a geometric one is exact for exponential falloff.
+// Geometric blending costs a pow per channel, so it is used only there
+// (twilight lookups): in daylight neighbours differ by little, the two blends
+// agree to a fraction of a percent (measured: day errors unchanged), and the
+// linear one keeps lookups vectorized.
+enum class Blend { Linear, GeometricWhereSteep };
 
-inline Spectrum blendAcrossMuS(const Spectrum& a, const Spectrum& b, float w) {
+// Neighbours closer than this ratio are blended linearly even in geometric
+// mode: the blends then differ by < 1 % and the pow is saved.
+inline constexpr float kGeometricBlendRatio = 1.5f;
+
+inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, float w) {
   Spectrum out = a + (b - a) * w;
   for (int c = 0; c < Spectrum::length(); ++c) {
-    if (a[c] > 0.0f && b[c] > 0.0f && (b[c] > kGeometricMuSRatio * a[c] || a[c] > kGeometricMuSRatio * b[c])) {
+    if (a[c] > 0.0f && b[c] > 0.0f && (b[c] > kGeometricBlendRatio * a[c] || a[c] > kGeometricBlendRatio * b[c])) {
       out[c] = a[c] * std::pow(b[c] / a[c], w);
     }
   }
   return out;
 }
 
+inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w, Blend blend) {
+  return blend == Blend::Linear ? a + (b - a) * w : blendGeometricWhereSteep(a, b, w);
+}
+
+// The blend for a radiance lookup with the sun at zenith cosine mu_s.
+inline Blend radianceBlend(double mu_s) { return mu_s < 0.0 ? Blend::GeometricWhereSteep : Blend::Linear; }
+
 // Quadrilinear lookup: trilinear in (mu_s, mu, r) within the two nearest nu
-// slices (mu_s blended as blendAcrossMuS says), then linear in nu.
-inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu) {
+// slices, then across nu; mu_s and nu blended as `blend` says.
+inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu, Blend blend = Blend::Linear) {
   const AxisLerp r = axisLerpFromTextureCoord(c.u_r, t.r_size);
   const AxisLerp mu = axisLerpFromTextureCoord(c.u_mu, t.mu_size);
   const AxisLerp mu_s = axisLerpFromTextureCoord(c.u_mu_s, t.mu_s_size);
   auto slice = [&](int i_nu) {
     auto row = [&](int i_r, int i_mu) {
-      return blendAcrossMuS(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
+      return blendAcross(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1, blend);
     };
     const Spectrum r0 = row(r.i0, mu.i0) + (row(r.i0, mu.i1) - row(r.i0, mu.i0)) * mu.w1;
     const Spectrum r1 = row(r.i1, mu.i0) + (row(r.i1, mu.i1) - row(r.i1, mu.i0)) * mu.w1;
     return r0 + (r1 - r0) * r.w1;
   };
-  const Spectrum s0 = slice(nu.i0);
-  const Spectrum s1 = slice(nu.i1);
-  return blendAcrossMuS(s0, s1, nu.w1);
+  return blendAcross(slice(nu.i0), slice(nu.i1), nu.w1, blend);
 }
 
 class TableSampler {
@@ -145,7 +157,7 @@ class TableSampler {
   Spectrum scattering(const Texture4D& table, double r, double mu, double mu_s, double nu,
                       bool ray_intersects_ground) const {
     const ScatteringCoord c = scatteringCoord(r, mu, mu_s, nu, ray_intersects_ground);
-    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size));
+    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s));
   }
 
   // The multiple-scattering density table (linear mu, see densityCoordMu).
