@@ -72,28 +72,36 @@ inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, f
   return out;
 }
 
+template <Blend blend>
+inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w) {
+  if constexpr (blend == Blend::Linear) return a + (b - a) * w;
+  else return blendGeometricWhereSteep(a, b, w);
+}
+
 inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w, Blend blend) {
-  return blend == Blend::Linear ? a + (b - a) * w : blendGeometricWhereSteep(a, b, w);
+  return blend == Blend::Linear ? blendAcross<Blend::Linear>(a, b, w) : blendAcross<Blend::GeometricWhereSteep>(a, b, w);
 }
 
 // The blend for a radiance lookup with the sun at zenith cosine mu_s.
 inline Blend radianceBlend(double mu_s) { return mu_s < 0.0 ? Blend::GeometricWhereSteep : Blend::Linear; }
 
 // Quadrilinear lookup: trilinear in (mu_s, mu, r) within the two nearest nu
-// slices, then across nu; mu_s and nu blended as `blend` says.
-inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu, Blend blend = Blend::Linear) {
+// slices, then across nu; mu_s and nu blended as `blend` says (a template
+// argument, so the bake's linear lookups carry no branch).
+template <Blend blend = Blend::Linear>
+inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu) {
   const AxisLerp r = axisLerpFromTextureCoord(c.u_r, t.r_size);
   const AxisLerp mu = axisLerpFromTextureCoord(c.u_mu, t.mu_size);
   const AxisLerp mu_s = axisLerpFromTextureCoord(c.u_mu_s, t.mu_s_size);
   auto slice = [&](int i_nu) {
     auto row = [&](int i_r, int i_mu) {
-      return blendAcross(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1, blend);
+      return blendAcross<blend>(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
     };
     const Spectrum r0 = row(r.i0, mu.i0) + (row(r.i0, mu.i1) - row(r.i0, mu.i0)) * mu.w1;
     const Spectrum r1 = row(r.i1, mu.i0) + (row(r.i1, mu.i1) - row(r.i1, mu.i0)) * mu.w1;
     return r0 + (r1 - r0) * r.w1;
   };
-  return blendAcross(slice(nu.i0), slice(nu.i1), nu.w1, blend);
+  return blendAcross<blend>(slice(nu.i0), slice(nu.i1), nu.w1);
 }
 
 class TableSampler {
@@ -157,7 +165,9 @@ class TableSampler {
   Spectrum scattering(const Texture4D& table, double r, double mu, double mu_s, double nu,
                       bool ray_intersects_ground) const {
     const ScatteringCoord c = scatteringCoord(r, mu, mu_s, nu, ray_intersects_ground);
-    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s));
+    const AxisLerp nu_lerp = axisLerpNu(c.u_nu, table.nu_size);
+    return radianceBlend(mu_s) == Blend::Linear ? sample4D<Blend::Linear>(table, c, nu_lerp)
+                                                : sample4D<Blend::GeometricWhereSteep>(table, c, nu_lerp);
   }
 
   // The multiple-scattering density table (linear mu, see densityCoordMu).
