@@ -4,6 +4,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <limits>
 
 #include "baker/stages.h"
 
@@ -66,13 +67,16 @@ void addToScattering(Texture4D& scattering, const Texture4D& delta, const Spectr
 
 // The last order's mean radiance over the sum of all orders so far, worst
 // channel: how much the last order still changed the sky. A channel whose
-// total is zero (nothing scatters) has converged trivially.
+// total is zero (nothing scatters) has converged trivially; a non-finite one
+// never has (infinity: automatic orders then run to the cap and say so).
 float lastOrderShare(const std::vector<OrderContribution>& orders, int channels) {
   float worst = 0.0f;
   for (int c = 0; c < channels; ++c) {
     float total = 0.0f;
     for (const OrderContribution& o : orders) total += o.mean_radiance[c];
-    if (total > 0.0f) worst = std::max(worst, orders.back().mean_radiance[c] / total);
+    const float last = orders.back().mean_radiance[c];
+    if (!std::isfinite(total) || !std::isfinite(last)) return std::numeric_limits<float>::infinity();
+    if (total > 0.0f) worst = std::max(worst, last / total);
   }
   return worst;
 }

@@ -62,11 +62,18 @@ enum class Blend { Linear, GeometricWhereSteep };
 // mode: the blends then differ by < 1 % and the pow is saved.
 inline constexpr float kGeometricBlendRatio = 1.5f;
 
+// a^(1-w) b^w for positive a and b, in logarithms: the ratio b / a of a
+// normal and a denormal number (thick or dark atmospheres reach 1e-40)
+// overflows to infinity, and a * (b / a)^w then gives inf or NaN.
+inline float geometricBlend(float a, float b, float w) {
+  return std::exp((1.0f - w) * std::log(a) + w * std::log(b));
+}
+
 inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, float w) {
   Spectrum out = a + (b - a) * w;
   for (int c = 0; c < Spectrum::length(); ++c) {
     if (a[c] > 0.0f && b[c] > 0.0f && (b[c] > kGeometricBlendRatio * a[c] || a[c] > kGeometricBlendRatio * b[c])) {
-      out[c] = a[c] * std::pow(b[c] / a[c], w);
+      out[c] = geometricBlend(a[c], b[c], w);
     }
   }
   return out;
@@ -193,7 +200,7 @@ class TableSampler {
     const Spectrum low = row(y.i0), high = row(y.i1);
     Spectrum out;
     for (int c = 0; c < kMaxChannels; ++c) {
-      out[c] = low[c] > 0.0f && high[c] > 0.0f ? low[c] * std::pow(high[c] / low[c], y.w1)
+      out[c] = low[c] > 0.0f && high[c] > 0.0f ? geometricBlend(low[c], high[c], y.w1)
                                                : low[c] + (high[c] - low[c]) * y.w1;
     }
     return out;
