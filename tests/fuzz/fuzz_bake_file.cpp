@@ -35,14 +35,6 @@ void expectTableSizes(const skybake::BakeFile& bake) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
-  try {
-    expectTableSizes(skybake::readBakeFileFromMemory(bytes, kSource));
-  } catch (const skybake::Error& e) {
-    skybake::fuzz::expectBadInputError(e, kSource);
-  } catch (const std::exception& e) {
-    skybake::fuzz::finding("exception other than skybake::Error", e.what());
-  } catch (...) {
-    skybake::fuzz::finding("exception of a non-standard type", "");
-  }
+  skybake::fuzz::expectOnlyBadInputErrors(kSource, [&] { expectTableSizes(skybake::readBakeFileFromMemory(bytes, kSource)); });
   return 0;
 }

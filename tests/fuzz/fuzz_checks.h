@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <string>
 
 #include "data_formats/error.h"
@@ -23,6 +24,21 @@ inline void expectBadInputError(const Error& e, const std::string& source) {
   if (e.kind() != ErrorKind::BadInput) finding("input error not reported as BadInput", e.what());
   if (std::string(e.what()).rfind(source, 0) != 0) {
     finding("error message does not start with the source name", e.what());
+  }
+}
+
+// Runs `parse` on one input: it may succeed or throw a well-formed BadInput
+// error; any other exception is a finding.
+template <typename ParseFn>
+void expectOnlyBadInputErrors(const std::string& source, ParseFn&& parse) {
+  try {
+    parse();
+  } catch (const Error& e) {
+    expectBadInputError(e, source);
+  } catch (const std::exception& e) {
+    finding("exception other than skybake::Error", e.what());
+  } catch (...) {
+    finding("exception of a non-standard type", "");
   }
 }
 

@@ -37,14 +37,6 @@ void expectCanonicalRoundTrip(const skybake::BakeConfig& config) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  try {
-    expectCanonicalRoundTrip(skybake::parseConfig(text, kSource));
-  } catch (const skybake::Error& e) {
-    skybake::fuzz::expectBadInputError(e, kSource);
-  } catch (const std::exception& e) {
-    skybake::fuzz::finding("exception other than skybake::Error", e.what());
-  } catch (...) {
-    skybake::fuzz::finding("exception of a non-standard type", "");
-  }
+  skybake::fuzz::expectOnlyBadInputErrors(kSource, [&] { expectCanonicalRoundTrip(skybake::parseConfig(text, kSource)); });
   return 0;
 }
