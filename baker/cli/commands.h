@@ -35,5 +35,6 @@ Command addLookupCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addValidateCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
+Command addStressCommand(CLI::App& app);
 
 }  // namespace skybake::cli

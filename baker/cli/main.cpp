@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
       skybake::cli::addRenderCommand(app),
       skybake::cli::addValidateCommand(app),
       skybake::cli::addCompareCommand(app),
+      skybake::cli::addStressCommand(app),
   };
 
   try {

@@ -102,6 +102,11 @@ done
 grep -q '"seconds_per_ray"' "$work/c.json" || fail "compare --json lacks timings"
 expect_status 2 "--resolutions" -- compare "$small" --resolutions 0
 
+# stress: one quick case with JSON output; an unknown case is bad input.
+expect_status 0 "PASS" -- stress --quick --case mars --json "$work/stress.json"
+grep -q '"all_passed": true' "$work/stress.json" || fail "stress --json lacks all_passed"
+expect_status 2 "no such stress case" -- stress --case no_such_case
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"
   exit 1

@@ -334,6 +334,27 @@ TEST(Sky, BatchLookupsEqualScalarLookups) {
   }
 }
 
+// A ray exactly tangent to the ground only grazes it: the transmittance from
+// the camera to points past the tangent point keeps falling and never drops
+// to 0 (rounding of the direction toward each point once classified the same
+// ray as hitting the ground for some points and not for others).
+TEST(Sky, TransmittancePastTheGroundTangentPointIsNotZeroAndKeepsFalling) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  const double r = a.bottom_radius_m + 30000.0;
+  const double mu = -std::sqrt(1.0 - (a.bottom_radius_m / r) * (a.bottom_radius_m / r));
+  const glm::dvec3 camera(0.0, 0.0, r);
+  const glm::dvec3 view(std::sqrt(1.0 - mu * mu), 0.0, mu);
+  const double to_tangent_point = -r * mu;
+  Spectrum previous(1.0f);
+  for (int k = 1; k <= 32; ++k) {
+    const Spectrum t = sky.transmittance(camera, camera + view * (to_tangent_point * k / 16.0));
+    EXPECT_GT(t[0], 0.0f) << "point " << k << "/16 of the way to the tangent point";
+    EXPECT_LE(t[0], previous[0] * 1.0001f) << "point " << k;
+    previous = t;
+  }
+}
+
 TEST(Sky, TruncatedAndGarbageFilesAreRefused) {
   const fs::path dir = fs::temp_directory_path() / ("skybake_sky_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);

@@ -1,0 +1,77 @@
+// Invariant checkers for the stress matrix: each examines values (table
+// texels, orders, lookups) and records how many it checked, how many broke
+// the invariant and the worst offender. Every checker can fail: see
+// tests/baker/invariants_test.cpp.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "baker/bake.h"
+#include "data_formats/spectrum.h"
+
+namespace skybake {
+
+struct InvariantResult {
+  InvariantResult() = default;
+  explicit InvariantResult(std::string invariant_name) : name(std::move(invariant_name)) {}
+
+  std::string name;
+  long long checked = 0;
+  long long failed = 0;
+  // How far the worst offender lies outside the invariant (in the units the
+  // checker states; infinity for a NaN or an infinity), and where it is.
+  double worst_excess = 0.0;
+  std::string worst;
+
+  bool passed() const { return failed == 0; }
+  void pass() { ++checked; }
+  void fail(double excess, const std::string& where);
+};
+
+// Transmittance may rise along a ray by this relative amount without failing:
+// it is exp(-(tau(a) - tau(b))) of two interpolated float optical depths, and
+// a depth of a few hundred (the thickest stress case) carries float rounding
+// of ~1e-5 in the difference.
+inline constexpr double kTransmittanceRiseTolerance = 1e-4;
+
+// A view or sun direction change of this size (rad) is "small" for the
+// continuity checks: well below a texel of any table at the stress sizes
+// (the finest axis, mu near the horizon, is ~1e-3 rad per texel).
+inline constexpr double kContinuityStep_rad = 1e-4;
+// The largest relative change allowed for that step. Interpolation is linear
+// between texels, so a 1e-4 rad step moves at most ~1/10 of a texel; a change
+// above 5 % means a jump, not a slope.
+inline constexpr double kContinuityMaxRelativeChange = 0.05;
+// Relative changes are taken against max(|a|, |b|, this share of the case's
+// largest lookup). Near a zero the relative slope of a smooth quantity is
+// unbounded: the ground seen where the sun is setting there (the disk's
+// visible fraction times a vanishing cosine) changes by ~7 % per 1e-4 rad at
+// 1e-3 of the brightest value. Compared against 1 % of the brightest value, a
+// jump still fails once it exceeds 5e-4 of it.
+inline constexpr double kContinuityFloorShare = 1e-2;
+
+// Every lane in [0, channels) finite and >= 0. `table` names the table in the
+// worst-offender text; texels are indexed as stored.
+InvariantResult checkFiniteNonNegativeTexels(const std::string& name, const std::vector<Spectrum>& texels,
+                                             int channels);
+
+// Each order's mean radiance below the previous one's, from order 3 on
+// (order 2 may exceed order 1 where single scattering is weak); two orders
+// that are both 0 (no scattering at all) pass.
+InvariantResult checkOrdersDecrease(const std::vector<OrderContribution>& orders, int channels);
+
+// Single values, accumulated into `result`; `where` describes the lookup.
+void checkFiniteNonNegative(InvariantResult& result, const Spectrum& value, int channels, const std::string& where);
+void checkUnitInterval(InvariantResult& result, const Spectrum& value, int channels, const std::string& where);
+// Transmittance from a camera to points at increasing distance along one ray
+// must not increase (beyond kTransmittanceRiseTolerance).
+void checkNonIncreasing(InvariantResult& result, const std::vector<Spectrum>& along_ray, int channels,
+                        const std::string& where);
+// Two lookups kContinuityStep_rad apart: relative change at most
+// kContinuityMaxRelativeChange, relative to max(|a|, |b|, floor).
+void checkContinuous(InvariantResult& result, const Spectrum& a, const Spectrum& b, double floor, int channels,
+                     const std::string& where);
+
+}  // namespace skybake

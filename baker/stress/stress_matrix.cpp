@@ -1,0 +1,183 @@
+#include "baker/stress/stress_matrix.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "baker/stress/lookup_invariants.h"
+#include "data_formats/error.h"
+#include "runtime/sky.h"
+
+namespace skybake {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A refusal is clear when it has the "<source>: <key> = <value>: <reason>"
+// shape of every input error.
+bool refusalIsClear(const std::string& message) {
+  const size_t equals = message.find(" = ");
+  return equals != std::string::npos && message.find(": ", equals) != std::string::npos;
+}
+
+void tableRange(const Texture4D& table, int channels, double& lo, double& hi) {
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  for (const Spectrum& t : table.texels) {
+    for (int c = 0; c < channels; ++c) {
+      lo = std::min(lo, double(t[c]));
+      hi = std::max(hi, double(t[c]));
+    }
+  }
+}
+
+std::string ordersText(const StressRow& row) {
+  if (!row.refused.empty()) return "-";
+  if (!row.automatic_orders) return fmt::format("{}", row.orders_used);
+  return fmt::format("{} auto{}", row.orders_used, row.converged ? "" : " (cap)");
+}
+
+}  // namespace
+
+bool StressRow::isKnownFailure(const InvariantResult& invariant) const {
+  return std::find(known_failures.begin(), known_failures.end(), invariant.name) != known_failures.end();
+}
+
+bool StressRow::passed() const {
+  if (!refused.empty()) return refusalIsClear(refused);
+  return std::all_of(invariants.begin(), invariants.end(),
+                     [&](const InvariantResult& r) { return r.passed() || isKnownFailure(r); });
+}
+
+StressRow runStressCase(const StressCase& stress_case, int threads) {
+  StressRow row;
+  row.name = stress_case.name;
+  row.description = stress_case.description;
+  row.known_failures = stress_case.known_failures;
+  row.known_failure_reason = stress_case.known_failure_reason;
+  const BakeConfig& config = stress_case.config;
+  try {
+    validateConfig(config, stress_case.name);
+  } catch (const Error& e) {
+    row.refused = e.what();
+    return row;
+  }
+
+  const auto bake_start = std::chrono::steady_clock::now();
+  SilentProgress silent;
+  BakeOutput bake = bakeAtmosphere(config, threads, silent);
+  row.bake_seconds = secondsSince(bake_start);
+
+  const auto check_start = std::chrono::steady_clock::now();
+  const int channels = config.atmosphere.channelCount();
+  row.orders_used = bake.file.orders_computed;
+  row.automatic_orders = bake.report.orders_decision.automatic;
+  row.converged = bake.report.orders_decision.converged;
+  tableRange(bake.file.tables.scattering, channels, row.scattering_min, row.scattering_max);
+
+  const BakeTables& t = bake.file.tables;
+  // Optical depth >= 0 is transmittance <= 1; finite is transmittance > 0 or
+  // exactly 0 through the ground.
+  row.invariants.push_back(checkFiniteNonNegativeTexels("transmittance table (optical depth finite >= 0)",
+                                                        t.transmittance.texels, channels));
+  row.invariants.push_back(checkFiniteNonNegativeTexels("scattering table finite >= 0", t.scattering.texels, channels));
+  row.invariants.push_back(checkFiniteNonNegativeTexels("single_mie table finite >= 0", t.single_mie.texels, channels));
+  row.invariants.push_back(checkFiniteNonNegativeTexels("irradiance table finite >= 0", t.irradiance.texels, channels));
+  row.invariants.push_back(checkFiniteNonNegativeTexels("multiple_density table finite >= 0",
+                                                        t.multiple_density.texels, channels));
+  row.invariants.push_back(checkOrdersDecrease(bake.report.orders, channels));
+
+  const Sky sky(std::move(bake.file));
+  LookupInvariants lookups = checkLookupInvariants(sky);
+  row.lookups = lookups.lookups;
+  row.lookup_min = lookups.min_radiance;
+  row.lookup_max = lookups.max_radiance;
+  for (InvariantResult& r : lookups.invariants) row.invariants.push_back(std::move(r));
+  row.check_seconds = secondsSince(check_start);
+  return row;
+}
+
+std::string stressTable(const std::vector<StressRow>& rows) {
+  std::string text = fmt::format("{:<16} {:>10} {:>21} {:>21} {:>7} {:>7} {}\n", "case", "orders",
+                                 "scattering min..max", "lookup min..max", "bake s", "check s", "result");
+  for (const StressRow& row : rows) {
+    if (!row.refused.empty()) {
+      text += fmt::format("{:<16} refused: {} -> {}\n", row.name, row.refused, row.passed() ? "PASS" : "FAIL (unclear message)");
+      continue;
+    }
+    int failed = 0, known = 0;
+    for (const InvariantResult& r : row.invariants) {
+      if (!r.passed()) (row.isKnownFailure(r) ? known : failed) += 1;
+    }
+    const std::string result = failed > 0  ? fmt::format("FAIL {}/{}", failed, row.invariants.size())
+                               : known > 0 ? "KNOWN FAIL"
+                                           : "PASS";
+    text += fmt::format("{:<16} {:>10} {:>10.3g}..{:<10.3g} {:>10.3g}..{:<10.3g} {:>7.2f} {:>7.2f} {}\n", row.name,
+                        ordersText(row), row.scattering_min, row.scattering_max, row.lookup_min, row.lookup_max,
+                        row.bake_seconds, row.check_seconds, result);
+    for (const InvariantResult& r : row.invariants) {
+      if (r.passed() && row.isKnownFailure(r)) {
+        text += fmt::format("    known failure now passes: {} (remove it from stress_cases.cpp)\n", r.name);
+      }
+      if (r.passed()) continue;
+      text += fmt::format("    {} {}: {} of {} values; worst: {}\n", row.isKnownFailure(r) ? "KNOWN FAIL" : "FAIL",
+                          r.name, r.failed, r.checked, r.worst);
+      if (row.isKnownFailure(r)) text += fmt::format("      known because: {}\n", row.known_failure_reason);
+    }
+  }
+  return text;
+}
+
+nlohmann::ordered_json stressJson(const std::vector<StressRow>& rows) {
+  nlohmann::ordered_json cases = nlohmann::ordered_json::array();
+  for (const StressRow& row : rows) {
+    nlohmann::ordered_json c;
+    c["case"] = row.name;
+    c["description"] = row.description;
+    c["passed"] = row.passed();
+    if (!row.refused.empty()) {
+      c["refused"] = row.refused;
+      cases.push_back(c);
+      continue;
+    }
+    c["orders_used"] = row.orders_used;
+    c["automatic_orders"] = row.automatic_orders;
+    if (row.automatic_orders) c["converged"] = row.converged;
+    c["scattering_min"] = row.scattering_min;
+    c["scattering_max"] = row.scattering_max;
+    c["lookup_radiance_min"] = row.lookup_min;
+    c["lookup_radiance_max"] = row.lookup_max;
+    c["lookups"] = row.lookups;
+    c["bake_seconds"] = row.bake_seconds;
+    c["check_seconds"] = row.check_seconds;
+    nlohmann::ordered_json invariants = nlohmann::ordered_json::array();
+    for (const InvariantResult& r : row.invariants) {
+      nlohmann::ordered_json i;
+      i["invariant"] = r.name;
+      i["passed"] = r.passed();
+      if (row.isKnownFailure(r)) i["known_failure"] = row.known_failure_reason;
+      i["checked"] = r.checked;
+      i["failed"] = r.failed;
+      if (!r.passed()) {
+        // JSON has no infinity: a NaN/infinite offender is written as null.
+        if (std::isfinite(r.worst_excess)) i["worst_excess"] = r.worst_excess;
+        else i["worst_excess"] = nullptr;
+        i["worst"] = r.worst;
+      }
+      invariants.push_back(i);
+    }
+    c["invariants"] = invariants;
+    cases.push_back(c);
+  }
+  nlohmann::ordered_json out;
+  out["all_passed"] = std::all_of(rows.begin(), rows.end(), [](const StressRow& r) { return r.passed(); });
+  out["cases"] = cases;
+  return out;
+}
+
+}  // namespace skybake

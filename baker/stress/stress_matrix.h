@@ -1,0 +1,45 @@
+// Runs the stress matrix: each case is validated, baked at reduced sizes and
+// checked against every table and lookup invariant.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "baker/stress/invariants.h"
+#include "baker/stress/stress_cases.h"
+
+namespace skybake {
+
+struct StressRow {
+  std::string name;
+  std::string description;
+  // Non-empty when validateConfig refused the case: the message. A refusal
+  // passes only if the message names the key and the reason (see passed()).
+  std::string refused;
+  int orders_used = 0;
+  bool automatic_orders = false;
+  bool converged = false;  // automatic orders only
+  double scattering_min = 0.0, scattering_max = 0.0;  // scattering table, W m^-2 nm^-1
+  double lookup_min = 0.0, lookup_max = 0.0;          // radiance lookups, W m^-2 sr^-1 nm^-1
+  long long lookups = 0;
+  std::vector<InvariantResult> invariants;
+  std::vector<std::string> known_failures;  // from the case: failures that do not fail the run
+  std::string known_failure_reason;
+  double bake_seconds = 0.0;
+  double check_seconds = 0.0;
+
+  bool isKnownFailure(const InvariantResult& invariant) const;
+  // Every invariant passed or is a known failure (a refusal: with a clear message).
+  bool passed() const;
+};
+
+StressRow runStressCase(const StressCase& stress_case, int threads);
+
+// One line per case; invariants that failed are listed under their case with
+// the worst offender.
+std::string stressTable(const std::vector<StressRow>& rows);
+nlohmann::ordered_json stressJson(const std::vector<StressRow>& rows);
+
+}  // namespace skybake
