@@ -113,4 +113,40 @@ void checkContinuous(InvariantResult& result, const Spectrum& a, const Spectrum&
   result.pass();
 }
 
+InvariantResult checkEnergyBudget(const EnergyBudget& budget, int channels, double tolerance) {
+  InvariantResult result{kEnergyBudgetCloses};
+  const SpectrumD imbalance = budget.relativeImbalance();
+  const SpectrumD out = budget.powerOut_W_per_nm();
+  for (int c = 0; c < channels; ++c) {
+    const double off = std::abs(imbalance[c]);
+    if (off <= tolerance) {
+      result.pass();
+    } else {
+      result.fail(excessOf(off, off - tolerance),
+                  fmt::format("ch{}: in {:.4g} W/nm, out {:.4g}, absorbed {:.4g}: (in - out - absorbed) / in = "
+                              "{:+.2f} % (tolerance {:.1f} %)",
+                              c, budget.power_in_W_per_nm[c], out[c], budget.ground_absorbed_W_per_nm[c],
+                              100.0 * imbalance[c], 100.0 * tolerance));
+    }
+  }
+  return result;
+}
+
+InvariantResult checkEnergyBudgetQuadrature(const EnergyBudget& budget, const EnergyBudget& doubled, int channels) {
+  InvariantResult result{kEnergyBudgetQuadratureConverged};
+  const SpectrumD a = budget.relativeImbalance();
+  const SpectrumD b = doubled.relativeImbalance();
+  for (int c = 0; c < channels; ++c) {
+    const double change = std::abs(a[c] - b[c]);
+    if (change <= kEnergyBudgetQuadratureTolerance) {
+      result.pass();
+    } else {
+      result.fail(excessOf(change, change - kEnergyBudgetQuadratureTolerance),
+                  fmt::format("ch{}: imbalance {:+.3f} % with the default nodes, {:+.3f} % with twice as many", c,
+                              100.0 * a[c], 100.0 * b[c]));
+    }
+  }
+  return result;
+}
+
 }  // namespace skybake

@@ -1,7 +1,8 @@
 // The stress matrix's invariant checkers must be able to fail: a NaN, an
 // infinity or a negative texel, a transmittance outside [0, 1] or rising
-// along a ray, orders that grow and a jump between neighbouring lookups are
-// each reported, with the worst offender named.
+// along a ray, orders that grow, a jump between neighbouring lookups and an
+// energy budget that does not close are each reported, with the worst
+// offender named.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -116,6 +117,33 @@ TEST(Invariants, FiniteNonNegativeValuesRejectNaNAndNegatives) {
   checkFiniteNonNegative(r, Spectrum(0.0f, -2.0f, 3.0f, 0.0f), kChannels, "negative");
   checkFiniteNonNegative(r, Spectrum(std::numeric_limits<float>::infinity()), kChannels, "inf");
   EXPECT_EQ(r.failed, 2);
+}
+
+EnergyBudget budgetWithOut(double diffuse_share) {
+  EnergyBudget b;
+  b.power_in_W_per_nm = SpectrumD(100.0, 100.0, 100.0, 0.0);
+  b.diffuse_out_W_per_nm = SpectrumD(100.0 * diffuse_share, 99.0, 60.0, 0.0);
+  b.direct_out_W_per_nm = SpectrumD(0.0, 0.0, 0.0, 0.0);
+  b.ground_absorbed_W_per_nm = SpectrumD(0.0, 0.0, 40.0, 0.0);
+  return b;
+}
+
+TEST(Invariants, AnEnergyBudgetThatDoesNotCloseFails) {
+  EXPECT_TRUE(checkEnergyBudget(budgetWithOut(1.0), kChannels, kEnergyBudgetTolerance).passed());
+  // 5 % of the light made (out > in) or lost both fail, the worst named.
+  InvariantResult r = checkEnergyBudget(budgetWithOut(1.05), kChannels, kEnergyBudgetTolerance);
+  EXPECT_EQ(r.failed, 1);
+  EXPECT_NE(r.worst.find("ch0"), std::string::npos) << r.worst;
+  EXPECT_NEAR(r.worst_excess, 0.05 - kEnergyBudgetTolerance, 1e-12);
+  EXPECT_FALSE(checkEnergyBudget(budgetWithOut(0.95), kChannels, kEnergyBudgetTolerance).passed());
+  EXPECT_FALSE(checkEnergyBudget(budgetWithOut(std::nan("")), kChannels, kEnergyBudgetTolerance).passed());
+}
+
+TEST(Invariants, AnEnergyBudgetThatMovesWithTheQuadratureFails) {
+  EXPECT_TRUE(checkEnergyBudgetQuadrature(budgetWithOut(1.0), budgetWithOut(1.0005), kChannels).passed());
+  const InvariantResult r = checkEnergyBudgetQuadrature(budgetWithOut(1.0), budgetWithOut(1.01), kChannels);
+  EXPECT_FALSE(r.passed());
+  EXPECT_NE(r.worst.find("ch0"), std::string::npos) << r.worst;
 }
 
 // A row fails on an unexpected failure, passes on a listed known failure, and
