@@ -35,7 +35,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -43,6 +42,7 @@
 
 #include "baker/gauss_legendre.h"
 #include "data_formats/ray_sphere.h"
+#include "data_formats/texture_mapping.h"
 #include "runtime/phase_functions.h"
 
 namespace skybake {
@@ -72,8 +72,10 @@ struct Integral {
 
 // Sorted edges of panels over [lo, hi] with the given interior edges (those
 // outside (lo, hi) are dropped).
-std::vector<double> panelEdges(double lo, double hi, std::initializer_list<double> interior) {
+std::vector<double> panelEdges(double lo, double hi, std::vector<double> interior,
+                               const std::vector<double>& more_interior = {}) {
   std::vector<double> edges{lo, hi};
+  interior.insert(interior.end(), more_interior.begin(), more_interior.end());
   for (double x : interior) {
     if (x > lo && x < hi) edges.push_back(x);
   }
@@ -190,6 +192,21 @@ EnergyBudgetLookups energyBudgetLookups(const Sky& sky) {
   lookups.ground_irradiance = [&sky](const glm::dvec3& ground_point, const glm::dvec3& sun) {
     return sky.irradiance(ground_point, glm::normalize(ground_point), sun);
   };
+  // Radiance from the top: the scattering tables' mu_s texels. On the
+  // ground: the irradiance table's mu_s texels (sky) and the transmittance
+  // table's mu texels of its ground row (sun).
+  const AtmosphereDomain& domain = sky.sampler().domain();
+  const TextureSizes& sizes = sky.config().sizes;
+  for (int i = 0; i < sizes.scattering_mu_s; ++i) {
+    lookups.radiance_kinks_mu_s.push_back(muSFromTexel(domain, sizes.scattering_mu_s, i));
+  }
+  for (int i = 0; i < sizes.irradiance_mu_s; ++i) {
+    lookups.ground_irradiance_kinks_mu_s.push_back(muSFromTexel(domain, sizes.irradiance_mu_s, i));
+  }
+  for (int i = 0; i < sizes.transmittance_mu; ++i) {
+    lookups.ground_irradiance_kinks_mu_s.push_back(
+        transmittanceTexelConfig(domain, sizes.transmittance_mu, sizes.transmittance_r, i, 0).mu);
+  }
   return lookups;
 }
 
@@ -214,10 +231,10 @@ EnergyBudget computeEnergyBudget(const EnergyBudgetLookups& sky, const EnergyBud
   // Diffuse out. Panel edges where the flux at the top changes character:
   // the sun crossing the top's own ground horizon (h), the zenith plane, and
   // the ground's terminator entering the part of the ground seen from the
-  // top (-h).
+  // top (-h); and where the lookups change slope.
   const double h = groundHorizonCosine(bottom, top);
   auto flux = [&](double mu_s) { return upwardFluxAtTop(sky, mu_s, zenith_rule, azimuth_rule); };
-  const Integral day = integrateOnPanels(sun_rule, panelEdges(mu_s_min, 1.0, {h, 0.0, -h}), flux);
+  const Integral day = integrateOnPanels(sun_rule, panelEdges(mu_s_min, 1.0, {h, 0.0, -h}, sky.radiance_kinks_mu_s), flux);
   const NodeValue at_min = flux(mu_s_min);
   const NodeValue above_min = flux(mu_s_min + kBelowDomainSlopeStep);
   const BelowDomain night = integralBelowDomain(at_min.value, above_min.value, mu_s_min);
@@ -244,13 +261,13 @@ EnergyBudget computeEnergyBudget(const EnergyBudgetLookups& sky, const EnergyBud
   // sky's part comes from the irradiance table, clamped below mu_s_min.
   const glm::dvec3 ground_point(0.0, 0.0, bottom);
   const double ramp = a.sun_angular_radius_rad;  // the disk's half-size in mu_s at the ground
-  const Integral sun_part = integrateOnPanels(sun_rule, panelEdges(-1.0, 1.0, {-ramp, 0.0, ramp}), [&](double mu_s) {
+  const Integral sun_part = integrateOnPanels(sun_rule, panelEdges(-1.0, 1.0, {-ramp, 0.0, ramp}, sky.ground_irradiance_kinks_mu_s), [&](double mu_s) {
     return NodeValue{toSpectrumD(sky.ground_irradiance(ground_point, sunDirection(mu_s)).sun), 1};
   });
   auto skyIrradiance = [&](double mu_s) {
     return NodeValue{toSpectrumD(sky.ground_irradiance(ground_point, sunDirection(mu_s)).sky), 1};
   };
-  const Integral sky_part = integrateOnPanels(sun_rule, panelEdges(mu_s_min, 1.0, {-ramp, 0.0, ramp}), skyIrradiance);
+  const Integral sky_part = integrateOnPanels(sun_rule, panelEdges(mu_s_min, 1.0, {-ramp, 0.0, ramp}, sky.ground_irradiance_kinks_mu_s), skyIrradiance);
   const BelowDomain sky_night = integralBelowDomain(skyIrradiance(mu_s_min).value,
                                                     skyIrradiance(mu_s_min + kBelowDomainSlopeStep).value, mu_s_min);
   const SpectrumD absorptance = SpectrumD(1.0) - toSpectrumD(a.ground_albedo);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -36,6 +37,12 @@ struct EnergyBudgetLookups {
   std::function<SpectrumD(const glm::dvec3& camera, const glm::dvec3& view)> transmittance;
   // Sun and sky irradiance on a horizontal surface at a point on the ground.
   std::function<SunAndSkyIrradiance(const glm::dvec3& ground_point, const glm::dvec3& sun)> ground_irradiance;
+  // Sun zenith cosines where the lookups change slope (texel centres of the
+  // tables, between which they interpolate linearly): panel edges of the
+  // integrals over the sun angle, so that each panel holds a smooth piece.
+  // Of received_radiance from the top, and of ground_irradiance.
+  std::vector<double> radiance_kinks_mu_s;
+  std::vector<double> ground_irradiance_kinks_mu_s;
 };
 
 // The bake's lookups, through `sky` (which must outlive the result).
@@ -44,7 +51,7 @@ EnergyBudgetLookups energyBudgetLookups(const Sky& sky);
 // Gauss-Legendre nodes per panel for each integral of the budget; doubled()
 // doubles every count, to show that the budget has converged.
 struct EnergyBudgetQuadrature {
-  int sun_zenith_nodes = 8;     // per panel of sun zenith cosine (up to 5 panels)
+  int sun_zenith_nodes = 4;     // per panel of sun zenith cosine (a panel between neighbouring texels)
   int view_zenith_nodes = 12;   // per half of the downward view directions (ground rays, sky rays)
   int view_azimuth_nodes = 12;  // over azimuth [0, pi] from the sun's vertical plane (the flux is symmetric)
   int impact_nodes = 6;         // per panel of the unscattered beam's impact parameter (8 panels)

@@ -59,7 +59,7 @@ inline constexpr double kContinuityFloorShare = 1e-2;
 // the last (tail estimate) by < 1e-4, the night side beyond the tables' sun
 // range contributes < 4e-5 even taken at the clamped tables' upper bound, and
 // the table-free reference solver's budget closes to 0.2 %. What remains is
-// the bake's table interpolation: 1.25 % at the stress matrix's full sizes
+// the bake's table interpolation: 1.16 % at the stress matrix's full sizes
 // (440 nm, ground albedo 1), most of it from the mu_s axis
 // (docs/STABILITY.md). A defect that loses or creates light in a stage, or a
 // term missing from the budget, is several percent.

@@ -134,7 +134,7 @@ TEST(EnergyBudget, ClosesForTheReferenceSolver) {
 // scattering table's mu_s and r axes at 16 texels: at the quick sizes' 8,
 // linear interpolation in mu_s alone makes 5 % of light at 440 nm
 // (docs/STABILITY.md). The tolerance is kEnergyBudgetTolerance; measured
-// here: -0.41, -0.57, -0.36 %. Quadrature contributes < 1e-4 (doubling the
+// here: -0.38, -0.52, -0.26 %. Quadrature contributes < 1e-4 (doubling the
 // nodes), the 6 orders with the tail estimate differ from 12 computed orders
 // by < 4e-4, the night side beyond the tables < 4e-5.
 TEST(EnergyBudget, ClosesForAConservativeAtmosphereAndAWhiteGround) {
