@@ -21,6 +21,10 @@ struct StressCase {
   // reported so the entry can be removed.
   std::vector<std::string> known_failures;
   std::string known_failure_reason;
+  // Check the energy budget (baker/stress/energy_budget.h): only meaningful
+  // where nothing absorbs in the air, so that what comes in must leave or be
+  // absorbed by the ground.
+  bool check_energy_budget = false;
 };
 
 // quick: the sizes of a unit-test bake (a few seconds for the whole matrix);

@@ -36,6 +36,33 @@ void tableRange(const Texture4D& table, int channels, double& lo, double& hi) {
   }
 }
 
+// Lane c of a spectrum as a share of the power in, for the table.
+double shareOfPowerIn(const EnergyBudget& b, const SpectrumD& power, int c) {
+  return b.power_in_W_per_nm[c] > 0.0 ? power[c] / b.power_in_W_per_nm[c] : 0.0;
+}
+
+// Under the case, one line per channel: where the power goes as shares of
+// the power in, the imbalance (with the doubled quadrature beside it) and the
+// night side's share beyond the tables' sun range (extrapolated, and at the
+// clamped tables' upper bound).
+std::string energyBudgetText(const StressEnergyBudget& e) {
+  const EnergyBudget& b = e.budget;
+  const SpectrumD imbalance = b.relativeImbalance();
+  const SpectrumD doubled = e.doubled_quadrature.relativeImbalance();
+  std::string text = "    energy budget, shares of the power in: diffuse out + direct out + ground absorbed\n";
+  for (size_t c = 0; c < e.wavelengths_nm.size(); ++c) {
+    const int i = static_cast<int>(c);
+    text += fmt::format(
+        "      {:g} nm: {:.4f} + {:.4f} + {:.4f}; imbalance {:+.2f} % (doubled quadrature {:+.2f} %); night side "
+        "{:.1e} (clamped {:.1e})\n",
+        e.wavelengths_nm[c], shareOfPowerIn(b, b.diffuse_out_W_per_nm, i), shareOfPowerIn(b, b.direct_out_W_per_nm, i),
+        shareOfPowerIn(b, b.ground_absorbed_W_per_nm, i), 100.0 * imbalance[i], 100.0 * doubled[i],
+        shareOfPowerIn(b, b.diffuse_out_below_domain_W_per_nm, i),
+        shareOfPowerIn(b, b.diffuse_out_below_domain_clamped_W_per_nm, i));
+  }
+  return text;
+}
+
 std::string ordersText(const StressRow& row) {
   if (!row.refused.empty()) return "-";
   if (!row.automatic_orders) return fmt::format("{}", row.orders_used);
@@ -98,6 +125,14 @@ StressRow runStressCase(const StressCase& stress_case, int threads) {
   row.lookup_min = lookups.min_radiance;
   row.lookup_max = lookups.max_radiance;
   for (InvariantResult& r : lookups.invariants) row.invariants.push_back(std::move(r));
+  if (stress_case.check_energy_budget) {
+    const EnergyBudgetQuadrature quadrature;
+    StressEnergyBudget e{config.atmosphere.wavelengths_nm, computeEnergyBudget(sky, quadrature),
+                         computeEnergyBudget(sky, quadrature.doubled())};
+    row.invariants.push_back(checkEnergyBudget(e.budget, channels, kEnergyBudgetTolerance));
+    row.invariants.push_back(checkEnergyBudgetQuadrature(e.budget, e.doubled_quadrature, channels));
+    row.energy_budget = std::move(e);
+  }
   row.check_seconds = secondsSince(check_start);
   return row;
 }
@@ -120,6 +155,7 @@ std::string stressTable(const std::vector<StressRow>& rows) {
     text += fmt::format("{:<16} {:>10} {:>10.3g}..{:<10.3g} {:>10.3g}..{:<10.3g} {:>7.2f} {:>7.2f} {}\n", row.name,
                         ordersText(row), row.scattering_min, row.scattering_max, row.lookup_min, row.lookup_max,
                         row.bake_seconds, row.check_seconds, result);
+    if (row.energy_budget) text += energyBudgetText(*row.energy_budget);
     for (const InvariantResult& r : row.invariants) {
       if (r.passed() && row.isKnownFailure(r)) {
         text += fmt::format("    known failure now passes: {} (remove it from stress_cases.cpp)\n", r.name);
@@ -132,6 +168,34 @@ std::string stressTable(const std::vector<StressRow>& rows) {
   }
   return text;
 }
+
+namespace {
+
+nlohmann::ordered_json channelsJson(const SpectrumD& values, size_t channels) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (size_t c = 0; c < channels; ++c) out.push_back(values[static_cast<int>(c)]);
+  return out;
+}
+
+nlohmann::ordered_json energyBudgetJson(const StressEnergyBudget& e) {
+  const EnergyBudget& b = e.budget;
+  const size_t n = e.wavelengths_nm.size();
+  nlohmann::ordered_json j;
+  j["wavelengths_nm"] = e.wavelengths_nm;
+  j["power_in_W_per_nm"] = channelsJson(b.power_in_W_per_nm, n);
+  j["diffuse_out_W_per_nm"] = channelsJson(b.diffuse_out_W_per_nm, n);
+  j["diffuse_out_below_domain_W_per_nm"] = channelsJson(b.diffuse_out_below_domain_W_per_nm, n);
+  j["diffuse_out_below_domain_clamped_W_per_nm"] = channelsJson(b.diffuse_out_below_domain_clamped_W_per_nm, n);
+  j["direct_out_W_per_nm"] = channelsJson(b.direct_out_W_per_nm, n);
+  j["ground_absorbed_W_per_nm"] = channelsJson(b.ground_absorbed_W_per_nm, n);
+  j["relative_imbalance"] = channelsJson(b.relativeImbalance(), n);
+  j["relative_imbalance_doubled_quadrature"] = channelsJson(e.doubled_quadrature.relativeImbalance(), n);
+  j["tolerance"] = kEnergyBudgetTolerance;
+  j["lookups"] = b.lookups + e.doubled_quadrature.lookups;
+  return j;
+}
+
+}  // namespace
 
 nlohmann::ordered_json stressJson(const std::vector<StressRow>& rows) {
   nlohmann::ordered_json cases = nlohmann::ordered_json::array();
@@ -172,6 +236,7 @@ nlohmann::ordered_json stressJson(const std::vector<StressRow>& rows) {
       invariants.push_back(i);
     }
     c["invariants"] = invariants;
+    if (row.energy_budget) c["energy_budget"] = energyBudgetJson(*row.energy_budget);
     cases.push_back(c);
   }
   nlohmann::ordered_json out;

@@ -2,15 +2,25 @@
 // checked against every table and lookup invariant.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "baker/stress/energy_budget.h"
 #include "baker/stress/invariants.h"
 #include "baker/stress/stress_cases.h"
 
 namespace skybake {
+
+// The energy budget of a case, with the default quadrature and with every
+// node count doubled (the difference shows the quadrature has converged).
+struct StressEnergyBudget {
+  std::vector<double> wavelengths_nm;  // the channels, in order
+  EnergyBudget budget;
+  EnergyBudget doubled_quadrature;
+};
 
 struct StressRow {
   std::string name;
@@ -25,6 +35,7 @@ struct StressRow {
   double lookup_min = 0.0, lookup_max = 0.0;          // radiance lookups, W m^-2 sr^-1 nm^-1
   long long lookups = 0;
   std::vector<InvariantResult> invariants;
+  std::optional<StressEnergyBudget> energy_budget;  // cases with check_energy_budget only
   std::vector<std::string> known_failures;  // from the case: failures that do not fail the run
   std::string known_failure_reason;
   double bake_seconds = 0.0;
