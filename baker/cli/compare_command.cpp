@@ -11,6 +11,7 @@
 
 #include "baker/bake.h"
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/comparators/flat_closed_form.h"
 #include "baker/comparators/hillaire_multiple_scattering.h"
@@ -58,6 +59,11 @@ class BakedSky final : public SkyMethod {
   double seconds_;
   Sky sky_;
 };
+
+// --resolutions: below 1/20 of a table there is nothing left to compare;
+// above 8x the bake of a default-size config needs tens of GiB and hours.
+constexpr double kMinResolutionFactor = 0.05;
+constexpr double kMaxResolutionFactor = 8.0;
 
 int scaled(int size, double factor, int minimum, bool even) {
   int s = std::max(minimum, static_cast<int>(std::lround(size * factor)));
@@ -176,12 +182,13 @@ Command addCompareCommand(CLI::App& app) {
       "compare", "Error against the reference and cost of the bake at several resolutions and of the simpler methods.");
   cmd->add_option("config", o->config_path, "Atmosphere config (default: the built-in Earth).");
   cmd->add_option("--queries", o->queries, "standard, quick or a CSV (see validate).")->capture_default_str();
-  cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
-      ->check(CLI::Range(1, 100000000))
-      ->capture_default_str();
-  cmd->add_option("--resolutions", o->resolutions, "Bake at these multiples of the configured table sizes.")
-      ->delimiter(',')
-      ->check(CLI::Range(0.05, 8.0));
+  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
+                     ->capture_default_str(),
+                 1, kMaxReferencePaths);
+  requireFiniteIn(cmd->add_option("--resolutions", o->resolutions,
+                                  "Bake at these multiples of the configured table sizes.")
+                      ->delimiter(','),
+                  kMinResolutionFactor, kMaxResolutionFactor);
   cmd->add_option("--json", o->json_path, "Also write the table as JSON here.");
   cmd->add_option("--cache-dir", o->cache_dir, "Reference cache directory (see validate).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/stress/stress_matrix.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
@@ -77,7 +78,7 @@ Command addStressCommand(CLI::App& app) {
   cmd->add_flag("--quick", o->quick, "Smallest tables and a lower order cap (seconds, for CTest).");
   cmd->add_option("--json", o->json_path, "Also write the results as JSON.");
   cmd->add_option("--case", o->case_name, "Run only this case.");
-  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores).")->check(CLI::Range(1, 4096));
+  addThreadsOption(*cmd, o->threads);
   return {cmd, [o] { runStress(*o); }};
 }
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/report_sidecar.h"
 #include "baker/validation/validation.h"
@@ -106,16 +107,16 @@ Command addValidateCommand(CLI::App& app) {
                   "standard (docs/QUERIES.md), quick (a small subset) or a CSV with the columns of "
                   "'lookup radiance'.")
       ->capture_default_str();
-  cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
-      ->check(CLI::Range(1, 100000000))
-      ->capture_default_str();
+  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
+                     ->capture_default_str(),
+                 1, kMaxReferencePaths);
   cmd->add_option("--json", o->json_path, "Also write the report as JSON here.");
   cmd->add_option("--details", o->details_path, "Also write every query's bake and reference values (CSV).");
   cmd->add_option("--cache-dir", o->cache_dir,
                   "Reference cache directory (default $SKYBAKE_CACHE_DIR, $XDG_CACHE_HOME/skybake or "
                   "~/.cache/skybake).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
-  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores).")->check(CLI::Range(1, 4096));
+  addThreadsOption(*cmd, o->threads);
   return {cmd, [o] { runValidate(*o); }};
 }
 
