@@ -26,6 +26,25 @@ refused() {
   grep -qF -- "$fragment" "$work/stderr" || fail "skybake $*: stderr lacks '$fragment': $(cat "$work/stderr")"
 }
 
+# kept FILE FRAGMENT -- ARGS...: like refused, and FILE (which must exist)
+# is byte-identical afterwards and no temporary file is left beside it.
+kept() {
+  local file=$1 fragment=$2; shift 3
+  local before
+  before=$(sha256sum <"$file")
+  refused "$fragment" -- "$@"
+  [ "$(sha256sum <"$file")" = "$before" ] || fail "skybake $*: changed the existing $file"
+  if ls -A "$(dirname "$file")" | grep -q -- '\.tmp-'; then
+    fail "skybake $*: left a temporary file: $(ls -A "$(dirname "$file")" | grep -- '\.tmp-')"
+    rm -f "$(dirname "$file")"/.*.tmp-*
+  fi
+}
+
+# A small good bake and outputs of every kind to aim failing runs at.
+"$skybake" bake "$small" -o "$work/good.exr" --threads 2 --reproducible 2>"$work/stderr" \
+  || { echo "FAIL: the small bake failed: $(cat "$work/stderr")"; exit 1; }
+printf 'earlier output\n' >"$work/existing.csv"
+
 # --- Command-line values: every numeric option, with the option, the value
 # and the reason in the message. One shared check serves every option
 # (baker/cli/option_checks.h), so the full set of bad values goes through one
@@ -67,6 +86,42 @@ refused "--threads = nan: must be a whole number in [1, 4096]" -- stress --threa
 for v in 0 nan inf; do
   refused "--resolutions = $v: must be a finite number in [0.05, 8]" -- compare "$small" --resolutions "1,$v"
 done
+
+# --- Query CSVs (lookup radiance|irradiance, validate --queries): the file,
+# line and column, and the reason; an earlier output stays as it was.
+header='altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg'
+radiance() { kept "$work/existing.csv" "$1" -- lookup radiance "$work/good.exr" --queries "$work/q.csv" -o "$work/existing.csv"; }
+printf '' >"$work/q.csv"
+radiance "q.csv: no header row: the file is empty"
+printf '%s\n' "$header" >"$work/q.csv"
+radiance "q.csv: no query rows after the header (line 1)"
+kept "$work/existing.csv" "q.csv: no query rows after the header (line 1)" -- validate "$work/good.exr" --queries "$work/q.csv" --no-cache --json "$work/existing.csv"
+printf '# comment\naltitude_m,sun_zenith_deg,view_zenith_deg\n0,30,0\n' >"$work/q.csv"
+radiance "q.csv:2: missing column 'view_azimuth_deg' (the header has: altitude_m, sun_zenith_deg, view_zenith_deg)"
+printf '%s\n0,30,0,0\n0,thirty,0,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:3:2 (sun_zenith_deg): 'thirty' is not a finite number"
+printf '%s\n0,30,nan,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:3 (view_zenith_deg): 'nan' is not a finite number"
+kept "$work/existing.csv" "q.csv:2:3 (view_zenith_deg): 'nan' is not a finite number" -- validate "$work/good.exr" --queries "$work/q.csv" --no-cache --json "$work/existing.csv"
+printf '%s\n0,30,0,-inf\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:4 (view_azimuth_deg): '-inf' is not a finite number"
+printf '%s\n0,30,0,0\n0,30,,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:3:3 (view_zenith_deg): '' is not a finite number"
+printf '%s\n1e13,30,0,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:1 (altitude_m): 1e13 is out of range [-1e+12, 1e+12]"
+printf '%s\n0,30,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:4: 3 cells, the header (line 1) has 4 columns"
+printf '%s\n0,30,0,0,7\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:5: 5 cells, the header (line 1) has 4 columns"
+printf 'altitude_m,sun_zenith_deg,altitude_m\n' >"$work/q.csv"
+radiance "q.csv:1:3: column 'altitude_m' appears twice (also column 1)"
+{ printf '%s\n' "$header"; head -c 70000 /dev/zero | tr '\0' '0'; printf '\n'; } >"$work/q.csv"
+radiance "q.csv:2: line longer than 65536 bytes: not a query CSV"
+radiance_missing() { kept "$work/existing.csv" "$1" -- lookup radiance "$work/good.exr" --queries "$2" -o "$work/existing.csv"; }
+radiance_missing "no_such.csv: cannot open query file: No such file or directory" "$work/no_such.csv"
+radiance_missing "is a directory, not a query file" "$work"
+printf 'altitude_m,sun_zenith_deg\n0,190\n' >"$work/e.csv"
+kept "$work/existing.csv" "e.csv:2:2 (sun_zenith_deg): 190 is out of range [0, 180]" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/existing.csv"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"
