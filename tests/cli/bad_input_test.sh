@@ -44,6 +44,7 @@ kept() {
 "$skybake" bake "$small" -o "$work/good.exr" --threads 2 --reproducible 2>"$work/stderr" \
   || { echo "FAIL: the small bake failed: $(cat "$work/stderr")"; exit 1; }
 printf 'earlier output\n' >"$work/existing.csv"
+cp "$work/existing.csv" "$work/existing.png"
 
 # --- Command-line values: every numeric option, with the option, the value
 # and the reason in the message. One shared check serves every option
@@ -122,6 +123,42 @@ radiance_missing "no_such.csv: cannot open query file: No such file or directory
 radiance_missing "is a directory, not a query file" "$work"
 printf 'altitude_m,sun_zenith_deg\n0,190\n' >"$work/e.csv"
 kept "$work/existing.csv" "e.csv:2:2 (sun_zenith_deg): 190 is out of range [0, 180]" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/existing.csv"
+
+# --- Bake files given as input (info, lookup, render, validate): truncated,
+# bit-flipped, a format version this skybake does not read, a part missing.
+# Each message names the file; the reader's unit tests
+# (tests/data_formats/bake_file_corrupt_test.cpp) cover the cases in depth.
+corrupt="python3 $source_dir/tests/cli/corrupt_bake.py"
+bytes=$(stat -c %s "$work/good.exr")
+head -c 1000 "$work/good.exr" >"$work/cut_header.exr"
+head -c $((bytes / 2)) "$work/good.exr" >"$work/cut_pixels.exr"
+$corrupt "$work/good.exr" "$work/v99.exr" version 99
+$corrupt "$work/good.exr" "$work/no_part.exr" rename transmittance transmittancX
+$corrupt "$work/good.exr" "$work/flipped.exr" flip 0.6
+printf 'altitude_m,sun_zenith_deg\n0,30\n' >"$work/e.csv"
+printf 'not an exr' >"$work/text.exr"
+lookup_e=(--queries "$work/e.csv" -o "$work/existing.csv")
+render_v=(--altitude-m 0 --sun-zenith-deg 30 -o "$work/existing.png")
+validate_q=(--queries quick --reference-samples 4 --no-cache --json "$work/existing.csv")
+refused "cut_header.exr: not a readable skybake bake file: OpenEXR header: " -- info "$work/cut_header.exr"
+kept "$work/existing.csv" "cut_header.exr: not a readable skybake bake file: OpenEXR header: " -- lookup irradiance "$work/cut_header.exr" "${lookup_e[@]}"
+refused "cut_pixels.exr: not a readable skybake bake file: " -- info "$work/cut_pixels.exr"
+kept "$work/existing.csv" "cut_pixels.exr: not a readable skybake bake file: " -- validate "$work/cut_pixels.exr" "${validate_q[@]}"
+for command in info "lookup irradiance" render validate; do
+  case $command in
+    info) extra=(); out=$work/existing.csv ;;
+    lookup*) extra=("${lookup_e[@]}"); out=$work/existing.csv ;;
+    render) extra=("${render_v[@]}"); out=$work/existing.png ;;
+    validate) extra=("${validate_q[@]}"); out=$work/existing.csv ;;
+  esac
+  # shellcheck disable=SC2086 # "lookup irradiance" is two words
+  kept "$out" "v99.exr: format version 99 is not understood by this skybake (it reads version 1)" -- $command "$work/v99.exr" "${extra[@]}"
+  kept "$out" "no_part.exr: part 'transmittance' is missing" -- $command "$work/no_part.exr" "${extra[@]}"
+done
+kept "$work/existing.png" "flipped.exr: not a readable skybake bake file: " -- render "$work/flipped.exr" "${render_v[@]}"
+refused "text.exr: not a readable skybake bake file" -- info "$work/text.exr"
+refused "no_such.exr: no such bake file" -- info "$work/no_such.exr"
+refused ": is a directory, not a bake file" -- info "$work"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"
