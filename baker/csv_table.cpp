@@ -150,12 +150,7 @@ void writeCsvOutput(const std::string& path, const std::string& text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
     return;
   }
-  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throwBadInput(fmt::format("{}: cannot write", path));
-  });
+  writeFileContentsAtomically(path, text);
 }
 
 }  // namespace skybake

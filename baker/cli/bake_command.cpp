@@ -10,6 +10,7 @@
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/report_sidecar.h"
+#include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 
@@ -50,23 +51,24 @@ void runBake(const BakeOptions& o) {
   validateConfig(config, source + " (with command-line overrides)");
 
   const std::filesystem::path output(o.output_path);
-  const std::filesystem::path directory = output.parent_path().empty() ? "." : output.parent_path();
-  if (!std::filesystem::is_directory(directory)) {
-    throwBadInput(fmt::format("{}: output directory {} does not exist", o.output_path, directory.string()));
-  }
+  requireWritableOutput(output);
+  requireWritableOutput(reportSidecarPath(output));
 
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
   setStoredReport(bake, !o.reproducible);
-  writeBakeFile(output, bake.file);
-  const auto bytes = std::filesystem::file_size(output);
-  nlohmann::ordered_json sidecar = nlohmann::ordered_json::parse(bake.report.toJson(!o.reproducible));
-  sidecar = nlohmann::ordered_json{{"bake_file", o.output_path},
-                                   {"atmosphere", config.name},
-                                   {"file_size_bytes", bytes},
-                                   {"orders", bake.file.orders_computed},
-                                   {"bake", sidecar}};
-  writeReportSidecar(output, sidecar);
+  uintmax_t bytes = 0;
+  // The sidecar is written while the new bake is still a temporary file: if
+  // it cannot be, the existing bake stays in place with its own report.
+  writeBakeFile(output, bake.file, [&](const std::filesystem::path& temp) {
+    bytes = std::filesystem::file_size(temp);
+    const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report.toJson(!o.reproducible));
+    writeReportSidecar(output, nlohmann::ordered_json{{"bake_file", o.output_path},
+                                                      {"atmosphere", config.name},
+                                                      {"file_size_bytes", bytes},
+                                                      {"orders", bake.file.orders_computed},
+                                                      {"bake", report}});
+  });
   const OrdersDecision& decision = bake.report.orders_decision;
   const std::string orders_note =
       !decision.automatic ? ""

@@ -5,7 +5,6 @@
 
 #include <chrono>
 #include <memory>
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -115,6 +114,7 @@ std::string bandCell(const ErrorReport& r, const char* quantity, const char* ban
 }
 
 void runCompare(const CompareOptions& o) {
+  if (!o.json_path.empty()) requireWritableOutput(o.json_path);
   const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
   const AtmosphereParameters& a = config.atmosphere;
   const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
@@ -166,11 +166,8 @@ void runCompare(const CompareOptions& o) {
     rows.push_back(row);
   }
   if (!o.json_path.empty()) {
-    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
-      std::ofstream out(temp);
-      out << nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) << "\n";
-      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
-    });
+    writeFileContentsAtomically(o.json_path,
+                            nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) + "\n");
   }
 }
 

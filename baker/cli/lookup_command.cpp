@@ -5,6 +5,7 @@
 #include "baker/csv_table.h"
 #include "baker/local_frame.h"
 #include "baker/validation/validation_queries.h"
+#include "data_formats/atomic_file.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {
@@ -38,7 +39,13 @@ void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
   for (int c = 0; c < channels; ++c) line += fmt::format(",{:.9g}", s[c]);
 }
 
+// Output problems are found before the queries are read or the bake loaded.
+void requireWritableOutputOf(const LookupOptions& o) {
+  if (!o.output_path.empty()) requireWritableOutput(o.output_path);
+}
+
 void runRadiance(const LookupOptions& o) {
+  requireWritableOutputOf(o);
   const CsvTable q = CsvTable::read(o.queries_path);
   const RadianceQueryColumns columns = radianceQueryColumns(q);
   const size_t altitude = columns.altitude_m;
@@ -66,6 +73,7 @@ void runRadiance(const LookupOptions& o) {
 }
 
 void runIrradiance(const LookupOptions& o) {
+  requireWritableOutputOf(o);
   const CsvTable q = CsvTable::read(o.queries_path);
   const size_t altitude = q.require("altitude_m");
   const size_t sun_zenith = q.require("sun_zenith_deg");

@@ -23,6 +23,13 @@ std::string cliFailureMessage(const CLI::App*, const CLI::Error& e) {
   return fmt::format("skybake: error: {}\nRun with --help for more information.\n", e.what());
 }
 
+// Prints the final error line without throwing: fmt::print throws when
+// stderr itself cannot be written (a file on the full disk being reported).
+void printError(const std::string& message) {
+  std::fputs(message.c_str(), stderr);
+  std::fflush(stderr);
+}
+
 // Everything printed to standard output must have arrived: a full disk
 // behind a redirection is a failed run, not a silently short table.
 bool standardOutputWritten() { return std::fflush(stdout) == 0 && std::ferror(stdout) == 0; }
@@ -68,13 +75,13 @@ int main(int argc, char** argv) {
     app.exit(e);
     return kExitBadInput;
   } catch (const skybake::Error& e) {
-    fmt::print(stderr, "skybake: error: {}\n", e.what());
+    printError(fmt::format("skybake: error: {}\n", e.what()));
     return e.kind() == skybake::ErrorKind::BadInput ? kExitBadInput : kExitInternal;
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "skybake: error: out of memory\n");
+    printError("skybake: error: out of memory\n");
     return kExitInternal;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "skybake: internal error: {}\n", e.what());
+    printError(fmt::format("skybake: internal error: {}\n", e.what()));
     return kExitInternal;
   }
   return 0;

@@ -3,6 +3,7 @@
 //   [--exposure E] [--tonemap none|reinhard|aces] -o OUT.png|OUT.exr
 #include <optional>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
@@ -56,31 +57,44 @@ void parseSize(const std::string& text, int& width, int& height) {
   height = static_cast<int>(*h);
 }
 
-void writeImage(const std::string& path, const SkyView& view, const std::vector<float>& linear,
-                double exposure, ToneMap tone_map) {
+// True for an .exr output, false for .png; refuses any other.
+bool isExrOutput(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
   const bool exr = extension == ".exr" || extension == ".EXR";
   if (!exr && extension != ".png" && extension != ".PNG") {
     throwBadInput(fmt::format("{}: output must be .png (tone-mapped sRGB) or .exr (linear radiance)", path));
   }
-  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    auto out = OIIO::ImageOutput::create(temp.string());
-    if (!out) throwBadInput(fmt::format("{}: cannot create image writer: {}", path, OIIO::geterror()));
-    OIIO::ImageSpec spec(view.width, view.height, 3, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (exr) spec.attribute("compression", "zip");
-    if (!out->open(temp.string(), spec)) throwBadInput(fmt::format("{}: {}", path, out->geterror()));
-    bool ok;
-    if (exr) {
-      ok = out->write_image(OIIO::TypeDesc::FLOAT, linear.data());
-    } else {
-      const std::vector<unsigned char> display = encodeForDisplay(linear, exposure, tone_map);
-      ok = out->write_image(OIIO::TypeDesc::UINT8, display.data());
-    }
-    if (!ok || !out->close()) throwBadInput(fmt::format("{}: {}", path, out->geterror()));
-  });
+  return exr;
+}
+
+// Encodes the image in memory, then writes it out in one checked write: the
+// PNG writer does not report a full disk (it leaves a short file and says it
+// succeeded).
+void writeImage(const std::string& path, const SkyView& view, const std::vector<float>& linear,
+                double exposure, ToneMap tone_map) {
+  const bool exr = isExrOutput(path);
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  auto out = OIIO::ImageOutput::create(path, &memory);
+  if (!out || !out->supports("ioproxy")) {
+    throw Error(ErrorKind::Internal, fmt::format("{}: no in-memory image writer: {}", path, OIIO::geterror()));
+  }
+  OIIO::ImageSpec spec(view.width, view.height, 3, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (exr) spec.attribute("compression", "zip");
+  bool ok = out->set_ioproxy(&memory) && out->open(path, spec);
+  if (ok && exr) {
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, linear.data());
+  } else if (ok) {
+    const std::vector<unsigned char> display = encodeForDisplay(linear, exposure, tone_map);
+    ok = out->write_image(OIIO::TypeDesc::UINT8, display.data());
+  }
+  if (!ok || !out->close()) throw Error(ErrorKind::Internal, fmt::format("{}: {}", path, out->geterror()));
+  writeFileContentsAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 void runRender(RenderOptions o) {
+  isExrOutput(o.output_path);
+  requireWritableOutput(o.output_path);
   SkyView& v = o.view;
   v.projection = o.projection == "latlong"       ? Projection::LatLong
                  : o.projection == "perspective" ? Projection::Perspective

@@ -4,7 +4,6 @@
 #include <omp.h>
 
 #include <chrono>
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -36,6 +35,7 @@ std::vector<StressCase> selectedCases(const StressOptions& o) {
 }
 
 void runStress(const StressOptions& o) {
+  if (!o.json_path.empty()) requireWritableOutput(o.json_path);
   const std::vector<StressCase> cases = selectedCases(o);
   if (o.threads > 0) omp_set_num_threads(o.threads);
   const auto start = std::chrono::steady_clock::now();
@@ -57,11 +57,7 @@ void runStress(const StressOptions& o) {
     j["quick"] = o.quick;
     j["threads"] = o.threads > 0 ? o.threads : omp_get_max_threads();
     j["seconds"] = seconds;
-    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
-      std::ofstream out(temp);
-      out << j.dump(2) << "\n";
-      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
-    });
+    writeFileContentsAtomically(o.json_path, j.dump(2) + "\n");
   }
   if (failed > 0) {
     throw Error(ErrorKind::Internal, fmt::format("stress: {} of {} cases failed an invariant", failed, rows.size()));

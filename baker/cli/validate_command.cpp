@@ -1,7 +1,6 @@
 // skybake validate FILE.exr [--queries standard|quick|Q.csv] [--reference-samples N] [--json OUT.json]
 #include <omp.h>
 
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -53,16 +52,16 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
     }
     text += "\n";
   }
-  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp);
-    out << text;
-    if (!out) throwBadInput(fmt::format("{}: cannot write", path));
-  });
+  writeFileContentsAtomically(path, text);
 }
 
 void runValidate(const ValidateOptions& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
+  for (const std::string& output : {o.json_path, o.details_path}) {
+    if (!output.empty()) requireWritableOutput(output);
+  }
   const Sky sky = Sky::load(o.bake_path);
+  requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
   const QuerySet queries = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
@@ -84,11 +83,7 @@ void runValidate(const ValidateOptions& o) {
   j["bake_file"] = o.bake_path;
   j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
   if (!o.json_path.empty()) {
-    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
-      std::ofstream out(temp);
-      out << j.dump(2) << "\n";
-      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
-    });
+    writeFileContentsAtomically(o.json_path, j.dump(2) + "\n");
   }
   if (!o.details_path.empty()) writeDetails(o.details_path, a, queries, reference, bake);
   nlohmann::ordered_json sidecar = readReportSidecar(o.bake_path);

@@ -15,11 +15,25 @@ failures=0
 
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
+# run ARGS...: skybake ARGS, stdout to $work/stdout and stderr to
+# $work/stderr. With file_limit_kib set, under that file-size limit (ulimit
+# -f): writes past it fail with EFBIG, as on a full disk. Its messages then go
+# through a pipe, which the limit does not cover.
+run() {
+  if [ -z "${file_limit_kib:-}" ]; then
+    "$skybake" "$@" >"$work/stdout" 2>"$work/stderr"
+    return
+  fi
+  : >"$work/stdout"
+  (ulimit -f "$file_limit_kib" && exec "$skybake" "$@" 2>&1 >/dev/null) | cat >"$work/stderr"
+  return "${PIPESTATUS[0]}"
+}
+
 # refused FRAGMENT -- ARGS...: skybake ARGS exits 2 and its stderr holds
 # "skybake: error: " and FRAGMENT.
 refused() {
   local fragment=$1; shift 2
-  "$skybake" "$@" >"$work/stdout" 2>"$work/stderr"
+  run "$@"
   local got=$?
   if [ "$got" -ne 2 ]; then fail "skybake $* exited $got, expected 2: $(cat "$work/stderr")"; return; fi
   grep -qF -- "skybake: error: " "$work/stderr" || fail "skybake $*: no 'skybake: error:' line: $(cat "$work/stderr")"
@@ -159,6 +173,62 @@ kept "$work/existing.png" "flipped.exr: not a readable skybake bake file: " -- r
 refused "text.exr: not a readable skybake bake file" -- info "$work/text.exr"
 refused "no_such.exr: no such bake file" -- info "$work/no_such.exr"
 refused ": is a directory, not a bake file" -- info "$work"
+
+# --- Output paths, for every command that writes: a missing directory, a
+# path that is a directory, a directory that is a file, a directory without
+# write permission and a full disk. Each is refused before any work where it
+# can be known in advance; an existing output is never replaced by a partial
+# one and no temporary file is left.
+mkdir "$work/out" "$work/out/taken.exr" "$work/out/taken.json"
+cp "$work/good.exr" "$work/out/old.exr"
+cp "$work/existing.csv" "$work/out/old.json"
+cp "$work/existing.csv" "$work/out/old.csv"
+cp "$work/existing.png" "$work/out/old.png"
+"$skybake" bake "$small" -o "$work/out/old.exr" --reproducible 2>/dev/null  # with its report sidecar
+quick=(--queries quick --reference-samples 4 --no-cache)
+stress_one=(stress --quick --case no_atmosphere)
+compare_one=(compare "$small" "${quick[@]}" --resolutions 0.5)
+refused "no/x.exr: output directory $work/no does not exist" -- bake "$small" -o "$work/no/x.exr"
+refused "no/x.csv: output directory $work/no does not exist" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/no/x.csv"
+refused "no/x.png: output directory $work/no does not exist" -- render "$work/good.exr" "${view[@]}" -o "$work/no/x.png"
+refused "no/x.json: output directory $work/no does not exist" -- validate "$work/good.exr" "${quick[@]}" --json "$work/no/x.json"
+refused "no/x.csv: output directory $work/no does not exist" -- validate "$work/good.exr" "${quick[@]}" --details "$work/no/x.csv"
+refused "no/x.json: output directory $work/no does not exist" -- "${compare_one[@]}" --json "$work/no/x.json"
+refused "no/x.json: output directory $work/no does not exist" -- "${stress_one[@]}" --json "$work/no/x.json"
+refused "existing.csv/x.exr: $work/existing.csv is not a directory" -- bake "$small" -o "$work/existing.csv/x.exr"
+refused "taken.exr: is a directory; the output needs a file name" -- bake "$small" -o "$work/out/taken.exr"
+refused "taken.json: is a directory; the output needs a file name" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/out/taken.json"
+refused "taken.exr: is a directory; the output needs a file name" -- render "$work/good.exr" "${view[@]}" -o "$work/out/taken.exr"
+refused "taken.json: is a directory; the output needs a file name" -- validate "$work/good.exr" "${quick[@]}" --json "$work/out/taken.json"
+refused "taken.json: is a directory; the output needs a file name" -- "${compare_one[@]}" --json "$work/out/taken.json"
+refused "taken.json: is a directory; the output needs a file name" -- "${stress_one[@]}" --json "$work/out/taken.json"
+# The report sidecar beside a bake (taken.exr -> taken.report.json).
+mkdir "$work/out/side.report.json"
+cp "$work/good.exr" "$work/out/side.exr"
+kept "$work/out/side.exr" "side.report.json: is a directory; the output needs a file name" -- bake "$small" -o "$work/out/side.exr"
+if [ "$(id -u)" -eq 0 ]; then
+  echo "skipped: the write-permission checks (running as root, which directory permissions do not restrict)"
+else
+  chmod 555 "$work/out"
+  kept "$work/out/old.exr" "old.exr: cannot create files in $work/out: Permission denied" -- bake "$small" -o "$work/out/old.exr"
+  kept "$work/out/old.csv" "old.csv: cannot create files in $work/out: Permission denied" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/out/old.csv"
+  kept "$work/out/old.png" "old.png: cannot create files in $work/out: Permission denied" -- render "$work/good.exr" "${view[@]}" -o "$work/out/old.png"
+  kept "$work/out/old.report.json" "old.report.json: cannot create files in $work/out: Permission denied" -- validate "$work/out/old.exr" "${quick[@]}"
+  chmod 755 "$work/out"
+fi
+# A full disk, as a file-size limit: the write fails part-way.
+file_limit_kib=64 kept "$work/out/old.exr" "old.exr: cannot write: Failed to write pixel data to image file \"$work/out/.old.tmp-" -- bake "$small" -o "$work/out/old.exr"
+grep -qF "File too large" "$work/stderr" || fail "full disk: the bake's message lacks the reason: $(cat "$work/stderr")"
+file_limit_kib=0 kept "$work/out/old.csv" "old.csv: cannot write: File too large" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/out/old.csv"
+file_limit_kib=1 kept "$work/out/old.png" "old.png: cannot write: File too large" -- render "$work/good.exr" "${view[@]}" --size 64x64 -o "$work/out/old.png"
+file_limit_kib=1 kept "$work/out/old.png" "old.exr: cannot write: File too large" -- render "$work/good.exr" "${view[@]}" --size 64x64 -o "$work/out/old.exr"
+file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- validate "$work/good.exr" "${quick[@]}" --json "$work/out/old.json"
+file_limit_kib=1 kept "$work/out/old.report.json" "old.report.json: cannot write: File too large" -- validate "$work/out/old.exr" "${quick[@]}"
+file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- "${compare_one[@]}" --json "$work/out/old.json"
+file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- "${stress_one[@]}" --json "$work/out/old.json"
+(ulimit -f 0 && exec "$skybake" lookup irradiance "$work/good.exr" --queries "$work/e.csv" >"$work/out/stdout.csv" 2>/dev/null)
+[ $? -eq 2 ] || fail "lookup to a full standard output did not exit 2"
+[ "$(ls -A "$work/out" | grep -c -- '\.tmp-')" -eq 0 ] || fail "temporary files left in $work/out: $(ls -A "$work/out")"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"
