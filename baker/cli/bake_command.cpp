@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "baker/available_memory.h"
 #include "baker/bake.h"
+#include "baker/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
@@ -53,6 +55,13 @@ void runBake(const BakeOptions& o) {
   const std::filesystem::path output(o.output_path);
   requireWritableOutput(output);
   requireWritableOutput(reportSidecarPath(output));
+  const BakeMemoryEstimate memory = estimateBakeMemory(config);
+  const TextureSizes& s = config.sizes;
+  requireMemoryAvailable(fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {} "
+                                     "alive at once)",
+                                     source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
+                                     memory.tables_4d_at_peak, formatBytes(memory.table_4d_bytes)),
+                         memory.peak_bytes);
 
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);

@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include "baker/available_memory.h"
 #include "baker/bake.h"
+#include "baker/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
@@ -113,9 +115,35 @@ std::string bandCell(const ErrorReport& r, const char* quantity, const char* ban
                      100 * worst(r, quantity, band, &ErrorStats::max));
 }
 
+// The config at each --resolutions factor, each checked like a config file,
+// and all of them together checked against the machine's memory: every bake
+// is kept until the comparison ends.
+std::vector<BakeConfig> scaledConfigs(const BakeConfig& config, const std::string& source,
+                                      const std::vector<double>& factors) {
+  std::vector<BakeConfig> scaled;
+  uint64_t kept_bytes = 0;
+  uint64_t largest_extra_bytes = 0;  // the most any one bake needs beyond what it keeps
+  for (double factor : factors) {
+    BakeConfig c = config;
+    c.sizes = scaledSizes(config.sizes, factor);
+    validateConfig(c, fmt::format("{} at --resolutions = {}", source, factor));
+    const BakeMemoryEstimate memory = estimateBakeMemory(c);
+    kept_bytes += memory.kept_bytes;
+    largest_extra_bytes = std::max(largest_extra_bytes, memory.peak_bytes - memory.kept_bytes);
+    scaled.push_back(std::move(c));
+  }
+  std::string list;
+  for (double factor : factors) list += fmt::format("{}{}", list.empty() ? "" : ",", factor);
+  requireMemoryAvailable(fmt::format("{}: --resolutions = {}: the comparison (every bake kept to the end)", source, list),
+                         kept_bytes + largest_extra_bytes);
+  return scaled;
+}
+
 void runCompare(const CompareOptions& o) {
   if (!o.json_path.empty()) requireWritableOutput(o.json_path);
   const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
+  const std::vector<BakeConfig> scaled_configs =
+      scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);
   const AtmosphereParameters& a = config.atmosphere;
   const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
   // Comparators answer rays to the sky or the ground; rays to a point and
@@ -133,12 +161,11 @@ void runCompare(const CompareOptions& o) {
   methods.push_back(std::make_unique<RayMarchedSingleScattering>(a));
   methods.push_back(std::make_unique<FlatClosedFormSingleScattering>(a));
   methods.push_back(std::make_unique<HillaireMultipleScattering>(a));
-  for (double factor : o.resolutions) {
-    BakeConfig scaled_config = config;
-    scaled_config.sizes = scaledSizes(config.sizes, factor);
+  for (size_t i = 0; i < o.resolutions.size(); ++i) {
+    const BakeConfig& scaled_config = scaled_configs[i];
     const TextureSizes& s = scaled_config.sizes;
     SilentProgress silent;
-    fmt::print(stderr, "baking at {}x the configured sizes ...\n", factor);
+    fmt::print(stderr, "baking at {}x the configured sizes ...\n", o.resolutions[i]);
     methods.push_back(std::make_unique<BakedSky>(
         fmt::format("skybake {}x{}x{}x{}, {} orders", s.scattering_r, s.scattering_mu, s.scattering_mu_s,
                     s.scattering_nu, config.bake.orders),

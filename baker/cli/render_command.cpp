@@ -7,6 +7,7 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
+#include "baker/available_memory.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/render/sky_image.h"
@@ -40,6 +41,11 @@ constexpr double kMaxPerspectiveFieldOfView_deg = 179.0;
 // Radiance times exposure must stay within float range: the brightest sky
 // radiance a bake holds (the sun's aureole) is below 1e5 W m^-2 sr^-1 nm^-1.
 constexpr double kMaxExposure = 1e30;
+
+// Memory per pixel while an image is rendered and written: linear RGB floats,
+// the tone-mapped bytes and the encoded file in memory, which is at most
+// about the raw floats but sits in a vector that may have grown to twice that.
+constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3 + 2 * 3 * sizeof(float);
 
 // Largest image side: 16k pixels a side is far beyond any preview and keeps
 // the float image under 3 GiB.
@@ -111,6 +117,8 @@ void runRender(RenderOptions o) {
   v.view_azimuth_deg = o.view_azimuth_deg.value_or(v.sun_azimuth_deg);
   const ToneMap tone_map = o.tone_map == "none" ? ToneMap::None : o.tone_map == "reinhard" ? ToneMap::Reinhard : ToneMap::Aces;
   const Sky sky = Sky::load(o.bake_path);
+  requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
+                         static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) * kImageBytesPerPixel);
   writeImage(o.output_path, v, renderSkyRadiance(sky, v), o.exposure, tone_map);
 }
 

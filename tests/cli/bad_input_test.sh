@@ -17,16 +17,21 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # run ARGS...: skybake ARGS, stdout to $work/stdout and stderr to
 # $work/stderr. With file_limit_kib set, under that file-size limit (ulimit
-# -f): writes past it fail with EFBIG, as on a full disk. Its messages then go
-# through a pipe, which the limit does not cover.
+# -f): writes past it fail with EFBIG, as on a full disk; its messages then
+# go through a pipe, which the limit does not cover. With memory_limit_kib
+# set, under that address-space limit (ulimit -v): a machine that small,
+# whatever this one has.
 run() {
-  if [ -z "${file_limit_kib:-}" ]; then
-    "$skybake" "$@" >"$work/stdout" 2>"$work/stderr"
+  if [ -n "${file_limit_kib:-}" ]; then
+    : >"$work/stdout"
+    (ulimit -f "$file_limit_kib" && exec "$skybake" "$@" 2>&1 >/dev/null) | cat >"$work/stderr"
+    return "${PIPESTATUS[0]}"
+  fi
+  if [ -n "${memory_limit_kib:-}" ]; then
+    (ulimit -v "$memory_limit_kib" && exec "$skybake" "$@" >"$work/stdout" 2>"$work/stderr")
     return
   fi
-  : >"$work/stdout"
-  (ulimit -f "$file_limit_kib" && exec "$skybake" "$@" 2>&1 >/dev/null) | cat >"$work/stderr"
-  return "${PIPESTATUS[0]}"
+  "$skybake" "$@" >"$work/stdout" 2>"$work/stderr"
 }
 
 # refused FRAGMENT -- ARGS...: skybake ARGS exits 2 and its stderr holds
@@ -229,6 +234,22 @@ file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too lar
 (ulimit -f 0 && exec "$skybake" lookup irradiance "$work/good.exr" --queries "$work/e.csv" >"$work/out/stdout.csv" 2>/dev/null)
 [ $? -eq 2 ] || fail "lookup to a full standard output did not exit 2"
 [ "$(ls -A "$work/out" | grep -c -- '\.tmp-')" -eq 0 ] || fail "temporary files left in $work/out: $(ls -A "$work/out")"
+
+# --- Sizes beyond the machine's memory: refused before anything is
+# allocated, with the estimate and what is available. A 3.8 GiB address-space
+# limit stands in for a small machine (an allocation past it would fail with
+# "out of memory", exit 1, so exit 2 shows the check came first).
+sed 's/^scattering = {.*/scattering = { r = 512, mu = 1024, mu_s = 256, nu = 2 }/' "$small" >"$work/huge.toml"
+small_machine=3900000
+memory_limit_kib=$small_machine kept "$work/out/old.exr" "huge.toml: resolution.scattering = 512 x 1024 x 256 x 2: the bake (9 tables of 4.0 GiB alive at once) needs about 36.0 GiB; this process may allocate" -- bake "$work/huge.toml" -o "$work/out/old.exr"
+grep -qF "(address-space limit, ulimit -v)" "$work/stderr" || fail "the memory refusal does not say which limit: $(cat "$work/stderr")"
+memory_limit_kib=$small_machine kept "$work/out/old.json" "small_earth.toml: --resolutions = 1,8: the comparison (every bake kept to the end) needs about 4.5 GiB; this process may allocate" -- compare "$small" --resolutions 1,8 --json "$work/out/old.json"
+memory_limit_kib=$small_machine kept "$work/out/old.png" "--size = 16384x16384: the image needs about 9.8 GiB; this process may allocate" -- render "$work/good.exr" "${view[@]}" --size 16384x16384 -o "$work/out/old.png"
+# Sizes whose products overflow are refused by the config check before any
+# product is formed in an int (and the estimate saturates; see
+# tests/baker/bake_memory_estimate_test.cpp).
+sed 's/^scattering = {.*/scattering = { r = 1024, mu = 1024, mu_s = 1024, nu = 1024 }/' "$small" >"$work/overflow.toml"
+kept "$work/out/old.exr" "overflow.toml: resolution.scattering = 1099511627776 texels: more than 268435456 texels per table" -- bake "$work/overflow.toml" -o "$work/out/old.exr"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"
