@@ -107,6 +107,19 @@ for v in 0 nan inf; do
   refused "--resolutions = $v: must be a finite number in [0.05, 8]" -- compare "$small" --resolutions "1,$v"
 done
 
+# --- Config files: config_test.cpp checks every key; here the keys of
+# automatic orders through the command line, and an existing bake kept.
+cp "$work/good.exr" "$work/kept.exr"
+config_with() { sed "s/^orders = 3/$1/" "$small" >"$work/c.toml"; }
+config_with 'orders = "auto"\norder_tolerance = nan'
+kept "$work/kept.exr" "c.toml:39: bake.order_tolerance = nan: must be finite" -- bake "$work/c.toml" -o "$work/kept.exr"
+config_with 'orders = "auto"\nmax_orders = 1'
+kept "$work/kept.exr" "c.toml: bake.max_orders = 1: must be in [2, 1000]" -- bake "$work/c.toml" -o "$work/kept.exr"
+config_with 'orders = 3\ntail_estimate = "yes"'
+kept "$work/kept.exr" "c.toml:39: bake.tail_estimate = 'yes': must be true or false" -- bake "$work/c.toml" -o "$work/kept.exr"
+config_with 'orders = "many"'
+kept "$work/kept.exr" "c.toml:38: bake.orders = 'many': must be a whole number or \"auto\"" -- bake "$work/c.toml" -o "$work/kept.exr"
+
 # --- Query CSVs (lookup radiance|irradiance, validate --queries): the file,
 # line and column, and the reason; an earlier output stays as it was.
 header='altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg'
@@ -231,8 +244,11 @@ file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too lar
 file_limit_kib=1 kept "$work/out/old.report.json" "old.report.json: cannot write: File too large" -- validate "$work/out/old.exr" "${quick[@]}"
 file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- "${compare_one[@]}" --json "$work/out/old.json"
 file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- "${stress_one[@]}" --json "$work/out/old.json"
-(ulimit -f 0 && exec "$skybake" lookup irradiance "$work/good.exr" --queries "$work/e.csv" >"$work/out/stdout.csv" 2>/dev/null)
-[ $? -eq 2 ] || fail "lookup to a full standard output did not exit 2"
+(ulimit -f 0 && exec "$skybake" lookup irradiance "$work/good.exr" --queries "$work/e.csv" 2>&1 >"$work/out/stdout.csv") \
+  | cat >"$work/stderr"
+[ "${PIPESTATUS[0]}" -eq 2 ] || fail "lookup to a full standard output did not exit 2"
+grep -qF "skybake: error: standard output: cannot write: File too large" "$work/stderr" \
+  || fail "lookup to a full standard output: $(cat "$work/stderr")"
 [ "$(ls -A "$work/out" | grep -c -- '\.tmp-')" -eq 0 ] || fail "temporary files left in $work/out: $(ls -A "$work/out")"
 
 # --- Sizes beyond the machine's memory: refused before anything is
