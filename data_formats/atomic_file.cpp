@@ -34,7 +34,7 @@ bool writeAll(int fd, std::string_view text) {
 
 }  // namespace
 
-void requireWritableOutput(const std::filesystem::path& path) {
+void requireWritableOutput(const std::filesystem::path& path, std::initializer_list<std::filesystem::path> inputs) {
   const std::string name = path.string();
   if (name.empty()) throwBadInput("output path is empty");
   std::error_code error;
@@ -53,6 +53,11 @@ void requireWritableOutput(const std::filesystem::path& path) {
   // permission on the directory; the existing file's own mode does not matter.
   if (::access(directory.c_str(), W_OK | X_OK) != 0) {
     throwBadInput(fmt::format("{}: cannot create files in {}: {}", name, directory.string(), std::strerror(errno)));
+  }
+  for (const std::filesystem::path& input : inputs) {
+    if (!input.empty() && std::filesystem::equivalent(path, input, error)) {
+      throwBadInput(fmt::format("{}: is also an input ({}); the output would replace it", name, input.string()));
+    }
   }
 }
 

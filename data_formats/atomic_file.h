@@ -8,15 +8,18 @@
 
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <string_view>
 
 namespace skybake {
 
 // Refuses, before any work is done, an output path that cannot be written:
-// empty, an existing directory, in a directory that does not exist, or in
-// one this process may not create files in. Throws Error(BadInput)
+// empty, an existing directory, in a directory that does not exist, in one
+// this process may not create files in, or the same file as one of the
+// command's `inputs` (which the output would replace). Throws Error(BadInput)
 // "<path>: <reason>".
-void requireWritableOutput(const std::filesystem::path& path);
+void requireWritableOutput(const std::filesystem::path& path,
+                           std::initializer_list<std::filesystem::path> inputs = {});
 
 // Calls write(temp) with a temporary path beside `path` (same directory, so
 // the final rename is atomic; same extension, so format-by-extension writers

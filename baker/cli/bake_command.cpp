@@ -53,8 +53,8 @@ void runBake(const BakeOptions& o) {
   validateConfig(config, source + " (with command-line overrides)");
 
   const std::filesystem::path output(o.output_path);
-  requireWritableOutput(output);
-  requireWritableOutput(reportSidecarPath(output));
+  requireWritableOutput(output, {o.config_path});
+  requireWritableOutput(reportSidecarPath(output), {o.config_path});
   const BakeMemoryEstimate memory = estimateBakeMemory(config);
   const TextureSizes& s = config.sizes;
   requireMemoryAvailable(fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {} "

@@ -140,7 +140,7 @@ std::vector<BakeConfig> scaledConfigs(const BakeConfig& config, const std::strin
 }
 
 void runCompare(const CompareOptions& o) {
-  if (!o.json_path.empty()) requireWritableOutput(o.json_path);
+  if (!o.json_path.empty()) requireWritableOutput(o.json_path, {o.config_path, o.queries});
   const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
   const std::vector<BakeConfig> scaled_configs =
       scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);

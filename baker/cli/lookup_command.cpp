@@ -41,7 +41,7 @@ void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
 
 // Output problems are found before the queries are read or the bake loaded.
 void requireWritableOutputOf(const LookupOptions& o) {
-  if (!o.output_path.empty()) requireWritableOutput(o.output_path);
+  if (!o.output_path.empty()) requireWritableOutput(o.output_path, {o.bake_path, o.queries_path});
 }
 
 void runRadiance(const LookupOptions& o) {

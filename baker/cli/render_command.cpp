@@ -100,7 +100,7 @@ void writeImage(const std::string& path, const SkyView& view, const std::vector<
 
 void runRender(RenderOptions o) {
   isExrOutput(o.output_path);
-  requireWritableOutput(o.output_path);
+  requireWritableOutput(o.output_path, {o.bake_path});
   SkyView& v = o.view;
   v.projection = o.projection == "latlong"       ? Projection::LatLong
                  : o.projection == "perspective" ? Projection::Perspective

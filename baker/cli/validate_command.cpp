@@ -58,7 +58,7 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
 void runValidate(const ValidateOptions& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
   for (const std::string& output : {o.json_path, o.details_path}) {
-    if (!output.empty()) requireWritableOutput(output);
+    if (!output.empty()) requireWritableOutput(output, {o.bake_path, o.queries});
   }
   const Sky sky = Sky::load(o.bake_path);
   requireWritableOutput(reportSidecarPath(o.bake_path));
