@@ -40,12 +40,12 @@ void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
 }
 
 // Output problems are found before the queries are read or the bake loaded.
-void requireWritableOutputOf(const LookupOptions& o) {
+void requireWritableLookupOutput(const LookupOptions& o) {
   if (!o.output_path.empty()) requireWritableOutput(o.output_path, {o.bake_path, o.queries_path});
 }
 
 void runRadiance(const LookupOptions& o) {
-  requireWritableOutputOf(o);
+  requireWritableLookupOutput(o);
   const CsvTable q = CsvTable::read(o.queries_path);
   const RadianceQueryColumns columns = radianceQueryColumns(q);
   const size_t altitude = columns.altitude_m;
@@ -73,7 +73,7 @@ void runRadiance(const LookupOptions& o) {
 }
 
 void runIrradiance(const LookupOptions& o) {
-  requireWritableOutputOf(o);
+  requireWritableLookupOutput(o);
   const CsvTable q = CsvTable::read(o.queries_path);
   const size_t altitude = q.require("altitude_m");
   const size_t sun_zenith = q.require("sun_zenith_deg");

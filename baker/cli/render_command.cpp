@@ -31,15 +31,16 @@ struct RenderOptions {
   std::optional<double> view_azimuth_deg;
 };
 
-// --fov-deg: below a degree the image is one texel of the tables, wider than
-// a full turn means nothing.
+// --fov-deg: below a degree the view is finer than any table resolves; more
+// than a full turn is not a field of view.
 constexpr double kMinFieldOfView_deg = 1.0;
 constexpr double kMaxFieldOfView_deg = 360.0;
 // A perspective projection's image plane grows as tan(fov / 2): at 179
 // degrees it is already 229 times the focal length, at 180 infinite.
 constexpr double kMaxPerspectiveFieldOfView_deg = 179.0;
-// Radiance times exposure must stay within float range: the brightest sky
-// radiance a bake holds (the sun's aureole) is below 1e5 W m^-2 sr^-1 nm^-1.
+// Radiance times exposure must stay within float range (3.4e38): the
+// brightest radiance in an image, the sun's disk, is about 3e4
+// W m^-2 sr^-1 nm^-1 for Earth's sun, leaving a factor of 1e4 to spare.
 constexpr double kMaxExposure = 1e30;
 
 // Memory per pixel while an image is rendered and written: linear RGB floats,

@@ -1,7 +1,6 @@
 // skybake validate FILE.exr [--queries standard|quick|Q.csv] [--reference-samples N] [--json OUT.json]
 #include <omp.h>
 
-
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
