@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <string_view>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -12,6 +14,14 @@
 
 namespace skybake {
 namespace {
+
+// No query line comes near this (a row of numbers is tens of bytes); a longer
+// one means the file is not a query CSV (binary data, a file without line
+// breaks) and would otherwise be read whole into memory.
+constexpr size_t kMaxLineBytes = 65536;
+
+// The byte-order mark some spreadsheets put before the header.
+constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
 
 std::vector<std::string> splitCells(const std::string& line) {
   std::vector<std::string> cells;
@@ -28,26 +38,50 @@ std::vector<std::string> splitCells(const std::string& line) {
   return cells;
 }
 
+// Reads one line of at most kMaxLineBytes into `line`; false at the end of
+// the input. Throws Error(BadInput) for a longer line.
+bool readLine(std::istream& in, std::string& line, const std::string& path, int line_number) {
+  line.resize(kMaxLineBytes + 1);
+  in.getline(line.data(), static_cast<std::streamsize>(line.size()));
+  const std::streamsize read = in.gcount();
+  if (in.fail() && !in.eof() && read == static_cast<std::streamsize>(kMaxLineBytes)) {
+    throwBadInput(fmt::format("{}:{}: line longer than {} bytes: not a query CSV", path, line_number,
+                              kMaxLineBytes));
+  }
+  if (read == 0 && (in.eof() || in.fail())) return false;
+  // gcount counts the newline getline consumed but did not store.
+  line.resize(static_cast<size_t>(read) - (in.eof() ? 0 : 1));
+  return true;
+}
+
 }  // namespace
 
 CsvTable CsvTable::read(const std::filesystem::path& path) {
   CsvTable table;
   table.path_ = path.string();
-  std::ifstream in(path);
-  if (!in) throwBadInput(fmt::format("{}: cannot open query file", table.path_));
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throwBadInput(fmt::format("{}: is a directory, not a query file", table.path_));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throwBadInput(fmt::format("{}: cannot open query file: {}", table.path_, std::strerror(errno)));
   std::string line;
   int line_number = 0;
-  while (std::getline(in, line)) {
+  while (readLine(in, line, table.path_, line_number + 1)) {
     ++line_number;
+    if (line_number == 1 && line.starts_with(kUtf8ByteOrderMark)) line.erase(0, kUtf8ByteOrderMark.size());
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
     std::vector<std::string> cells = splitCells(line);
     if (table.columns_.empty()) {
-      table.columns_ = cells;
+      table.checkHeader(cells, line_number);
+      table.columns_ = std::move(cells);
+      table.header_line_ = line_number;
       continue;
     }
     if (cells.size() != table.columns_.size()) {
-      throwBadInput(fmt::format("{}:{}: {} cells, the header has {} columns", table.path_, line_number,
-                                cells.size(), table.columns_.size()));
+      throwBadInput(fmt::format("{}:{}:{}: {} cells, the header (line {}) has {} columns", table.path_, line_number,
+                                std::min(cells.size(), table.columns_.size()) + 1, cells.size(),
+                                table.header_line_, table.columns_.size()));
     }
     std::vector<double> values;
     for (size_t c = 0; c < cells.size(); ++c) {
@@ -65,8 +99,26 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
     table.texts_.push_back(std::move(cells));
     table.line_numbers_.push_back(line_number);
   }
-  if (table.columns_.empty()) throwBadInput(fmt::format("{}: no header row", table.path_));
+  if (in.bad()) throwBadInput(fmt::format("{}:{}: read error", table.path_, line_number + 1));
+  if (table.columns_.empty()) throwBadInput(fmt::format("{}: no header row: the file is empty", table.path_));
+  if (table.rows_.empty()) {
+    throwBadInput(fmt::format("{}: no query rows after the header (line {})", table.path_, table.header_line_));
+  }
   return table;
+}
+
+void CsvTable::checkHeader(const std::vector<std::string>& names, int line_number) const {
+  for (size_t c = 0; c < names.size(); ++c) {
+    if (names[c].empty()) {
+      throwBadInput(fmt::format("{}:{}:{}: empty column name in the header", path_, line_number, c + 1));
+    }
+    for (size_t earlier = 0; earlier < c; ++earlier) {
+      if (names[earlier] == names[c]) {
+        throwBadInput(fmt::format("{}:{}:{}: column '{}' appears twice (also column {})", path_, line_number, c + 1,
+                                  names[c], earlier + 1));
+      }
+    }
+  }
 }
 
 std::optional<size_t> CsvTable::find(const std::string& name) const {
@@ -78,14 +130,16 @@ std::optional<size_t> CsvTable::find(const std::string& name) const {
 
 size_t CsvTable::require(const std::string& name) const {
   if (auto i = find(name)) return *i;
-  throwBadInput(fmt::format("{}:1: missing column '{}'", path_, name));
+  std::string present;
+  for (const std::string& c : columns_) present += (present.empty() ? "" : ", ") + c;
+  throwBadInput(fmt::format("{}:{}: missing column '{}' (the header has: {})", path_, header_line_, name, present));
 }
 
 void CsvTable::requireRange(size_t column, double lo, double hi) const {
   for (size_t row = 0; row < rows_.size(); ++row) {
     const double v = rows_[row][column];
     if (v < lo || v > hi) {
-      throwBadInput(fmt::format("{}:{}:{} ({}): {} is out of range [{}, {}]", path_, line_numbers_[row],
+      throwBadInput(fmt::format("{}:{}:{} ({}): {} is out of range [{:g}, {:g}]", path_, line_numbers_[row],
                                 column + 1, columns_[column], texts_[row][column], lo, hi));
     }
   }
@@ -96,12 +150,7 @@ void writeCsvOutput(const std::string& path, const std::string& text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
     return;
   }
-  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throwBadInput(fmt::format("{}: cannot write", path));
-  });
+  writeFileContentsAtomically(path, text);
 }
 
 }  // namespace skybake

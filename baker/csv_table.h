@@ -11,8 +11,11 @@ namespace skybake {
 
 class CsvTable {
  public:
-  // Reads `path`; every cell must be a finite number. Throws Error(BadInput)
-  // "<path>:<line>:<column> (<name>): <reason>" for the first bad cell.
+  // Reads `path`: a header of distinct, non-empty names, then at least one
+  // row with one finite number per column ('#' lines and blank lines are
+  // skipped). Throws Error(BadInput) "<path>:<line>:<column> (<name>):
+  // <reason>" for the first bad cell, "<path>:<line>: <reason>" for a bad
+  // line and "<path>: <reason>" for a file with no header or no rows.
   static CsvTable read(const std::filesystem::path& path);
 
   const std::vector<std::string>& columns() const { return columns_; }
@@ -28,7 +31,10 @@ class CsvTable {
   void requireRange(size_t column, double lo, double hi) const;
 
  private:
+  void checkHeader(const std::vector<std::string>& names, int line_number) const;
+
   std::string path_;
+  int header_line_ = 0;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
   std::vector<std::vector<std::string>> texts_;

@@ -22,12 +22,7 @@ nlohmann::ordered_json readReportSidecar(const std::filesystem::path& bake_file)
 }
 
 void writeReportSidecar(const std::filesystem::path& bake_file, const nlohmann::ordered_json& report) {
-  const std::filesystem::path path = reportSidecarPath(bake_file);
-  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp);
-    out << report.dump(2) << "\n";
-    if (!out) throwBadInput(fmt::format("{}: cannot write", path.string()));
-  });
+  writeFileContentsAtomically(reportSidecarPath(bake_file), report.dump(2) + "\n");
 }
 
 }  // namespace skybake

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -46,8 +47,12 @@ struct BakeFile {
 
 // Writes atomically: a temporary file beside `path`, renamed into place once
 // complete. On failure no file is left behind and an existing `path` is intact.
-// Throws Error(BadInput) for an unwritable destination, Error(Internal) otherwise.
-void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake);
+// `before_rename`, if given, is called with the complete temporary file just
+// before the rename, for outputs that belong with it (a report beside it): if
+// it throws, the existing `path` stays as it was. Throws Error(BadInput) for
+// an unwritable destination (see atomic_file.h), Error(Internal) otherwise.
+void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
+                   const std::function<void(const std::filesystem::path& temp)>& before_rename = {});
 
 // Reads a bake back, every attribute included. Throws Error(BadInput) naming
 // the file and the reason for a missing, truncated, corrupt, foreign or

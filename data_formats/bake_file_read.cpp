@@ -219,6 +219,9 @@ BakeFile readConverted(const std::string& source, uint64_t file_bytes, OpenStrea
 BakeFile readBakeFile(const std::filesystem::path& path) {
   std::error_code error;
   const std::string source = path.string();
+  if (std::filesystem::is_directory(path, error)) {
+    throwBadInput(fmt::format("{}: is a directory, not a bake file", source));
+  }
   if (!std::filesystem::is_regular_file(path, error)) {
     throwBadInput(fmt::format("{}: no such bake file", source));
   }

@@ -115,7 +115,8 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
 
 }  // namespace
 
-void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake) {
+void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
+                   const std::function<void(const std::filesystem::path& temp)>& before_rename) {
   const BakeTables& t = bake.tables;
   const std::vector<PartToWrite> parts = {
       {kPartTransmittance, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
@@ -150,6 +151,7 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake) {
 
   writeFileAtomically(path, [&](const std::filesystem::path& temp) {
     writeParts(temp.string(), bake, parts);
+    if (before_rename) before_rename(temp);
   });
 }
 

@@ -10,6 +10,15 @@
 
 namespace skybake {
 
+// Limits validateConfig enforces that the command line's overrides share.
+// More orders than this is a typo: real atmospheres converge in tens.
+inline constexpr int kMaxOrders = 1000;
+// Automatic orders: below 1e-9 float sums cannot resolve the last order's
+// share (it would never stop before the cap); above 0.5 "converged" would
+// mean the last order still doubled the sky.
+inline constexpr double kMinOrderTolerance = 1e-9;
+inline constexpr double kMaxOrderTolerance = 0.5;
+
 // Parses TOML text. `source` names the text in error messages (a file name).
 // Throws Error(BadInput) naming source, line, key, value and reason for syntax
 // errors, unknown or missing keys, wrong types and non-finite numbers, then

@@ -28,12 +28,6 @@ constexpr int kMin2DSize = 2;
 constexpr int kMax2DSize = 8192;
 constexpr int kMax4DAxis = 1024;
 constexpr long long kMaxScatteringTexels = 1LL << 28;  // 4 GiB of float4
-constexpr int kMaxOrders = 1000;
-// Automatic orders: below 1e-9 float sums cannot resolve the last order's
-// share (it would never stop before the cap); above 0.5 "converged" would
-// mean the last order still doubled the sky.
-constexpr double kMinOrderTolerance = 1e-9;
-constexpr double kMaxOrderTolerance = 0.5;
 
 class Checker {
  public:

@@ -8,9 +8,12 @@
 namespace skybake {
 
 enum class ErrorKind {
-  // The user gave something unusable (a config value, a file, a flag): exit 2.
+  // The user gave something unusable (a config value, a file, a flag, an
+  // output location that cannot be written, a full disk, sizes beyond the
+  // machine's memory): exit 2.
   BadInput,
-  // skybake itself failed (out of memory, a bug, an I/O failure mid-write): exit 1.
+  // skybake itself failed (a bug, an allocation failing after the memory
+  // check passed, a library that cannot do what skybake asks): exit 1.
   Internal,
 };
 

@@ -56,7 +56,7 @@ void parseHeaders(exr_context_initializer_t init, CoreSession& s, const std::str
   exr_finish(&context);
   if (result != EXR_ERR_SUCCESS) {
     const std::string reason = exr_get_default_error_message(result);
-    throwBadInput(fmt::format("{}: OpenEXR header: {}", source,
+    throwBadInput(fmt::format("{}: not a readable skybake bake file: OpenEXR header: {}", source,
                               s.message.empty() ? reason : fmt::format("{} ({})", s.message, reason)));
   }
 }

@@ -1,14 +1,18 @@
 // skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float]
-#include <charconv>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "baker/available_memory.h"
 #include "baker/bake.h"
+#include "baker/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/report_sidecar.h"
+#include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 
@@ -19,7 +23,7 @@ struct BakeOptions {
   std::string config_path;  // empty: the built-in Earth
   std::string output_path;
   std::string orders;  // empty: from the config; "auto" or a count
-  double order_tolerance = 0.0;  // 0: from the config
+  std::optional<double> order_tolerance;  // absent: from the config
   int threads = 0;     // 0: all cores (OpenMP's default)
   std::string precision;  // empty: from the config
   bool reproducible = false;
@@ -41,31 +45,39 @@ void runBake(const BakeOptions& o) {
     config.bake.auto_orders = true;
   } else if (!o.orders.empty()) {
     config.bake.auto_orders = false;
-    config.bake.orders = std::stoi(o.orders);  // checked by the option's validator
+    config.bake.orders = static_cast<int>(*parseWholeNumber(o.orders));  // checked by the option's validator
   }
-  if (o.order_tolerance > 0.0) config.bake.order_tolerance = o.order_tolerance;
+  if (o.order_tolerance) config.bake.order_tolerance = *o.order_tolerance;
   if (o.precision == "half") config.bake.precision = StoragePrecision::Half;
   if (o.precision == "float") config.bake.precision = StoragePrecision::Float;
   validateConfig(config, source + " (with command-line overrides)");
 
   const std::filesystem::path output(o.output_path);
-  const std::filesystem::path directory = output.parent_path().empty() ? "." : output.parent_path();
-  if (!std::filesystem::is_directory(directory)) {
-    throwBadInput(fmt::format("{}: output directory {} does not exist", o.output_path, directory.string()));
-  }
+  requireWritableOutput(output, {o.config_path});
+  requireWritableOutput(reportSidecarPath(output), {o.config_path});
+  const BakeMemoryEstimate memory = estimateBakeMemory(config);
+  const TextureSizes& s = config.sizes;
+  requireMemoryAvailable(fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {} "
+                                     "alive at once)",
+                                     source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
+                                     memory.tables_4d_at_peak, formatBytes(memory.table_4d_bytes)),
+                         memory.peak_bytes);
 
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
   setStoredReport(bake, !o.reproducible);
-  writeBakeFile(output, bake.file);
-  const auto bytes = std::filesystem::file_size(output);
-  nlohmann::ordered_json sidecar = nlohmann::ordered_json::parse(bake.report.toJson(!o.reproducible));
-  sidecar = nlohmann::ordered_json{{"bake_file", o.output_path},
-                                   {"atmosphere", config.name},
-                                   {"file_size_bytes", bytes},
-                                   {"orders", bake.file.orders_computed},
-                                   {"bake", sidecar}};
-  writeReportSidecar(output, sidecar);
+  uintmax_t bytes = 0;
+  // The sidecar is written while the new bake is still a temporary file: if
+  // it cannot be, the existing bake stays in place with its own report.
+  writeBakeFile(output, bake.file, [&](const std::filesystem::path& temp) {
+    bytes = std::filesystem::file_size(temp);
+    const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report.toJson(!o.reproducible));
+    writeReportSidecar(output, nlohmann::ordered_json{{"bake_file", o.output_path},
+                                                      {"atmosphere", config.name},
+                                                      {"file_size_bytes", bytes},
+                                                      {"orders", bake.file.orders_computed},
+                                                      {"bake", report}});
+  });
   const OrdersDecision& decision = bake.report.orders_decision;
   const std::string orders_note =
       !decision.automatic ? ""
@@ -93,20 +105,19 @@ Command addBakeCommand(CLI::App& app) {
       ->check(CLI::Validator(
           [](std::string& value) -> std::string {
             if (value == "auto") return "";
-            int count = 0;
-            const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), count);
-            if (error != std::errc() || end != value.data() + value.size() || count < 1 || count > 1000) {
-              return "must be 'auto' or a whole number in [1, 1000]";
+            const std::optional<long long> count = parseWholeNumber(value);
+            if (!count || *count < 1 || *count > kMaxOrders) {
+              refuseOptionValue("--orders", value,
+                                fmt::format("must be 'auto' or a whole number in [1, {}]", kMaxOrders));
             }
             return "";
           },
-          "auto|1..1000"));
-  cmd->add_option("--order-tolerance", options->order_tolerance,
-                  "With automatic orders: stop when the last order adds less than this share of the total "
-                  "(overrides bake.order_tolerance).")
-      ->check(CLI::Range(1e-9, 0.5));
-  cmd->add_option("--threads", options->threads, "Worker threads (default: all cores).")
-      ->check(CLI::Range(1, 4096));
+          fmt::format("auto|1..{}", kMaxOrders)));
+  requireFiniteIn(cmd->add_option("--order-tolerance", options->order_tolerance,
+                                  "With automatic orders: stop when the last order adds less than this share "
+                                  "of the total (overrides bake.order_tolerance)."),
+                  kMinOrderTolerance, kMaxOrderTolerance);
+  addThreadsOption(*cmd, options->threads);
   cmd->add_option("--precision", options->precision,
                   "Storage precision in the file (overrides bake.precision).")
       ->check(CLI::IsMember({"half", "float"}));

@@ -2,27 +2,12 @@
 // returns the function that runs it; errors are thrown as skybake::Error.
 #pragma once
 
-#include <cmath>
 #include <functional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 namespace skybake::cli {
-
-// CLI11's Range passes NaN (every comparison with NaN is false): numeric
-// options also get this check.
-inline const CLI::Validator kFiniteNumber(
-    [](std::string& input) -> std::string {
-      try {
-        size_t used = 0;
-        const double value = std::stod(input, &used);
-        if (used == input.size() && std::isfinite(value)) return {};
-      } catch (const std::exception&) {
-      }
-      return "must be a finite number, not '" + input + "'";
-    },
-    "FINITE");
 
 struct Command {
   CLI::App* subcommand;       // parsed() tells whether the user chose it

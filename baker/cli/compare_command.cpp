@@ -5,12 +5,14 @@
 
 #include <chrono>
 #include <memory>
-#include <fstream>
 
 #include <fmt/format.h>
 
+#include "baker/available_memory.h"
 #include "baker/bake.h"
+#include "baker/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/comparators/flat_closed_form.h"
 #include "baker/comparators/hillaire_multiple_scattering.h"
@@ -58,6 +60,11 @@ class BakedSky final : public SkyMethod {
   double seconds_;
   Sky sky_;
 };
+
+// --resolutions: below 1/20 of a table there is nothing left to compare;
+// above 8x the bake of a default-size config needs tens of GiB and hours.
+constexpr double kMinResolutionFactor = 0.05;
+constexpr double kMaxResolutionFactor = 8.0;
 
 int scaled(int size, double factor, int minimum, bool even) {
   int s = std::max(minimum, static_cast<int>(std::lround(size * factor)));
@@ -108,8 +115,35 @@ std::string bandCell(const ErrorReport& r, const char* quantity, const char* ban
                      100 * worst(r, quantity, band, &ErrorStats::max));
 }
 
+// The config at each --resolutions factor, each checked like a config file,
+// and all of them together checked against the machine's memory: every bake
+// is kept until the comparison ends.
+std::vector<BakeConfig> scaledConfigs(const BakeConfig& config, const std::string& source,
+                                      const std::vector<double>& factors) {
+  std::vector<BakeConfig> scaled;
+  uint64_t kept_bytes = 0;
+  uint64_t largest_extra_bytes = 0;  // the most any one bake needs beyond what it keeps
+  for (double factor : factors) {
+    BakeConfig c = config;
+    c.sizes = scaledSizes(config.sizes, factor);
+    validateConfig(c, fmt::format("{} at --resolutions = {}", source, factor));
+    const BakeMemoryEstimate memory = estimateBakeMemory(c);
+    kept_bytes += memory.kept_bytes;
+    largest_extra_bytes = std::max(largest_extra_bytes, memory.peak_bytes - memory.kept_bytes);
+    scaled.push_back(std::move(c));
+  }
+  std::string list;
+  for (double factor : factors) list += fmt::format("{}{}", list.empty() ? "" : ",", factor);
+  requireMemoryAvailable(fmt::format("{}: --resolutions = {}: the comparison (every bake kept to the end)", source, list),
+                         kept_bytes + largest_extra_bytes);
+  return scaled;
+}
+
 void runCompare(const CompareOptions& o) {
+  if (!o.json_path.empty()) requireWritableOutput(o.json_path, {o.config_path, o.queries});
   const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
+  const std::vector<BakeConfig> scaled_configs =
+      scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);
   const AtmosphereParameters& a = config.atmosphere;
   const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
   // Comparators answer rays to the sky or the ground; rays to a point and
@@ -127,12 +161,11 @@ void runCompare(const CompareOptions& o) {
   methods.push_back(std::make_unique<RayMarchedSingleScattering>(a));
   methods.push_back(std::make_unique<FlatClosedFormSingleScattering>(a));
   methods.push_back(std::make_unique<HillaireMultipleScattering>(a));
-  for (double factor : o.resolutions) {
-    BakeConfig scaled_config = config;
-    scaled_config.sizes = scaledSizes(config.sizes, factor);
+  for (size_t i = 0; i < o.resolutions.size(); ++i) {
+    const BakeConfig& scaled_config = scaled_configs[i];
     const TextureSizes& s = scaled_config.sizes;
     SilentProgress silent;
-    fmt::print(stderr, "baking at {}x the configured sizes ...\n", factor);
+    fmt::print(stderr, "baking at {}x the configured sizes ...\n", o.resolutions[i]);
     methods.push_back(std::make_unique<BakedSky>(
         fmt::format("skybake {}x{}x{}x{}, {} orders", s.scattering_r, s.scattering_mu, s.scattering_mu_s,
                     s.scattering_nu, config.bake.orders),
@@ -160,11 +193,8 @@ void runCompare(const CompareOptions& o) {
     rows.push_back(row);
   }
   if (!o.json_path.empty()) {
-    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
-      std::ofstream out(temp);
-      out << nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) << "\n";
-      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
-    });
+    writeFileContentsAtomically(o.json_path,
+                            nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) + "\n");
   }
 }
 
@@ -176,12 +206,13 @@ Command addCompareCommand(CLI::App& app) {
       "compare", "Error against the reference and cost of the bake at several resolutions and of the simpler methods.");
   cmd->add_option("config", o->config_path, "Atmosphere config (default: the built-in Earth).");
   cmd->add_option("--queries", o->queries, "standard, quick or a CSV (see validate).")->capture_default_str();
-  cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
-      ->check(CLI::Range(1, 100000000))
-      ->capture_default_str();
-  cmd->add_option("--resolutions", o->resolutions, "Bake at these multiples of the configured table sizes.")
-      ->delimiter(',')
-      ->check(CLI::Range(0.05, 8.0));
+  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
+                     ->capture_default_str(),
+                 1, kMaxReferencePaths);
+  requireFiniteIn(cmd->add_option("--resolutions", o->resolutions,
+                                  "Bake at these multiples of the configured table sizes.")
+                      ->delimiter(','),
+                  kMinResolutionFactor, kMaxResolutionFactor);
   cmd->add_option("--json", o->json_path, "Also write the table as JSON here.");
   cmd->add_option("--cache-dir", o->cache_dir, "Reference cache directory (see validate).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");

@@ -4,6 +4,8 @@
 #include "baker/cli/commands.h"
 #include "baker/csv_table.h"
 #include "baker/local_frame.h"
+#include "baker/validation/validation_queries.h"
+#include "data_formats/atomic_file.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {
@@ -37,22 +39,20 @@ void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
   for (int c = 0; c < channels; ++c) line += fmt::format(",{:.9g}", s[c]);
 }
 
-// Altitudes below the ground are allowed (treated as on it, like the
-// runtime); beyond this the value is surely a unit mistake.
-constexpr double kMaxQueryAltitude_m = 1e12;
+// Output problems are found before the queries are read or the bake loaded.
+void requireWritableLookupOutput(const LookupOptions& o) {
+  if (!o.output_path.empty()) requireWritableOutput(o.output_path, {o.bake_path, o.queries_path});
+}
 
 void runRadiance(const LookupOptions& o) {
+  requireWritableLookupOutput(o);
   const CsvTable q = CsvTable::read(o.queries_path);
-  const size_t altitude = q.require("altitude_m");
-  const size_t sun_zenith = q.require("sun_zenith_deg");
-  const size_t view_zenith = q.require("view_zenith_deg");
-  const size_t view_azimuth = q.require("view_azimuth_deg");
-  const std::optional<size_t> distance = q.find("distance_m");
-  q.requireRange(altitude, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
-  q.requireRange(sun_zenith, 0.0, 180.0);
-  q.requireRange(view_zenith, 0.0, 180.0);
-  q.requireRange(view_azimuth, -360.0, 360.0);
-  if (distance) q.requireRange(*distance, -1e12, 1e12);
+  const RadianceQueryColumns columns = radianceQueryColumns(q);
+  const size_t altitude = columns.altitude_m;
+  const size_t sun_zenith = columns.sun_zenith_deg;
+  const size_t view_zenith = columns.view_zenith_deg;
+  const size_t view_azimuth = columns.view_azimuth_deg;
+  const std::optional<size_t> distance = columns.distance_m;
 
   const Sky sky = Sky::load(o.bake_path);
   const int n = sky.channelCount();
@@ -73,11 +73,12 @@ void runRadiance(const LookupOptions& o) {
 }
 
 void runIrradiance(const LookupOptions& o) {
+  requireWritableLookupOutput(o);
   const CsvTable q = CsvTable::read(o.queries_path);
   const size_t altitude = q.require("altitude_m");
   const size_t sun_zenith = q.require("sun_zenith_deg");
   q.requireRange(altitude, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
-  q.requireRange(sun_zenith, 0.0, 180.0);
+  q.requireRange(sun_zenith, 0.0, kMaxZenithAngle_deg);
 
   const Sky sky = Sky::load(o.bake_path);
   const int n = sky.channelCount();

@@ -1,6 +1,9 @@
 // skybake: the command line. Only this layer prints errors and picks exit
-// statuses: 0 success, 2 bad input (config, flags, files), 1 internal failure.
+// statuses: 0 success, 2 bad input (config, flags, files, output locations),
+// 1 internal failure.
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <vector>
 
@@ -14,11 +17,34 @@ namespace {
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 1;
 
+// CLI11's own parse errors (unknown subcommand, missing required option) in
+// skybake's form, with its pointer to --help.
+std::string cliFailureMessage(const CLI::App*, const CLI::Error& e) {
+  return fmt::format("skybake: error: {}\nRun with --help for more information.\n", e.what());
+}
+
+// Prints the final error line without throwing: fmt::print throws when
+// stderr itself cannot be written (a file on the full disk being reported).
+void printError(const std::string& message) {
+  std::fputs(message.c_str(), stderr);
+  std::fflush(stderr);
+}
+
+// Everything printed to standard output must have arrived: a full disk
+// behind a redirection is a failed run, not a silently short table.
+bool standardOutputWritten() { return std::fflush(stdout) == 0 && std::ferror(stdout) == 0; }
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) then fails the write with EFBIG, which is
+  // reported and cleaned up like a full disk, instead of killing skybake with
+  // its temporary file left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
+
   CLI::App app{"skybake: bakes physically based sky scattering tables (Bruneton-style) into one "
                "OpenEXR file."};
+  app.failure_message(cliFailureMessage);  // before the subcommands, which copy it
   app.require_subcommand(1);
   const std::vector<skybake::cli::Command> commands = {
       skybake::cli::addBakeCommand(app),
@@ -31,7 +57,16 @@ int main(int argc, char** argv) {
   };
 
   try {
+    // Option checks (baker/cli/option_checks.h) throw skybake::Error from
+    // inside the parse; it is handled below like any other input error.
     app.parse(argc, argv);
+    for (const skybake::cli::Command& command : commands) {
+      if (command.subcommand->parsed()) command.run();
+    }
+    if (!standardOutputWritten()) {
+      throw skybake::Error(skybake::ErrorKind::BadInput,
+                           fmt::format("standard output: cannot write: {}", std::strerror(errno)));
+    }
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -39,19 +74,14 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return kExitBadInput;
-  }
-  try {
-    for (const skybake::cli::Command& command : commands) {
-      if (command.subcommand->parsed()) command.run();
-    }
   } catch (const skybake::Error& e) {
-    fmt::print(stderr, "skybake: error: {}\n", e.what());
+    printError(fmt::format("skybake: error: {}\n", e.what()));
     return e.kind() == skybake::ErrorKind::BadInput ? kExitBadInput : kExitInternal;
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "skybake: error: out of memory\n");
+    printError("skybake: error: out of memory\n");
     return kExitInternal;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "skybake: internal error: {}\n", e.what());
+    printError(fmt::format("skybake: internal error: {}\n", e.what()));
     return kExitInternal;
   }
   return 0;

@@ -3,11 +3,15 @@
 //   [--exposure E] [--tonemap none|reinhard|aces] -o OUT.png|OUT.exr
 #include <optional>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
+#include "baker/available_memory.h"
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/render/sky_image.h"
+#include "baker/validation/validation_queries.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
 
@@ -27,61 +31,85 @@ struct RenderOptions {
   std::optional<double> view_azimuth_deg;
 };
 
+// --fov-deg: below a degree the view is finer than any table resolves; more
+// than a full turn is not a field of view.
+constexpr double kMinFieldOfView_deg = 1.0;
+constexpr double kMaxFieldOfView_deg = 360.0;
+// A perspective projection's image plane grows as tan(fov / 2): at 179
+// degrees it is already 229 times the focal length, at 180 infinite.
+constexpr double kMaxPerspectiveFieldOfView_deg = 179.0;
+// Radiance times exposure must stay within float range (3.4e38): the
+// brightest radiance in an image, the sun's disk, is about 3e4
+// W m^-2 sr^-1 nm^-1 for Earth's sun, leaving a factor of 1e4 to spare.
+constexpr double kMaxExposure = 1e30;
+
+// Memory per pixel while an image is rendered and written: linear RGB floats,
+// the tone-mapped bytes and the encoded file in memory, which is at most
+// about the raw floats but sits in a vector that may have grown to twice that.
+constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3 + 2 * 3 * sizeof(float);
+
 // Largest image side: 16k pixels a side is far beyond any preview and keeps
 // the float image under 3 GiB.
 constexpr int kMaxImageSide = 16384;
 
 void parseSize(const std::string& text, int& width, int& height) {
   const size_t x = text.find('x');
-  int w = 0, h = 0;
-  try {
-    size_t used_w = 0, used_h = 0;
-    if (x == std::string::npos) throw std::invalid_argument("no x");
-    w = std::stoi(text.substr(0, x), &used_w);
-    h = std::stoi(text.substr(x + 1), &used_h);
-    if (used_w != x || used_h != text.size() - x - 1) throw std::invalid_argument("trailing");
-  } catch (const std::exception&) {
-    throwBadInput(fmt::format("--size {}: must be WIDTHxHEIGHT, e.g. 512x512", text));
+  const std::optional<long long> w = x == std::string::npos ? std::nullopt : parseWholeNumber(text.substr(0, x));
+  const std::optional<long long> h = x == std::string::npos ? std::nullopt : parseWholeNumber(text.substr(x + 1));
+  if (!w || !h) refuseOptionValue("--size", text, "must be WIDTHxHEIGHT in whole pixels, e.g. 512x512");
+  if (*w < 1 || *h < 1 || *w > kMaxImageSide || *h > kMaxImageSide) {
+    refuseOptionValue("--size", text, fmt::format("each side must be in [1, {}]", kMaxImageSide));
   }
-  if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide) {
-    throwBadInput(fmt::format("--size {}: each side must be in [1, {}]", text, kMaxImageSide));
-  }
-  width = w;
-  height = h;
+  width = static_cast<int>(*w);
+  height = static_cast<int>(*h);
 }
 
-void writeImage(const std::string& path, const SkyView& view, const std::vector<float>& linear,
-                double exposure, ToneMap tone_map) {
+// True for an .exr output, false for .png; refuses any other.
+bool isExrOutput(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
   const bool exr = extension == ".exr" || extension == ".EXR";
   if (!exr && extension != ".png" && extension != ".PNG") {
     throwBadInput(fmt::format("{}: output must be .png (tone-mapped sRGB) or .exr (linear radiance)", path));
   }
-  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    auto out = OIIO::ImageOutput::create(temp.string());
-    if (!out) throwBadInput(fmt::format("{}: cannot create image writer: {}", path, OIIO::geterror()));
-    OIIO::ImageSpec spec(view.width, view.height, 3, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (exr) spec.attribute("compression", "zip");
-    if (!out->open(temp.string(), spec)) throwBadInput(fmt::format("{}: {}", path, out->geterror()));
-    bool ok;
-    if (exr) {
-      ok = out->write_image(OIIO::TypeDesc::FLOAT, linear.data());
-    } else {
-      const std::vector<unsigned char> display = encodeForDisplay(linear, exposure, tone_map);
-      ok = out->write_image(OIIO::TypeDesc::UINT8, display.data());
-    }
-    if (!ok || !out->close()) throwBadInput(fmt::format("{}: {}", path, out->geterror()));
-  });
+  return exr;
+}
+
+// Encodes the image in memory, then writes it out in one checked write: the
+// PNG writer does not report a full disk (it leaves a short file and says it
+// succeeded).
+void writeImage(const std::string& path, const SkyView& view, const std::vector<float>& linear,
+                double exposure, ToneMap tone_map) {
+  const bool exr = isExrOutput(path);
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  auto out = OIIO::ImageOutput::create(path, &memory);
+  if (!out || !out->supports("ioproxy")) {
+    throw Error(ErrorKind::Internal, fmt::format("{}: no in-memory image writer: {}", path, OIIO::geterror()));
+  }
+  OIIO::ImageSpec spec(view.width, view.height, 3, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (exr) spec.attribute("compression", "zip");
+  bool ok = out->set_ioproxy(&memory) && out->open(path, spec);
+  if (ok && exr) {
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, linear.data());
+  } else if (ok) {
+    const std::vector<unsigned char> display = encodeForDisplay(linear, exposure, tone_map);
+    ok = out->write_image(OIIO::TypeDesc::UINT8, display.data());
+  }
+  if (!ok || !out->close()) throw Error(ErrorKind::Internal, fmt::format("{}: {}", path, out->geterror()));
+  writeFileContentsAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 void runRender(RenderOptions o) {
+  isExrOutput(o.output_path);
+  requireWritableOutput(o.output_path, {o.bake_path});
   SkyView& v = o.view;
   v.projection = o.projection == "latlong"       ? Projection::LatLong
                  : o.projection == "perspective" ? Projection::Perspective
                                                  : Projection::Fisheye;
   v.fov_deg = o.fov_deg > 0.0 ? o.fov_deg : (v.projection == Projection::Perspective ? 90.0 : 180.0);
-  if (v.projection == Projection::Perspective && v.fov_deg >= 179.0) {
-    throwBadInput(fmt::format("--fov-deg {}: a perspective camera needs less than 179 degrees", v.fov_deg));
+  if (v.projection == Projection::Perspective && v.fov_deg >= kMaxPerspectiveFieldOfView_deg) {
+    refuseOptionValue("--fov-deg", fmt::format("{}", v.fov_deg),
+                      fmt::format("a perspective camera needs less than {} degrees", kMaxPerspectiveFieldOfView_deg));
   }
   v.width = v.projection == Projection::LatLong ? 1024 : 512;
   v.height = 512;
@@ -90,6 +118,8 @@ void runRender(RenderOptions o) {
   v.view_azimuth_deg = o.view_azimuth_deg.value_or(v.sun_azimuth_deg);
   const ToneMap tone_map = o.tone_map == "none" ? ToneMap::None : o.tone_map == "reinhard" ? ToneMap::Reinhard : ToneMap::Aces;
   const Sky sky = Sky::load(o.bake_path);
+  requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
+                         static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) * kImageBytesPerPixel);
   writeImage(o.output_path, v, renderSkyRadiance(sky, v), o.exposure, tone_map);
 }
 
@@ -100,25 +130,33 @@ Command addRenderCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render the sky of a bake as an image.");
   cmd->add_option("file", o->bake_path, "Bake file (.exr).")->required();
   cmd->add_option("-o,--output", o->output_path, "Image: .png (tone-mapped sRGB, with the sun disk) or .exr (linear radiance, W m^-2 sr^-1 nm^-1).")->required();
-  cmd->add_option("--altitude-m", o->view.altitude_m, "Camera altitude above the ground, m.")->required()
-      ->check(kFiniteNumber)->check(CLI::Range(-1e12, 1e12));
-  cmd->add_option("--sun-zenith-deg", o->view.sun_zenith_deg, "Sun zenith angle, degrees.")->required()
-      ->check(kFiniteNumber)->check(CLI::Range(0.0, 180.0));
-  cmd->add_option("--sun-azimuth-deg", o->view.sun_azimuth_deg, "Sun azimuth, degrees (default 0).")
-      ->check(kFiniteNumber)->check(CLI::Range(-360.0, 360.0));
+  requireFiniteIn(cmd->add_option("--altitude-m", o->view.altitude_m, "Camera altitude above the ground, m.")
+                      ->required(),
+                  -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+  requireFiniteIn(cmd->add_option("--sun-zenith-deg", o->view.sun_zenith_deg, "Sun zenith angle, degrees.")
+                      ->required(),
+                  0.0, kMaxZenithAngle_deg);
+  requireFiniteIn(cmd->add_option("--sun-azimuth-deg", o->view.sun_azimuth_deg, "Sun azimuth, degrees (default 0)."),
+                  -kMaxAzimuth_deg, kMaxAzimuth_deg);
   cmd->add_option("--projection", o->projection, "fisheye (looking up), latlong (environment map) or perspective.")
       ->check(CLI::IsMember({"fisheye", "latlong", "perspective"}))->capture_default_str();
-  cmd->add_option("--fov-deg", o->fov_deg, "Field of view, degrees (fisheye: full cone, default 180; perspective: horizontal, default 90).")
-      ->check(kFiniteNumber)->check(CLI::Range(1.0, 360.0));
+  requireFiniteIn(cmd->add_option("--fov-deg", o->fov_deg,
+                                  "Field of view, degrees (fisheye: full cone, default 180; perspective: "
+                                  "horizontal, default 90)."),
+                  kMinFieldOfView_deg, kMaxFieldOfView_deg);
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 512x512, latlong 1024x512).");
-  cmd->add_option("--exposure", o->exposure, "Radiance multiplier before tone mapping (PNG only).")
-      ->check(kFiniteNumber)->check(CLI::PositiveNumber)->capture_default_str();
+  requirePositiveUpTo(cmd->add_option("--exposure", o->exposure, "Radiance multiplier before tone mapping (PNG only).")
+                          ->capture_default_str(),
+                      kMaxExposure);
   cmd->add_option("--tonemap", o->tone_map, "Tone mapping for PNG: none, reinhard or aces.")
       ->check(CLI::IsMember({"none", "reinhard", "aces"}))->capture_default_str();
-  cmd->add_option("--view-elevation-deg", o->view_elevation_deg, "Perspective: view elevation above the horizontal, degrees.")
-      ->check(kFiniteNumber)->check(CLI::Range(-90.0, 90.0))->capture_default_str();
-  cmd->add_option("--view-azimuth-deg", o->view_azimuth_deg, "Perspective: view azimuth, degrees (default: the sun's).")
-      ->check(kFiniteNumber);
+  requireFiniteIn(cmd->add_option("--view-elevation-deg", o->view_elevation_deg,
+                                  "Perspective: view elevation above the horizontal, degrees.")
+                      ->capture_default_str(),
+                  -90.0, 90.0);
+  requireFiniteIn(cmd->add_option("--view-azimuth-deg", o->view_azimuth_deg,
+                                  "Perspective: view azimuth, degrees (default: the sun's)."),
+                  -kMaxAzimuth_deg, kMaxAzimuth_deg);
   return {cmd, [o] { runRender(*o); }};
 }
 

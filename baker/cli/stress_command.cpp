@@ -4,11 +4,11 @@
 #include <omp.h>
 
 #include <chrono>
-#include <fstream>
 
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/stress/stress_matrix.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
@@ -35,6 +35,7 @@ std::vector<StressCase> selectedCases(const StressOptions& o) {
 }
 
 void runStress(const StressOptions& o) {
+  if (!o.json_path.empty()) requireWritableOutput(o.json_path);
   const std::vector<StressCase> cases = selectedCases(o);
   if (o.threads > 0) omp_set_num_threads(o.threads);
   const auto start = std::chrono::steady_clock::now();
@@ -56,11 +57,7 @@ void runStress(const StressOptions& o) {
     j["quick"] = o.quick;
     j["threads"] = o.threads > 0 ? o.threads : omp_get_max_threads();
     j["seconds"] = seconds;
-    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
-      std::ofstream out(temp);
-      out << j.dump(2) << "\n";
-      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
-    });
+    writeFileContentsAtomically(o.json_path, j.dump(2) + "\n");
   }
   if (failed > 0) {
     throw Error(ErrorKind::Internal, fmt::format("stress: {} of {} cases failed an invariant", failed, rows.size()));
@@ -77,7 +74,7 @@ Command addStressCommand(CLI::App& app) {
   cmd->add_flag("--quick", o->quick, "Smallest tables and a lower order cap (seconds, for CTest).");
   cmd->add_option("--json", o->json_path, "Also write the results as JSON.");
   cmd->add_option("--case", o->case_name, "Run only this case.");
-  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores).")->check(CLI::Range(1, 4096));
+  addThreadsOption(*cmd, o->threads);
   return {cmd, [o] { runStress(*o); }};
 }
 

@@ -1,11 +1,10 @@
 // skybake validate FILE.exr [--queries standard|quick|Q.csv] [--reference-samples N] [--json OUT.json]
 #include <omp.h>
 
-#include <fstream>
-
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/report_sidecar.h"
 #include "baker/validation/validation.h"
@@ -52,16 +51,16 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
     }
     text += "\n";
   }
-  writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp);
-    out << text;
-    if (!out) throwBadInput(fmt::format("{}: cannot write", path));
-  });
+  writeFileContentsAtomically(path, text);
 }
 
 void runValidate(const ValidateOptions& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
+  for (const std::string& output : {o.json_path, o.details_path}) {
+    if (!output.empty()) requireWritableOutput(output, {o.bake_path, o.queries});
+  }
   const Sky sky = Sky::load(o.bake_path);
+  requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
   const QuerySet queries = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
@@ -83,11 +82,7 @@ void runValidate(const ValidateOptions& o) {
   j["bake_file"] = o.bake_path;
   j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
   if (!o.json_path.empty()) {
-    writeFileAtomically(o.json_path, [&](const std::filesystem::path& temp) {
-      std::ofstream out(temp);
-      out << j.dump(2) << "\n";
-      if (!out) throwBadInput(fmt::format("{}: cannot write", o.json_path));
-    });
+    writeFileContentsAtomically(o.json_path, j.dump(2) + "\n");
   }
   if (!o.details_path.empty()) writeDetails(o.details_path, a, queries, reference, bake);
   nlohmann::ordered_json sidecar = readReportSidecar(o.bake_path);
@@ -106,16 +101,16 @@ Command addValidateCommand(CLI::App& app) {
                   "standard (docs/QUERIES.md), quick (a small subset) or a CSV with the columns of "
                   "'lookup radiance'.")
       ->capture_default_str();
-  cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
-      ->check(CLI::Range(1, 100000000))
-      ->capture_default_str();
+  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
+                     ->capture_default_str(),
+                 1, kMaxReferencePaths);
   cmd->add_option("--json", o->json_path, "Also write the report as JSON here.");
   cmd->add_option("--details", o->details_path, "Also write every query's bake and reference values (CSV).");
   cmd->add_option("--cache-dir", o->cache_dir,
                   "Reference cache directory (default $SKYBAKE_CACHE_DIR, $XDG_CACHE_HOME/skybake or "
                   "~/.cache/skybake).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
-  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores).")->check(CLI::Range(1, 4096));
+  addThreadsOption(*cmd, o->threads);
   return {cmd, [o] { runValidate(*o); }};
 }
 

@@ -91,11 +91,7 @@ void ReferenceCache::save() const {
     throwBadInput(fmt::format("{}: cannot create the reference cache directory: {}", file_.parent_path().string(),
                               error.message()));
   }
-  writeFileAtomically(file_, [&](const std::filesystem::path& temp) {
-    std::ofstream out(temp);
-    out << nlohmann::json{{"entries", entries}}.dump();
-    if (!out) throwBadInput(fmt::format("{}: cannot write", file_.string()));
-  });
+  writeFileContentsAtomically(file_, nlohmann::json{{"entries", entries}}.dump());
 }
 
 }  // namespace skybake

@@ -12,6 +12,7 @@
 
 #include "baker/reference/reference_solver.h"
 #include "baker/local_frame.h"
+#include "data_formats/error.h"
 #include "runtime/atmosphere_ray.h"
 
 namespace skybake {
@@ -46,6 +47,12 @@ ReferenceSettings referenceSettings(int paths, const std::string& cache_dir, boo
   settings.cache_directory = no_cache            ? std::filesystem::path()
                              : cache_dir.empty() ? defaultReferenceCacheDirectory()
                                                  : std::filesystem::path(cache_dir);
+  // Found now, not after the reference has been computed and cannot be kept.
+  std::error_code error;
+  if (!settings.cache_directory.empty() && std::filesystem::exists(settings.cache_directory, error) &&
+      !std::filesystem::is_directory(settings.cache_directory, error)) {
+    throwBadInput(fmt::format("{}: the reference cache directory is a file", settings.cache_directory.string()));
+  }
   return settings;
 }
 

@@ -21,6 +21,10 @@ namespace skybake {
 // small says nothing a renderer could show. They are counted as skipped.
 inline constexpr double kSmallestComparedValue = 1e-5;
 
+// More Monte Carlo paths per query than this would take days per query set
+// (--reference-samples).
+inline constexpr int kMaxReferencePaths = 100000000;
+
 struct ReferenceSettings {
   int paths = 32768;  // Monte Carlo paths per query (see docs/QUERIES.md for the noise this gives)
   std::filesystem::path cache_directory = defaultReferenceCacheDirectory();  // empty: no cache

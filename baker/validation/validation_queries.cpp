@@ -53,22 +53,26 @@ QuerySet quickQuerySet(double thickness) {
                  false);
 }
 
+RadianceQueryColumns radianceQueryColumns(const CsvTable& q) {
+  const RadianceQueryColumns c{q.require("altitude_m"), q.require("sun_zenith_deg"), q.require("view_zenith_deg"),
+                               q.require("view_azimuth_deg"), q.find("distance_m")};
+  q.requireRange(c.altitude_m, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+  q.requireRange(c.sun_zenith_deg, 0.0, kMaxZenithAngle_deg);
+  q.requireRange(c.view_zenith_deg, 0.0, kMaxZenithAngle_deg);
+  q.requireRange(c.view_azimuth_deg, -kMaxAzimuth_deg, kMaxAzimuth_deg);
+  if (c.distance_m) q.requireRange(*c.distance_m, -kMaxQueryDistance_m, kMaxQueryDistance_m);
+  return c;
+}
+
 QuerySet querySetFromCsv(const std::filesystem::path& path) {
   const CsvTable q = CsvTable::read(path);
-  const size_t altitude = q.require("altitude_m");
-  const size_t sun_zenith = q.require("sun_zenith_deg");
-  const size_t view_zenith = q.require("view_zenith_deg");
-  const size_t view_azimuth = q.require("view_azimuth_deg");
-  const std::optional<size_t> distance = q.find("distance_m");
-  q.requireRange(altitude, -1e12, 1e12);
-  q.requireRange(sun_zenith, 0.0, 180.0);
-  q.requireRange(view_zenith, 0.0, 180.0);
-  q.requireRange(view_azimuth, -360.0, 360.0);
+  const RadianceQueryColumns c = radianceQueryColumns(q);
   QuerySet set;
   set.name = path.filename().string();
   for (size_t row = 0; row < q.rowCount(); ++row) {
-    set.radiance.push_back({q.value(row, altitude), q.value(row, sun_zenith), q.value(row, view_zenith),
-                            q.value(row, view_azimuth), distance ? q.value(row, *distance) : 0.0});
+    set.radiance.push_back({q.value(row, c.altitude_m), q.value(row, c.sun_zenith_deg),
+                            q.value(row, c.view_zenith_deg), q.value(row, c.view_azimuth_deg),
+                            c.distance_m ? q.value(row, *c.distance_m) : 0.0});
   }
   return set;
 }

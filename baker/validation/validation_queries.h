@@ -3,10 +3,23 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace skybake {
+
+class CsvTable;
+
+// Limits on a query's numbers, shared by the query CSVs and render's camera.
+// Altitudes below the ground are allowed (treated as on it, like the
+// runtime); beyond 1e12 m (seven astronomical units) an altitude or distance
+// is surely a unit mistake.
+inline constexpr double kMaxQueryAltitude_m = 1e12;
+inline constexpr double kMaxQueryDistance_m = 1e12;
+// Zenith angles lie in [0, 180] degrees; azimuths within one turn either way.
+inline constexpr double kMaxZenithAngle_deg = 180.0;
+inline constexpr double kMaxAzimuth_deg = 360.0;
 
 struct RadianceQuery {
   double altitude_m;
@@ -35,6 +48,18 @@ QuerySet standardQuerySet(double atmosphere_thickness_m);
 
 // A small subset of the standard set (for CI and quick looks).
 QuerySet quickQuerySet(double atmosphere_thickness_m);
+
+// The columns of a radiance query CSV (those of `skybake lookup radiance`),
+// each value checked against the limits above. Throws Error(BadInput) with
+// the file, line and column of a missing column or an out-of-range value.
+struct RadianceQueryColumns {
+  size_t altitude_m;
+  size_t sun_zenith_deg;
+  size_t view_zenith_deg;
+  size_t view_azimuth_deg;
+  std::optional<size_t> distance_m;
+};
+RadianceQueryColumns radianceQueryColumns(const CsvTable& table);
 
 // Radiance queries from a CSV with the columns of `skybake lookup radiance`.
 QuerySet querySetFromCsv(const std::filesystem::path& path);

@@ -1,0 +1,66 @@
+#include "baker/bake_memory_estimate.h"
+
+#include <initializer_list>
+#include <limits>
+
+#include "data_formats/spectrum.h"
+
+namespace skybake {
+namespace {
+
+constexpr uint64_t kSaturated = std::numeric_limits<uint64_t>::max();
+
+// The product of non-negative factors, or kSaturated if it overflows.
+uint64_t product(std::initializer_list<uint64_t> factors) {
+  uint64_t result = 1;
+  for (uint64_t f : factors) {
+    if (__builtin_mul_overflow(result, f, &result)) return kSaturated;
+  }
+  return result;
+}
+
+uint64_t sum(std::initializer_list<uint64_t> terms) {
+  uint64_t result = 0;
+  for (uint64_t t : terms) {
+    if (__builtin_add_overflow(result, t, &result)) return kSaturated;
+  }
+  return result;
+}
+
+uint64_t axis(int size) { return size > 0 ? static_cast<uint64_t>(size) : 0; }
+
+// 4D tables alive at once at the peak of bakeAtmosphere, counted from its
+// order loop. With one order: the single Rayleigh and Mie tables, the
+// scattering table (a copy of the Rayleigh one) and the zeroed
+// multiple-scattering density. From order 2 on, while the multiple-scattering
+// stage builds its table, add the scattering density at two texel sets and
+// the last order's density, the new table; from order 3 on, also the
+// previous order's table, still read by nothing but not yet replaced.
+int tables4DAtPeak(int orders) {
+  if (orders <= 1) return 4;
+  if (orders == 2) return 8;
+  return 9;
+}
+
+}  // namespace
+
+BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
+  const TextureSizes& s = config.sizes;
+  const uint64_t texel_bytes = sizeof(Spectrum);
+  const uint64_t transmittance = product({axis(s.transmittance_mu), axis(s.transmittance_r), texel_bytes});
+  const uint64_t irradiance = product({axis(s.irradiance_mu_s), axis(s.irradiance_r), texel_bytes});
+  BakeMemoryEstimate e;
+  e.table_4d_bytes = product(
+      {axis(s.scattering_r), axis(s.scattering_mu), axis(s.scattering_mu_s), axis(s.scattering_nu), texel_bytes});
+  e.tables_4d_at_peak = tables4DAtPeak(config.bake.auto_orders ? config.bake.max_orders : config.bake.orders);
+  // 2D: the transmittance table, the summed sky irradiance, and the last
+  // order's irradiance beside the one being computed.
+  e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), transmittance,
+                      product({3, irradiance})});
+  // The file's tables: scattering, single Mie, multiple-scattering density,
+  // transmittance and irradiance.
+  e.kept_bytes = sum({product({3, e.table_4d_bytes}), transmittance, irradiance});
+  return e;
+}
+
+}  // namespace skybake

@@ -1,0 +1,25 @@
+// The memory a bake needs, from its config alone, so that a bake too large
+// for the machine is refused before anything is allocated.
+#pragma once
+
+#include <cstdint>
+
+#include "data_formats/atmosphere_parameters.h"
+
+namespace skybake {
+
+struct BakeMemoryEstimate {
+  uint64_t table_4d_bytes = 0;  // one table of the scattering table's size
+  int tables_4d_at_peak = 0;    // how many of them are alive at once at the peak
+  uint64_t peak_bytes = 0;      // every table alive at the peak, 4D and 2D
+  uint64_t kept_bytes = 0;      // the tables the finished bake keeps (its file's)
+};
+
+// Table memory at the peak of bakeAtmosphere for `config`'s sizes and
+// orders (automatic orders: up to bake.max_orders). Every texel is a
+// Spectrum (kMaxChannels floats) whatever the channel count. Products that
+// would overflow 64 bits saturate at UINT64_MAX instead of wrapping round to
+// a small number. The process's own code and libraries are not included.
+BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config);
+
+}  // namespace skybake

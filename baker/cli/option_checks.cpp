@@ -1,0 +1,81 @@
+#include "baker/cli/option_checks.h"
+
+#include <charconv>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "data_formats/error.h"
+
+namespace skybake::cli {
+namespace {
+
+// The number `text` spells exactly (no trailing characters), finite or not.
+std::optional<double> parseNumber(const std::string& text) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
+  return value;
+}
+
+// Adds a check that refuses with `reason` unless `accepts(value text)`.
+template <typename Accepts>
+CLI::Option* addCheck(CLI::Option* option, std::string description, std::string reason, Accepts accepts) {
+  const std::string name = option->get_name();
+  option->check(CLI::Validator(
+      [name, reason, accepts](std::string& text) -> std::string {
+        if (!accepts(text)) refuseOptionValue(name, text, reason);
+        return {};
+      },
+      std::move(description)));
+  return option;
+}
+
+}  // namespace
+
+void refuseOptionValue(const std::string& option, const std::string& value, const std::string& reason) {
+  throwBadInput(fmt::format("{} = {}: {}", option, value, reason));
+}
+
+std::optional<long long> parseWholeNumber(const std::string& text) {
+  long long value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
+  return value;
+}
+
+CLI::Option* requireFiniteIn(CLI::Option* option, double lowest, double highest) {
+  return addCheck(option, fmt::format("finite number in [{:g}, {:g}]", lowest, highest),
+                  fmt::format("must be a finite number in [{:g}, {:g}]", lowest, highest),
+                  [lowest, highest](const std::string& text) {
+                    const std::optional<double> v = parseNumber(text);
+                    return v && std::isfinite(*v) && *v >= lowest && *v <= highest;
+                  });
+}
+
+CLI::Option* requirePositiveUpTo(CLI::Option* option, double highest) {
+  return addCheck(option, fmt::format("finite number in (0, {:g}]", highest),
+                  fmt::format("must be a finite number in (0, {:g}]", highest),
+                  [highest](const std::string& text) {
+                    const std::optional<double> v = parseNumber(text);
+                    return v && std::isfinite(*v) && *v > 0.0 && *v <= highest;
+                  });
+}
+
+CLI::Option* requireWholeIn(CLI::Option* option, long long lowest, long long highest) {
+  return addCheck(option, fmt::format("whole number in [{}, {}]", lowest, highest),
+                  fmt::format("must be a whole number in [{}, {}]", lowest, highest),
+                  [lowest, highest](const std::string& text) {
+                    const std::optional<long long> v = parseWholeNumber(text);
+                    return v && *v >= lowest && *v <= highest;
+                  });
+}
+
+CLI::Option* addThreadsOption(CLI::App& command, int& threads) {
+  return requireWholeIn(command.add_option("--threads", threads, "Worker threads (default: all cores)."), 1,
+                        kMaxThreadCount);
+}
+
+}  // namespace skybake::cli

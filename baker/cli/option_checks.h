@@ -1,0 +1,42 @@
+// Checks for numeric command-line options, shared by every subcommand.
+//
+// CLI11's Range lets NaN through (every comparison with NaN is false), prints
+// its bounds with six decimals ("0.000000" for 1e-9) and words its own
+// message. These checks refuse non-finite and out-of-range values and word
+// the refusal like every other skybake input error: "<option> = <value>:
+// <reason>", exit status 2. They throw skybake::Error, which CLI11 passes
+// through its parse (it catches only its own ValidationError), so the option
+// name is not prefixed twice.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace skybake::cli {
+
+// A finite number in [lowest, highest].
+CLI::Option* requireFiniteIn(CLI::Option* option, double lowest, double highest);
+
+// A finite number in (0, highest].
+CLI::Option* requirePositiveUpTo(CLI::Option* option, double highest);
+
+// A whole number (no sign other than '-', no fraction, no exponent) in
+// [lowest, highest].
+CLI::Option* requireWholeIn(CLI::Option* option, long long lowest, long long highest);
+
+// More worker threads than this is a typo, not a machine.
+inline constexpr long long kMaxThreadCount = 4096;
+
+// The --threads option every parallel subcommand has: a whole number in
+// [1, kMaxThreadCount]; `threads` stays 0 (all cores) when it is not given.
+CLI::Option* addThreadsOption(CLI::App& command, int& threads);
+
+// The whole number `text` spells exactly, or nothing.
+std::optional<long long> parseWholeNumber(const std::string& text);
+
+// Throws Error(BadInput) "<option> = <value>: <reason>".
+[[noreturn]] void refuseOptionValue(const std::string& option, const std::string& value, const std::string& reason);
+
+}  // namespace skybake::cli

@@ -1,0 +1,279 @@
+#!/usr/bin/env bash
+# Bad input, everywhere a user can give it: command-line values, query CSVs,
+# bake files, output paths and sizes beyond the machine's memory. Each check
+# asserts the message, exit status 2 and, where something is written, that a
+# pre-existing output is byte-identical afterwards and no temporary file is
+# left. docs/STABILITY.md ("Bad input") lists the kinds.
+# Usage: bad_input_test.sh SKYBAKE_BINARY SOURCE_DIR
+set -u
+skybake=$1
+source_dir=$2
+small="$source_dir/tests/cli/small_earth.toml"
+work=$(mktemp -d)
+trap 'chmod -R u+w "$work"; rm -rf "$work"' EXIT
+failures=0
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# run ARGS...: skybake ARGS, stdout to $work/stdout and stderr to
+# $work/stderr. With file_limit_kib set, under that file-size limit (ulimit
+# -f): writes past it fail with EFBIG, as on a full disk; its messages then
+# go through a pipe, which the limit does not cover. With memory_limit_kib
+# set, under that address-space limit (ulimit -v): a machine that small,
+# whatever this one has.
+run() {
+  if [ -n "${file_limit_kib:-}" ]; then
+    : >"$work/stdout"
+    (ulimit -f "$file_limit_kib" && exec "$skybake" "$@" 2>&1 >/dev/null) | cat >"$work/stderr"
+    return "${PIPESTATUS[0]}"
+  fi
+  if [ -n "${memory_limit_kib:-}" ]; then
+    (ulimit -v "$memory_limit_kib" && exec "$skybake" "$@" >"$work/stdout" 2>"$work/stderr")
+    return
+  fi
+  "$skybake" "$@" >"$work/stdout" 2>"$work/stderr"
+}
+
+# refused FRAGMENT -- ARGS...: skybake ARGS exits 2 and its stderr holds
+# "skybake: error: " and FRAGMENT.
+refused() {
+  local fragment=$1; shift 2
+  run "$@"
+  local got=$?
+  if [ "$got" -ne 2 ]; then fail "skybake $* exited $got, expected 2: $(cat "$work/stderr")"; return; fi
+  grep -qF -- "skybake: error: " "$work/stderr" || fail "skybake $*: no 'skybake: error:' line: $(cat "$work/stderr")"
+  grep -qF -- "$fragment" "$work/stderr" || fail "skybake $*: stderr lacks '$fragment': $(cat "$work/stderr")"
+}
+
+# kept FILE FRAGMENT -- ARGS...: like refused, and FILE (which must exist)
+# is byte-identical afterwards and no temporary file is left beside it.
+kept() {
+  local file=$1 fragment=$2; shift 3
+  local before
+  before=$(sha256sum <"$file")
+  refused "$fragment" -- "$@"
+  [ "$(sha256sum <"$file")" = "$before" ] || fail "skybake $*: changed the existing $file"
+  if ls -A "$(dirname "$file")" | grep -q -- '\.tmp-'; then
+    fail "skybake $*: left a temporary file: $(ls -A "$(dirname "$file")" | grep -- '\.tmp-')"
+    rm -f "$(dirname "$file")"/.*.tmp-*
+  fi
+}
+
+# A small good bake and outputs of every kind to aim failing runs at.
+"$skybake" bake "$small" -o "$work/good.exr" --threads 2 --reproducible 2>"$work/stderr" \
+  || { echo "FAIL: the small bake failed: $(cat "$work/stderr")"; exit 1; }
+printf 'earlier output\n' >"$work/existing.csv"
+cp "$work/existing.csv" "$work/existing.png"
+
+# --- Command-line values: every numeric option, with the option, the value
+# and the reason in the message. One shared check serves every option
+# (baker/cli/option_checks.h), so the full set of bad values goes through one
+# option of each kind and the others get the values CLI11 alone would let by
+# (nan, which passes its Range) or misreport. Each run costs ~0.3 s of
+# dynamic loading, so the set is kept small.
+bake=(bake "$small" -o "$work/never.exr")
+for v in 0 -1 2.5 nan inf 1e9 abc ''; do
+  refused "--threads = $v: must be a whole number in [1, 4096]" -- "${bake[@]}" --threads "$v"
+done
+for v in -3 1e3 99999999999999999999; do
+  refused "--orders = $v: must be 'auto' or a whole number in [1, 1000]" -- "${bake[@]}" --orders "$v"
+done
+for v in 0 nan -inf 1e-12; do
+  refused "--order-tolerance = $v: must be a finite number in [1e-09, 0.5]" -- "${bake[@]}" --orders auto --order-tolerance "$v"
+done
+[ -e "$work/never.exr" ] && fail "a refused bake wrote its output"
+
+render=(render "$work/none.exr" -o "$work/never.png")
+view=(--altitude-m 0 --sun-zenith-deg 30)
+refused "--altitude-m = -1e30: must be a finite number in [-1e+12, 1e+12]" -- "${render[@]}" --sun-zenith-deg 30 --altitude-m -1e30
+refused "--altitude-m = nan: must be a finite number in [-1e+12, 1e+12]" -- "${render[@]}" --sun-zenith-deg 30 --altitude-m nan
+refused "--sun-zenith-deg = nan: must be a finite number in [0, 180]" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg nan
+refused "--sun-zenith-deg = -inf: must be a finite number in [0, 180]" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg -inf
+refused "--sun-azimuth-deg = nan: must be a finite number in [-360, 360]" -- "${render[@]}" "${view[@]}" --sun-azimuth-deg nan
+refused "--view-azimuth-deg = 1e300: must be a finite number in [-360, 360]" -- "${render[@]}" "${view[@]}" --view-azimuth-deg 1e300
+refused "--view-elevation-deg = nan: must be a finite number in [-90, 90]" -- "${render[@]}" "${view[@]}" --view-elevation-deg nan
+refused "--fov-deg = 0: must be a finite number in [1, 360]" -- "${render[@]}" "${view[@]}" --fov-deg 0
+refused "--exposure = 0: must be a finite number in (0, 1e+30]" -- "${render[@]}" "${view[@]}" --exposure 0
+refused "--exposure = nan: must be a finite number in (0, 1e+30]" -- "${render[@]}" "${view[@]}" --exposure nan
+refused "--size = -5x5: each side must be in [1, 16384]" -- "${render[@]}" "${view[@]}" --size -5x5
+refused "--size = 99999999999x3: each side must be in [1, 16384]" -- "${render[@]}" "${view[@]}" --size 99999999999x3
+refused "--size = nanxnan: must be WIDTHxHEIGHT" -- "${render[@]}" "${view[@]}" --size nanxnan
+
+refused "--reference-samples = nan: must be a whole number in [1, 100000000]" -- validate "$work/none.exr" --reference-samples nan
+refused "--reference-samples = -5: must be a whole number in [1, 100000000]" -- compare "$small" --reference-samples -5
+refused "--threads = 0: must be a whole number in [1, 4096]" -- validate "$work/none.exr" --threads 0
+refused "--threads = nan: must be a whole number in [1, 4096]" -- stress --threads nan
+for v in 0 nan inf; do
+  refused "--resolutions = $v: must be a finite number in [0.05, 8]" -- compare "$small" --resolutions "1,$v"
+done
+
+# --- Config files: config_test.cpp checks every key; here the keys of
+# automatic orders through the command line, and an existing bake kept.
+cp "$work/good.exr" "$work/kept.exr"
+config_with() { sed "s/^orders = 3/$1/" "$small" >"$work/c.toml"; }
+config_with 'orders = "auto"\norder_tolerance = nan'
+kept "$work/kept.exr" "c.toml:39: bake.order_tolerance = nan: must be finite" -- bake "$work/c.toml" -o "$work/kept.exr"
+config_with 'orders = "auto"\nmax_orders = 1'
+kept "$work/kept.exr" "c.toml: bake.max_orders = 1: must be in [2, 1000]" -- bake "$work/c.toml" -o "$work/kept.exr"
+config_with 'orders = 3\ntail_estimate = "yes"'
+kept "$work/kept.exr" "c.toml:39: bake.tail_estimate = 'yes': must be true or false" -- bake "$work/c.toml" -o "$work/kept.exr"
+config_with 'orders = "many"'
+kept "$work/kept.exr" "c.toml:38: bake.orders = 'many': must be a whole number or \"auto\"" -- bake "$work/c.toml" -o "$work/kept.exr"
+
+# --- Query CSVs (lookup radiance|irradiance, validate --queries): the file,
+# line and column, and the reason; an earlier output stays as it was.
+header='altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg'
+radiance() { kept "$work/existing.csv" "$1" -- lookup radiance "$work/good.exr" --queries "$work/q.csv" -o "$work/existing.csv"; }
+printf '' >"$work/q.csv"
+radiance "q.csv: no header row: the file is empty"
+printf '%s\n' "$header" >"$work/q.csv"
+radiance "q.csv: no query rows after the header (line 1)"
+kept "$work/existing.csv" "q.csv: no query rows after the header (line 1)" -- validate "$work/good.exr" --queries "$work/q.csv" --no-cache --json "$work/existing.csv"
+printf '# comment\naltitude_m,sun_zenith_deg,view_zenith_deg\n0,30,0\n' >"$work/q.csv"
+radiance "q.csv:2: missing column 'view_azimuth_deg' (the header has: altitude_m, sun_zenith_deg, view_zenith_deg)"
+printf '%s\n0,30,0,0\n0,thirty,0,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:3:2 (sun_zenith_deg): 'thirty' is not a finite number"
+printf '%s\n0,30,nan,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:3 (view_zenith_deg): 'nan' is not a finite number"
+kept "$work/existing.csv" "q.csv:2:3 (view_zenith_deg): 'nan' is not a finite number" -- validate "$work/good.exr" --queries "$work/q.csv" --no-cache --json "$work/existing.csv"
+printf '%s\n0,30,0,-inf\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:4 (view_azimuth_deg): '-inf' is not a finite number"
+printf '%s\n0,30,0,0\n0,30,,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:3:3 (view_zenith_deg): '' is not a finite number"
+printf '%s\n1e13,30,0,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:1 (altitude_m): 1e13 is out of range [-1e+12, 1e+12]"
+printf '%s\n0,30,0\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:4: 3 cells, the header (line 1) has 4 columns"
+printf '%s\n0,30,0,0,7\n' "$header" >"$work/q.csv"
+radiance "q.csv:2:5: 5 cells, the header (line 1) has 4 columns"
+printf 'altitude_m,sun_zenith_deg,altitude_m\n' >"$work/q.csv"
+radiance "q.csv:1:3: column 'altitude_m' appears twice (also column 1)"
+{ printf '%s\n' "$header"; head -c 70000 /dev/zero | tr '\0' '0'; printf '\n'; } >"$work/q.csv"
+radiance "q.csv:2: line longer than 65536 bytes: not a query CSV"
+radiance_missing() { kept "$work/existing.csv" "$1" -- lookup radiance "$work/good.exr" --queries "$2" -o "$work/existing.csv"; }
+radiance_missing "no_such.csv: cannot open query file: No such file or directory" "$work/no_such.csv"
+radiance_missing "is a directory, not a query file" "$work"
+printf 'altitude_m,sun_zenith_deg\n0,190\n' >"$work/e.csv"
+kept "$work/existing.csv" "e.csv:2:2 (sun_zenith_deg): 190 is out of range [0, 180]" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/existing.csv"
+
+# --- Bake files given as input (info, lookup, render, validate): truncated,
+# bit-flipped, a format version this skybake does not read, a part missing.
+# Each message names the file; the reader's unit tests
+# (tests/data_formats/bake_file_corrupt_test.cpp) cover the cases in depth.
+corrupt="python3 $source_dir/tests/cli/corrupt_bake.py"
+bytes=$(stat -c %s "$work/good.exr")
+head -c 1000 "$work/good.exr" >"$work/cut_header.exr"
+head -c $((bytes / 2)) "$work/good.exr" >"$work/cut_pixels.exr"
+$corrupt "$work/good.exr" "$work/v99.exr" version 99
+$corrupt "$work/good.exr" "$work/no_part.exr" rename transmittance transmittancX
+$corrupt "$work/good.exr" "$work/flipped.exr" flip 0.6
+printf 'altitude_m,sun_zenith_deg\n0,30\n' >"$work/e.csv"
+printf 'not an exr' >"$work/text.exr"
+lookup_e=(--queries "$work/e.csv" -o "$work/existing.csv")
+render_v=(--altitude-m 0 --sun-zenith-deg 30 -o "$work/existing.png")
+validate_q=(--queries quick --reference-samples 4 --no-cache --json "$work/existing.csv")
+refused "cut_header.exr: not a readable skybake bake file: OpenEXR header: " -- info "$work/cut_header.exr"
+kept "$work/existing.csv" "cut_header.exr: not a readable skybake bake file: OpenEXR header: " -- lookup irradiance "$work/cut_header.exr" "${lookup_e[@]}"
+refused "cut_pixels.exr: not a readable skybake bake file: " -- info "$work/cut_pixels.exr"
+kept "$work/existing.csv" "cut_pixels.exr: not a readable skybake bake file: " -- validate "$work/cut_pixels.exr" "${validate_q[@]}"
+for command in info "lookup irradiance" render validate; do
+  case $command in
+    info) extra=(); out=$work/existing.csv ;;
+    lookup*) extra=("${lookup_e[@]}"); out=$work/existing.csv ;;
+    render) extra=("${render_v[@]}"); out=$work/existing.png ;;
+    validate) extra=("${validate_q[@]}"); out=$work/existing.csv ;;
+  esac
+  # shellcheck disable=SC2086 # "lookup irradiance" is two words
+  kept "$out" "v99.exr: format version 99 is not understood by this skybake (it reads version 1)" -- $command "$work/v99.exr" "${extra[@]}"
+  kept "$out" "no_part.exr: part 'transmittance' is missing" -- $command "$work/no_part.exr" "${extra[@]}"
+done
+kept "$work/existing.png" "flipped.exr: not a readable skybake bake file: " -- render "$work/flipped.exr" "${render_v[@]}"
+refused "text.exr: not a readable skybake bake file" -- info "$work/text.exr"
+refused "no_such.exr: no such bake file" -- info "$work/no_such.exr"
+refused ": is a directory, not a bake file" -- info "$work"
+
+# --- Output paths, for every command that writes: a missing directory, a
+# path that is a directory, a directory that is a file, a directory without
+# write permission and a full disk. Each is refused before any work where it
+# can be known in advance; an existing output is never replaced by a partial
+# one and no temporary file is left.
+mkdir "$work/out" "$work/out/taken.exr" "$work/out/taken.json"
+cp "$work/good.exr" "$work/out/old.exr"
+cp "$work/existing.csv" "$work/out/old.json"
+cp "$work/existing.csv" "$work/out/old.csv"
+cp "$work/existing.png" "$work/out/old.png"
+"$skybake" bake "$small" -o "$work/out/old.exr" --reproducible 2>/dev/null  # with its report sidecar
+quick=(--queries quick --reference-samples 4 --no-cache)
+stress_one=(stress --quick --case no_atmosphere)
+compare_one=(compare "$small" "${quick[@]}" --resolutions 0.5)
+refused "no/x.exr: output directory $work/no does not exist" -- bake "$small" -o "$work/no/x.exr"
+refused "no/x.csv: output directory $work/no does not exist" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/no/x.csv"
+refused "no/x.png: output directory $work/no does not exist" -- render "$work/good.exr" "${view[@]}" -o "$work/no/x.png"
+refused "no/x.json: output directory $work/no does not exist" -- validate "$work/good.exr" "${quick[@]}" --json "$work/no/x.json"
+refused "no/x.csv: output directory $work/no does not exist" -- validate "$work/good.exr" "${quick[@]}" --details "$work/no/x.csv"
+refused "no/x.json: output directory $work/no does not exist" -- "${compare_one[@]}" --json "$work/no/x.json"
+refused "no/x.json: output directory $work/no does not exist" -- "${stress_one[@]}" --json "$work/no/x.json"
+refused "existing.csv/x.exr: $work/existing.csv is not a directory" -- bake "$small" -o "$work/existing.csv/x.exr"
+kept "$work/good.exr" "good.exr: is also an input ($work/good.exr); the output would replace it" -- render "$work/good.exr" "${view[@]}" -o "$work/good.exr"
+kept "$work/e.csv" "e.csv: is also an input ($work/e.csv); the output would replace it" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/e.csv"
+cp "$small" "$work/config.exr"
+kept "$work/config.exr" "config.exr: is also an input ($work/config.exr); the output would replace it" -- bake "$work/config.exr" -o "$work/config.exr"
+refused "existing.csv: the reference cache directory is a file" -- validate "$work/good.exr" --queries quick --cache-dir "$work/existing.csv"
+refused "taken.exr: is a directory; the output needs a file name" -- bake "$small" -o "$work/out/taken.exr"
+refused "taken.json: is a directory; the output needs a file name" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/out/taken.json"
+refused "taken.exr: is a directory; the output needs a file name" -- render "$work/good.exr" "${view[@]}" -o "$work/out/taken.exr"
+refused "taken.json: is a directory; the output needs a file name" -- validate "$work/good.exr" "${quick[@]}" --json "$work/out/taken.json"
+refused "taken.json: is a directory; the output needs a file name" -- "${compare_one[@]}" --json "$work/out/taken.json"
+refused "taken.json: is a directory; the output needs a file name" -- "${stress_one[@]}" --json "$work/out/taken.json"
+# The report sidecar beside a bake (taken.exr -> taken.report.json).
+mkdir "$work/out/side.report.json"
+cp "$work/good.exr" "$work/out/side.exr"
+kept "$work/out/side.exr" "side.report.json: is a directory; the output needs a file name" -- bake "$small" -o "$work/out/side.exr"
+if [ "$(id -u)" -eq 0 ]; then
+  echo "skipped: the write-permission checks (running as root, which directory permissions do not restrict)"
+else
+  chmod 555 "$work/out"
+  kept "$work/out/old.exr" "old.exr: cannot create files in $work/out: Permission denied" -- bake "$small" -o "$work/out/old.exr"
+  kept "$work/out/old.csv" "old.csv: cannot create files in $work/out: Permission denied" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/out/old.csv"
+  kept "$work/out/old.png" "old.png: cannot create files in $work/out: Permission denied" -- render "$work/good.exr" "${view[@]}" -o "$work/out/old.png"
+  kept "$work/out/old.report.json" "old.report.json: cannot create files in $work/out: Permission denied" -- validate "$work/out/old.exr" "${quick[@]}"
+  chmod 755 "$work/out"
+fi
+# A full disk, as a file-size limit: the write fails part-way.
+file_limit_kib=64 kept "$work/out/old.exr" "old.exr: cannot write: Failed to write pixel data to image file \"$work/out/.old.tmp-" -- bake "$small" -o "$work/out/old.exr"
+grep -qF "File too large" "$work/stderr" || fail "full disk: the bake's message lacks the reason: $(cat "$work/stderr")"
+file_limit_kib=0 kept "$work/out/old.csv" "old.csv: cannot write: File too large" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/out/old.csv"
+file_limit_kib=1 kept "$work/out/old.png" "old.png: cannot write: File too large" -- render "$work/good.exr" "${view[@]}" --size 64x64 -o "$work/out/old.png"
+file_limit_kib=1 kept "$work/out/old.png" "old.exr: cannot write: File too large" -- render "$work/good.exr" "${view[@]}" --size 64x64 -o "$work/out/old.exr"
+file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- validate "$work/good.exr" "${quick[@]}" --json "$work/out/old.json"
+file_limit_kib=1 kept "$work/out/old.report.json" "old.report.json: cannot write: File too large" -- validate "$work/out/old.exr" "${quick[@]}"
+file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- "${compare_one[@]}" --json "$work/out/old.json"
+file_limit_kib=1 kept "$work/out/old.json" "old.json: cannot write: File too large" -- "${stress_one[@]}" --json "$work/out/old.json"
+(ulimit -f 0 && exec "$skybake" lookup irradiance "$work/good.exr" --queries "$work/e.csv" 2>&1 >"$work/out/stdout.csv") \
+  | cat >"$work/stderr"
+[ "${PIPESTATUS[0]}" -eq 2 ] || fail "lookup to a full standard output did not exit 2"
+grep -qF "skybake: error: standard output: cannot write: File too large" "$work/stderr" \
+  || fail "lookup to a full standard output: $(cat "$work/stderr")"
+[ "$(ls -A "$work/out" | grep -c -- '\.tmp-')" -eq 0 ] || fail "temporary files left in $work/out: $(ls -A "$work/out")"
+
+# --- Sizes beyond the machine's memory: refused before anything is
+# allocated, with the estimate and what is available. A 3.8 GiB address-space
+# limit stands in for a small machine (an allocation past it would fail with
+# "out of memory", exit 1, so exit 2 shows the check came first).
+sed 's/^scattering = {.*/scattering = { r = 512, mu = 1024, mu_s = 256, nu = 2 }/' "$small" >"$work/huge.toml"
+small_machine=3900000
+memory_limit_kib=$small_machine kept "$work/out/old.exr" "huge.toml: resolution.scattering = 512 x 1024 x 256 x 2: the bake (9 tables of 4.0 GiB alive at once) needs about 36.0 GiB; this process may allocate" -- bake "$work/huge.toml" -o "$work/out/old.exr"
+grep -qF "(address-space limit, ulimit -v)" "$work/stderr" || fail "the memory refusal does not say which limit: $(cat "$work/stderr")"
+memory_limit_kib=$small_machine kept "$work/out/old.json" "small_earth.toml: --resolutions = 1,8: the comparison (every bake kept to the end) needs about 4.5 GiB; this process may allocate" -- compare "$small" --resolutions 1,8 --json "$work/out/old.json"
+memory_limit_kib=$small_machine kept "$work/out/old.png" "--size = 16384x16384: the image needs about 9.8 GiB; this process may allocate" -- render "$work/good.exr" "${view[@]}" --size 16384x16384 -o "$work/out/old.png"
+# Sizes whose products overflow are refused by the config check before any
+# product is formed in an int (and the estimate saturates; see
+# tests/baker/bake_memory_estimate_test.cpp).
+sed 's/^scattering = {.*/scattering = { r = 1024, mu = 1024, mu_s = 1024, nu = 1024 }/' "$small" >"$work/overflow.toml"
+kept "$work/out/old.exr" "overflow.toml: resolution.scattering = 1099511627776 texels: more than 268435456 texels per table" -- bake "$work/overflow.toml" -o "$work/out/old.exr"
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures check(s) failed"
+  exit 1
+fi
+echo "all bad-input checks passed"
