@@ -12,13 +12,14 @@
 #include <array>
 #include <vector>
 
+#include "baker/gauss_legendre.h"
 #include "runtime/atmosphere_media.h"
 #include "baker/stages.h"
 
 namespace skybake {
 namespace {
 
-// Incident directions: midpoints of a 32 x 64 (zenith x azimuth) grid.
+// Incident directions: 32 zenith angles (see zenithNodes) x 64 azimuths.
 // Bruneton's reference implementation uses 16 x 32; measured against the
 // reference solver on the standard query set (docs/ERROR_VS_TIME.md), that
 // coarser grid misses the aureole and horizon structure of the incident light
@@ -27,6 +28,7 @@ namespace {
 constexpr int kZenithSamples = 32;
 constexpr int kAzimuthSamples = 2 * kZenithSamples;
 constexpr int kDirections = kZenithSamples * kAzimuthSamples;
+static_assert(kZenithSamples % 2 == 0, "half the zenith nodes on each side of the horizon");
 
 // Directions in the local frame: z = zenith, the sun in the x-z plane (x > 0).
 struct DirectionGrid {
@@ -34,19 +36,47 @@ struct DirectionGrid {
   std::array<double, kDirections> solid_angle_sr;
 };
 
-DirectionGrid makeDirectionGrid() {
+// Zenith angles of the incident directions and their weights in theta.
+struct ZenithNodes {
+  std::array<double, kZenithSamples> theta, weight;
+};
+
+// Gauss-Legendre nodes in theta on the sky side [0, horizon] and on the
+// ground side [horizon, pi], half on each. The incident radiance jumps at
+// the horizon (sky to lit ground) and peaks on both sides of it, where
+// paths through the air are longest; a grid that straddles the horizon
+// smears that peak, and in twilight, when the light reaching a point comes
+// mostly from the horizon toward the sun, that was the largest error of the
+// bake (twilight sky 7.7 % RMS at 440 nm with a 32-cell uniform grid, 5.2 %
+// with these nodes; day sky 0.61 to 0.54 %; 48 nodes change neither by more
+// than 0.2 points).
+ZenithNodes zenithNodes(double horizon_theta) {
+  static const GaussLegendreRule rule = gaussLegendreRule(kZenithSamples / 2);
+  ZenithNodes z{};
+  int k = 0;
+  for (const auto& [from, to] : {std::pair{0.0, horizon_theta}, std::pair{horizon_theta, kPi}}) {
+    forEachGaussLegendreNode(rule, from, to, [&](double theta, double weight) {
+      z.theta[k] = theta;
+      z.weight[k] = weight;
+      ++k;
+    });
+  }
+  return z;
+}
+
+DirectionGrid makeDirectionGrid(double horizon_theta) {
   DirectionGrid g{};
-  const double d_theta = kPi / kZenithSamples;
+  const ZenithNodes zenith = zenithNodes(horizon_theta);
   const double d_phi = 2.0 * kPi / kAzimuthSamples;
   for (int i = 0; i < kZenithSamples; ++i) {
-    const double theta = (i + 0.5) * d_theta;
+    const double theta = zenith.theta[i];
     for (int j = 0; j < kAzimuthSamples; ++j) {
       const double phi = (j + 0.5) * d_phi;
       const int k = i * kAzimuthSamples + j;
       g.x[k] = static_cast<float>(std::sin(theta) * std::cos(phi));
       g.y[k] = static_cast<float>(std::sin(theta) * std::sin(phi));
       g.z[k] = static_cast<float>(std::cos(theta));
-      g.solid_angle_sr[k] = std::sin(theta) * d_theta * d_phi;
+      g.solid_angle_sr[k] = std::sin(theta) * zenith.weight[i] * d_phi;
     }
   }
   return g;
@@ -97,7 +127,13 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
   const AtmosphereParameters& a = ctx.atmosphere;
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
   const AtmosphereMedia media(a);
-  const DirectionGrid grid = makeDirectionGrid();
+  // The horizon, and so the zenith nodes, depend on the altitude.
+  std::vector<DirectionGrid> grids(s.r);
+  for (int i_r = 0; i_r < s.r; ++i_r) {
+    const double r = rFromScatteringTexel(ctx.sampler.domain(), s, i_r);
+    const double horizon_mu = -safeSqrt(1.0 - (a.bottom_radius_m / r) * (a.bottom_radius_m / r));
+    grids[i_r] = makeDirectionGrid(std::acos(horizon_mu));
+  }
   ScatteringDensity out{Texture4D(s.r, s.mu, s.mu_s, s.nu), Texture4D(s.r, s.mu, s.mu_s, s.nu)};
   const float g = static_cast<float>(a.mie_phase_g);
   const float cs_norm = static_cast<float>(3.0 / (8.0 * kPi) * (1.0 - a.mie_phase_g * a.mie_phase_g) /
@@ -109,6 +145,7 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
     for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
       const double r = rFromScatteringTexel(ctx.sampler.domain(), s, i_r);
       const double mu_s = muSFromScatteringTexel(ctx.sampler.domain(), s, i_mu_s);
+      const DirectionGrid& grid = grids[i_r];
       const IncidentRadiance in =
           incidentRadiance(ctx, grid, optical_depth, previous, ground_irradiance, r, mu_s);
       const double altitude = r - a.bottom_radius_m;

@@ -9,9 +9,11 @@
 namespace skybake {
 namespace {
 
-// 16 sub-intervals x 4 Gauss nodes per sunlit or shadowed piece of the ray: a vertical ray through Earth's 60 km
-// holds 50 Mie scale heights, 3.1 per sub-interval, where the 4-point rule is
-// accurate to ~1e-4 (a 50-step trapezoid is 8 % high on the same ray).
+// 16 sub-intervals x 4 Gauss nodes per sunlit or shadowed piece of the ray
+// (more where a sub-interval is optically thick, see ray_quadrature.h): a
+// vertical ray through Earth's 60 km holds 50 Mie scale heights, 3.1 per
+// sub-interval, where the 4-point rule is accurate to ~1e-4 (a 50-step
+// trapezoid is 8 % high on the same ray).
 constexpr int kSingleScatteringSegments = 16;
 
 }  // namespace
@@ -36,6 +38,10 @@ SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2
     rayleigh += transmittance * static_cast<float>(w * media.rayleighDensity(altitude));
     mie += transmittance * static_cast<float>(w * media.mieDensity(altitude));
   };
+  auto largestExtinctionAt = [&](double t) {
+    return media.largestExtinction(std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m) -
+                                   a.bottom_radius_m);
+  };
   // Each piece between the shadow's edges gets its own rule, so none spans
   // the jump where the sun appears or disappears.
   const ShadowCrossings crossings = planetShadowCrossings(
@@ -44,7 +50,7 @@ SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2
   double piece_start = 0.0;
   for (int i = 0; i <= crossings.count; ++i) {
     const double piece_end = i < crossings.count ? crossings.distance[i] : length;
-    forEachQuadratureNode(piece_start, piece_end, kSingleScatteringSegments, addNode);
+    forEachOpticallyThinNode(piece_start, piece_end, kSingleScatteringSegments, -r * mu, largestExtinctionAt, addNode);
     piece_start = piece_end;
   }
   return {rayleigh * a.sun_irradiance * a.rayleigh_scattering,

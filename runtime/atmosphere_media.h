@@ -21,6 +21,10 @@ class AtmosphereMedia {
            SpectrumD(a_.absorption_extinction) * profileDensity(a_.absorption_density, altitude_m);
   }
 
+  // Extinction of the most attenuated channel, m^-1: what decides how finely
+  // a ray must be integrated.
+  double largestExtinction(double altitude_m) const { return largestChannel(extinction(altitude_m)); }
+
   const AtmosphereParameters& parameters() const { return a_; }
 
  private:

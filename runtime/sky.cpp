@@ -145,8 +145,9 @@ RadianceAndTransmittance directSegmentRadiance(const TableSampler& sampler, cons
     return std::clamp(radiusAlongRay(r, mu, d), domain.bottom_radius_m, domain.top_radius_m) - domain.bottom_radius_m;
   };
   Spectrum sum(0.0f);
-  const SpectrumD depth = forEachQuadratureNodeWithIntegral<SpectrumD>(
-      length, kDirectSegmentSubintervals, [&](double d) { return media.extinction(altitudeAt(d)); },
+  const SpectrumD depth = forEachOpticallyThinNodeWithIntegral<SpectrumD>(
+      length, kDirectSegmentSubintervals, -r * mu, [&](double d) { return media.extinction(altitudeAt(d)); },
+      largestChannel,
       [&](double d, double w, const SpectrumD& depth_to_d) {
         const double r_d = domain.bottom_radius_m + altitudeAt(d);
         const double mu_d = cosineAlongRay(r, mu, d, r_d);

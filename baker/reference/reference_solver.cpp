@@ -114,8 +114,9 @@ class PathTracer {
       const double start = t[p], length = t[p + 1] - t[p];
       if (length <= 0.0) continue;
       auto extinction = [&](double s) { return media_.extinction(altitude(ray.origin + ray.dir * (start + s))); };
-      const SpectrumD piece_depth = forEachQuadratureNodeWithIntegral<SpectrumD>(
-          length, kSingleScatteringSubintervals, extinction, [&](double s, double w, const SpectrumD& depth) {
+      const SpectrumD piece_depth = forEachOpticallyThinNodeWithIntegral<SpectrumD>(
+          length, kSingleScatteringSubintervals, -ray.r * ray.mu - start, extinction, largestChannel,
+          [&](double s, double w, const SpectrumD& depth) {
             const glm::dvec3 point = ray.origin + ray.dir * (start + s);
             radiance += sunScatteringSource(point, ray.dir, sun, kOpticalDepthSegmentsPerPiece) *
                         glm::exp(-(depth_before + depth)) * w;

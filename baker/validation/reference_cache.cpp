@@ -15,7 +15,7 @@ namespace {
 
 // Bumped whenever the reference solver's results change: old caches are then
 // simply not found.
-constexpr int kReferenceSolverVersion = 2;
+constexpr int kReferenceSolverVersion = 3;  // 3: optically thick sub-intervals split
 
 nlohmann::json toJson(const SpectrumD& s) { return {s.x, s.y, s.z, s.w}; }
 SpectrumD spectrumFromJson(const nlohmann::json& j) { return {j.at(0), j.at(1), j.at(2), j.at(3)}; }
