@@ -131,8 +131,7 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
   std::vector<DirectionGrid> grids(s.r);
   for (int i_r = 0; i_r < s.r; ++i_r) {
     const double r = rFromScatteringTexel(ctx.sampler.domain(), s, i_r);
-    const double horizon_mu = -safeSqrt(1.0 - (a.bottom_radius_m / r) * (a.bottom_radius_m / r));
-    grids[i_r] = makeDirectionGrid(std::acos(horizon_mu));
+    grids[i_r] = makeDirectionGrid(std::acos(tangentZenithCosine(r, a.bottom_radius_m)));
   }
   ScatteringDensity out{Texture4D(s.r, s.mu, s.mu_s, s.nu), Texture4D(s.r, s.mu, s.mu_s, s.nu)};
   const float g = static_cast<float>(a.mie_phase_g);

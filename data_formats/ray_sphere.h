@@ -33,6 +33,13 @@ inline bool rayIntersectsSphere(double r, double mu, double radius) {
   return mu < 0.0 && r * r * (mu * mu - 1.0) + radius * radius >= 0.0;
 }
 
+// Zenith cosine of the rays from r >= radius tangent to the sphere of radius
+// `radius` (the horizon, for the ground's sphere): -sqrt(1 - (radius / r)^2).
+inline double tangentZenithCosine(double r, double radius) {
+  const double sin_tangent = radius / r;
+  return -safeSqrt(1.0 - sin_tangent * sin_tangent);
+}
+
 // Radius and zenith cosine at distance d along the ray (r, mu).
 inline double radiusAlongRay(double r, double mu, double d) {
   return std::sqrt(std::max(d * d + 2.0 * r * mu * d + r * r, 0.0));

@@ -61,6 +61,10 @@ inline void forEachOpticallyThinPiece(double a, double b, int segments, double l
                                       PieceFn&& piece) {
   const double h = (b - a) / segments;
   double depth = 0.0;
+  // In double whatever the callable returns; each sub-interval's end is the
+  // next one's start.
+  auto extinctionAt = [&](double t) -> double { return extinction(t); };
+  double extinction_start = extinctionAt(a);
   for (int s = 0; s < segments; ++s) {
     const double start = a + s * h;
     const double end = s + 1 == segments ? b : start + h;
@@ -68,8 +72,10 @@ inline void forEachOpticallyThinPiece(double a, double b, int segments, double l
       piece(start, end);
       continue;
     }
-    const double peak = std::max({extinction(start), extinction(0.5 * (start + end)), extinction(end),
-                                  extinction(std::clamp(lowest_t, start, end))});
+    const double extinction_end = extinctionAt(end);
+    double peak = std::max({extinction_start, extinctionAt(0.5 * (start + end)), extinction_end});
+    if (lowest_t > start && lowest_t < end) peak = std::max(peak, extinctionAt(lowest_t));
+    extinction_start = extinction_end;
     // Also false for a NaN or infinite peak: one piece, whose nodes show it.
     if (!(peak * (end - start) > kMaxPieceOpticalDepth && std::isfinite(peak))) {
       piece(start, end);
@@ -87,7 +93,7 @@ inline void forEachOpticallyThinPiece(double a, double b, int segments, double l
       }
       const double piece_end = k + 1 == count ? end : piece_start + step;
       piece(piece_start, piece_end);
-      depth += extinction(0.5 * (piece_start + piece_end)) * (piece_end - piece_start);
+      depth += extinctionAt(0.5 * (piece_start + piece_end)) * (piece_end - piece_start);
     }
   }
 }

@@ -215,7 +215,7 @@ Spectrum Sky::differenceSegmentRadiance(double r, double mu, double mu_s, double
   const AtmosphereDomain& domain = sampler_.domain();
   const BakeTables& t = bake_.tables;
   SegmentScattering s = segmentScattering(sampler_, t, r, mu, mu_s, nu, d, shadow, ground, transmittance);
-  const double horizon_mu = -safeSqrt(1.0 - (domain.bottom_radius_m / r) * (domain.bottom_radius_m / r));
+  const double horizon_mu = tangentZenithCosine(r, domain.bottom_radius_m);
   const double from_horizon = mu - horizon_mu;
   if (std::abs(from_horizon) < kHorizonBlendCosine) {
     // Near the geometric horizon, blend with the other half's estimate of the

@@ -149,8 +149,8 @@ class TableSampler {
   Spectrum transmittanceToSun(const Texture2D& optical_depth, double r, double mu_s,
                               double sun_angular_radius) const {
     const double sin_horizon = domain_.bottom_radius_m / r;
-    const double cos_horizon = -safeSqrt(1.0 - sin_horizon * sin_horizon);
-    const double visible = sunDiskVisibleFraction(mu_s - cos_horizon, sin_horizon * sun_angular_radius);
+    const double visible = sunDiskVisibleFraction(mu_s - tangentZenithCosine(r, domain_.bottom_radius_m),
+                                                  sin_horizon * sun_angular_radius);
     if (visible <= 0.0) return Spectrum(0.0f);
     return glm::exp(-opticalDepthToTop(optical_depth, r, mu_s)) * static_cast<float>(visible);
   }

@@ -42,8 +42,8 @@ std::vector<double> viewCosines(const AtmosphereParameters& a, double r) {
   std::vector<double> mus = {-1.0, 1.0};
   constexpr int kGrid = 16;
   for (int i = 0; i < kGrid; ++i) mus.push_back(-1.0 + (2.0 * i + 1.0) / kGrid);
-  if (r >= a.bottom_radius_m) mus.push_back(-safeSqrt(1.0 - std::pow(a.bottom_radius_m / r, 2)));
-  if (r >= a.top_radius_m) mus.push_back(-safeSqrt(1.0 - std::pow(a.top_radius_m / r, 2)));
+  if (r >= a.bottom_radius_m) mus.push_back(tangentZenithCosine(r, a.bottom_radius_m));
+  if (r >= a.top_radius_m) mus.push_back(tangentZenithCosine(r, a.top_radius_m));
   return mus;
 }
 
@@ -134,7 +134,7 @@ class Checks {
     for (const Camera& cam : cameras(a)) {
       if (cam.r_m < a.bottom_radius_m || cam.r_m > a.top_radius_m) continue;
       const glm::dvec3 camera(0.0, 0.0, cam.r_m);
-      const double horizon_mu = -safeSqrt(1.0 - std::pow(a.bottom_radius_m / cam.r_m, 2));
+      const double horizon_mu = tangentZenithCosine(cam.r_m, a.bottom_radius_m);
       const double horizon_zenith = std::acos(horizon_mu);
       for (int si = 0; si < kContinuitySunAngles; ++si) {
         const double sun_zenith = lowest_sun_rad * (si + 0.5) / kContinuitySunAngles;
