@@ -48,21 +48,32 @@ Spectrum meanSingleScatteringRadiance(const TableSampler& sampler, const Texture
   return Spectrum(sum / static_cast<double>(rayleigh.texels.size()));
 }
 
-// scattering += scale * delta / Rayleigh phase, the phase taken at the nu of
-// the texel's slice, not at the (clamped) nu it was computed for: every texel
-// of a slice then shares one divisor, so interpolating in r, mu and mu_s and
-// multiplying back by the phase at the looked-up nu is consistent. With the
-// clamped nu, neighbouring texels carry different divisors and a nearly
-// isotropic multiple-scattering field comes back 30 % too bright toward the sun.
-void addToScattering(Texture4D& scattering, const Texture4D& delta, const Spectrum& scale) {
-  for (int i_nu = 0; i_nu < delta.nu_size; ++i_nu) {
-    const Spectrum factor = scale / static_cast<float>(rayleighPhase(nuOfScatteringSlice(i_nu, delta.nu_size)));
-    for (int i_r = 0; i_r < delta.r_size; ++i_r)
-      for (int i_mu = 0; i_mu < delta.mu_size; ++i_mu)
-        for (int i_mu_s = 0; i_mu_s < delta.mu_s_size; ++i_mu_s) {
-          scattering.at(i_r, i_mu, i_mu_s, i_nu) += delta.at(i_r, i_mu, i_mu_s, i_nu) * factor;
-        }
+// Mean radiance of one multiple-scattering order over all texels, the
+// multiple-scattering shape at each texel's r and nu multiplied back.
+Spectrum meanMultipleScatteringRadiance(const TableSampler& sampler, const Texture4D& delta,
+                                        const MultipleScatteringPhase& shape) {
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  std::vector<double> mu_s_of_texel(s.mu_s);
+  for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+    mu_s_of_texel[i_mu_s] = muSFromScatteringTexel(sampler.domain(), s, i_mu_s);
   }
+  SpectrumD sum(0.0);
+  for (int i_r = 0; i_r < s.r; ++i_r)
+    for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
+      const ScatteringTexelConfig c = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0);
+      const double mu = c.mu;
+      const SpectrumD peak_weight = shape.peakWeightAt(c.r - sampler.domain().bottom_radius_m);
+      for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
+        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
+          const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), mu, mu_s_of_texel[i_mu_s]);
+          sum += SpectrumD(delta.at(i_r, i_mu, i_mu_s, i_nu) * shape(peak_weight, nu));
+        }
+    }
+  return Spectrum(sum / static_cast<double>(std::max<size_t>(delta.texels.size(), 1)));
+}
+
+void addScaled(std::vector<Spectrum>& sum, const std::vector<Spectrum>& delta, const Spectrum& scale) {
+  for (size_t i = 0; i < sum.size(); ++i) sum[i] += delta[i] * scale;
 }
 
 // The last order's mean radiance over the sum of all orders so far, worst
@@ -104,15 +115,11 @@ TailEstimate addTailEstimate(const std::vector<OrderContribution>& orders, int c
     }
     scale[c] = tail.ratio[c] / (1.0f - tail.ratio[c]);
   }
-  addToScattering(tables.scattering, last_radiance, scale);
-  for (size_t i = 0; i < tables.multiple_density.texels.size(); ++i) {
-    tables.multiple_density.texels[i] += last_density.texels[i] * scale;
-  }
+  addScaled(tables.multiple_scattering.texels, last_radiance.texels, scale);
+  addScaled(tables.multiple_density.texels, last_density.texels, scale);
   // The sky irradiance holds orders 1 .. N-1; the rest follow the same series
   // from order N - 1 on.
-  for (size_t i = 0; i < tables.irradiance.texels.size(); ++i) {
-    tables.irradiance.texels[i] += last_irradiance.texels[i] * scale;
-  }
+  addScaled(tables.irradiance.texels, last_irradiance.texels, scale);
   tail.applied = true;
   tail.reason = fmt::format("applied after order {}: the remaining orders as a geometric series", orders[n - 1].order);
   return tail;
@@ -173,17 +180,17 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   Texture2D delta_irradiance = stage.run("direct_irradiance", 1, config.sizes.irradiance_r, [&] {
     return computeDirectIrradianceTable(ctx, optical_depth);
   });
-  Texture4D delta_rayleigh;
   stage.run("single_scattering", 1, rows_4d, [&] {
-    computeSingleScatteringTables(ctx, optical_depth, delta_rayleigh, tables.single_mie);
+    computeSingleScatteringTables(ctx, optical_depth, tables.single_rayleigh, tables.single_mie);
   });
   report.orders.push_back(
-      {1, meanSingleScatteringRadiance(sampler, delta_rayleigh, tables.single_mie, a.mie_phase_g),
+      {1, meanSingleScatteringRadiance(sampler, tables.single_rayleigh, tables.single_mie, a.mie_phase_g),
        Spectrum(0.0f)});
 
-  // scattering = Rayleigh single + multiple orders, each divided by the
-  // Rayleigh phase function (so a lookup multiplies it back once).
-  tables.scattering = delta_rayleigh;
+  // Orders 2..N, each texel divided by the multiple-scattering shape at its
+  // r and nu (runtime/multiple_scattering_phase.h); a lookup multiplies it back.
+  const MultipleScatteringPhase multiple_shape(a);
+  tables.multiple_scattering = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
   tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   Texture4D delta_multiple;
@@ -194,27 +201,24 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   report.orders_decision.tolerance = settings.auto_orders ? settings.order_tolerance : 0.0;
   report.orders_decision.cap = settings.auto_orders ? settings.max_orders : 0;
   for (int order = 2; order <= last_order; ++order) {
-    const OrderRadiance previous{order - 1, delta_rayleigh, tables.single_mie, delta_multiple};
+    const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple, multiple_shape};
     const ScatteringDensity density = stage.run("scattering_density", order, slices_4d, [&] {
       return computeScatteringDensityTable(ctx, optical_depth, previous, delta_irradiance);
     });
-    for (size_t i = 0; i < tables.multiple_density.texels.size(); ++i) {
-      tables.multiple_density.texels[i] += density.at_density_texels.texels[i];
-    }
+    addScaled(tables.multiple_density.texels, density.at_density_texels.texels, Spectrum(1.0f));
     last_density = density.at_density_texels;
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
       return computeIndirectIrradianceTable(ctx, previous);
     });
-    for (size_t i = 0; i < tables.irradiance.texels.size(); ++i) {
-      tables.irradiance.texels[i] += delta_irradiance.texels[i];
-    }
+    addScaled(tables.irradiance.texels, delta_irradiance.texels, Spectrum(1.0f));
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 
     delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
-      return computeMultipleScatteringTable(ctx, optical_depth, density.at_scattering_texels);
+      return computeMultipleScatteringTable(ctx, optical_depth, density.at_scattering_texels, multiple_shape);
     });
-    addToScattering(tables.scattering, delta_multiple, Spectrum(1.0f));
-    report.orders.push_back({order, meanOf(delta_multiple.texels), Spectrum(0.0f)});
+    addScaled(tables.multiple_scattering.texels, delta_multiple.texels, Spectrum(1.0f));
+    report.orders.push_back(
+        {order, meanMultipleScatteringRadiance(sampler, delta_multiple, multiple_shape), Spectrum(0.0f)});
     report.orders_decision.last_order_share = lastOrderShare(report.orders, a.channelCount());
     if (settings.auto_orders && report.orders_decision.last_order_share < settings.order_tolerance) {
       report.orders_decision.converged = true;

@@ -30,9 +30,8 @@ uint64_t sum(std::initializer_list<uint64_t> terms) {
 uint64_t axis(int size) { return size > 0 ? static_cast<uint64_t>(size) : 0; }
 
 // 4D tables alive at once at the peak of bakeAtmosphere, counted from its
-// order loop. With one order: the single Rayleigh and Mie tables, the
-// scattering table (a copy of the Rayleigh one) and the zeroed
-// multiple-scattering density. From order 2 on, while the multiple-scattering
+// order loop. With one order: the single Rayleigh and Mie tables and the
+// zeroed multiple-scattering table and density. From order 2 on, while the multiple-scattering
 // stage builds its table, add the scattering density at two texel sets and
 // the last order's density, the new table; from order 3 on, also the
 // previous order's table, still read by nothing but not yet replaced.
@@ -57,9 +56,9 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   // order's irradiance beside the one being computed.
   e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), transmittance,
                       product({3, irradiance})});
-  // The file's tables: scattering, single Mie, multiple-scattering density,
-  // transmittance and irradiance.
-  e.kept_bytes = sum({product({3, e.table_4d_bytes}), transmittance, irradiance});
+  // The file's tables: single Rayleigh, single Mie, multiple scattering,
+  // multiple-scattering density, transmittance and irradiance.
+  e.kept_bytes = sum({product({4, e.table_4d_bytes}), transmittance, irradiance});
   return e;
 }
 

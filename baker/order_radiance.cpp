@@ -10,7 +10,8 @@ Spectrum OrderRadiance::radiance(const TableSampler& sampler, double r, double m
            sampler.scattering(single_mie, r, mu, mu_s, nu, ray_intersects_ground) *
                static_cast<float>(cornetteShanksPhase(mie_g, nu));
   }
-  return sampler.scattering(multiple, r, mu, mu_s, nu, ray_intersects_ground);
+  return sampler.scattering(multiple, r, mu, mu_s, nu, ray_intersects_ground) *
+         multiple_shape(r - sampler.domain().bottom_radius_m, nu);
 }
 
 }  // namespace skybake

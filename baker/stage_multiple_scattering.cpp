@@ -21,10 +21,11 @@ struct RayNode {
   double r;
   double mu;
   Spectrum transmittance;  // from the ray's start to the node
+  SpectrumD peak_weight;   // of the multiple-scattering shape at the node's altitude
 };
 
-void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, const ScatteringTexelConfig& c,
-                     std::vector<RayNode>& nodes) {
+void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, const MultipleScatteringPhase& shape,
+                     const ScatteringTexelConfig& c, std::vector<RayNode>& nodes) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const AtmosphereMedia media(a);
   const TableSampler& sampler = ctx.sampler;
@@ -41,14 +42,15 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
         const double r_t = radiusAt(t);
         nodes.push_back({t, w, r_t, cosineAlongRay(c.r, c.mu, t, r_t),
                          glm::exp(-sampler.opticalDepthAlongRay(optical_depth, c.r, c.mu, t,
-                                                                c.ray_intersects_ground))});
+                                                                c.ray_intersects_ground)),
+                         shape.peakWeightAt(r_t - a.bottom_radius_m)});
       });
 }
 
 }  // namespace
 
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
-                                         const Texture4D& density) {
+                                         const Texture4D& density, const MultipleScatteringPhase& shape) {
   const TableSampler& sampler = ctx.sampler;
   const ScatteringSizes& s = sampler.scatteringSizes();
   Texture4D table(s.r, s.mu, s.mu_s, s.nu);
@@ -58,19 +60,26 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
-        collectRayNodes(ctx, optical_depth, scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0), nodes);
+        const ScatteringTexelConfig row = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0);
+        collectRayNodes(ctx, optical_depth, shape, row, nodes);
+        const SpectrumD texel_peak_weight = shape.peakWeightAt(row.r - ctx.atmosphere.bottom_radius_m);
         for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
           for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
             const ScatteringTexelConfig c = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
             // nu is constant along a straight ray: its interpolation is too.
             const AxisLerp nu_lerp = axisLerpNu((c.nu + 1.0) * 0.5, s.nu);
+            // The density is stored divided by the shape at its texels: the
+            // shape at each node gives it back, the shape at this texel
+            // divides the result for storage.
+            const double peak = shape.peakAt(c.nu);
             Spectrum sum(0.0f);
             for (const RayNode& n : nodes) {
               const double mu_s_t = clampCosine((c.r * c.mu_s + n.t * c.nu) / n.r);
               const ScatteringCoord coord = sampler.scatteringCoord(n.r, n.mu, mu_s_t, c.nu, c.ray_intersects_ground);
-              sum += sample4D(density, coord, nu_lerp) * n.transmittance * static_cast<float>(n.weight);
+              sum += sample4D(density, coord, nu_lerp) * MultipleScatteringPhase::withPeak(n.peak_weight, peak) *
+                     n.transmittance * static_cast<float>(n.weight);
             }
-            table.at(i_r, i_mu, i_mu_s, i_nu) = sum;
+            table.at(i_r, i_mu, i_mu_s, i_nu) = sum / MultipleScatteringPhase::withPeak(texel_peak_weight, peak);
           }
         }
         ctx.progress.advance(1);

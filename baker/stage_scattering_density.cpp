@@ -152,6 +152,7 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
           a.rayleigh_scattering * (rayleigh_norm * static_cast<float>(media.rayleighDensity(altitude)));
       const Spectrum mie_coefficient = a.mie_scattering * (cs_norm * static_cast<float>(media.mieDensity(altitude)));
       const double sun_x = safeSqrt(1.0 - mu_s * mu_s);
+      const SpectrumD peak_weight = previous.multiple_shape.peakWeightAt(altitude);
 
       // Density toward the viewer looking along (mu, nu): the phase-weighted
       // sum over incident directions.
@@ -184,9 +185,11 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
         for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
           const ScatteringTexelConfig c =
               scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
-          out.at_scattering_texels.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(c.mu, c.nu);
+          out.at_scattering_texels.at(i_r, i_mu, i_mu_s, i_nu) =
+              densityToward(c.mu, c.nu) / previous.multiple_shape(peak_weight, c.nu);
           const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), density_mu, mu_s);
-          out.at_density_texels.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(density_mu, nu);
+          out.at_density_texels.at(i_r, i_mu, i_mu_s, i_nu) =
+              densityToward(density_mu, nu) / previous.multiple_shape(peak_weight, nu);
         }
       }
       ctx.progress.advance(1);

@@ -5,6 +5,7 @@
 
 #include "baker/progress.h"
 #include "data_formats/bake_file.h"
+#include "runtime/multiple_scattering_phase.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {
@@ -36,21 +37,23 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
 
 // The radiance of one scattering order arriving at a point, seen looking in a
 // direction: single scattering with its phase functions applied for order 1,
-// that order's table after that.
+// that order's table times the multiple-scattering shape after that.
 struct OrderRadiance {
   int order;  // the scattering order whose radiance this gives, >= 1
   const Texture4D& single_rayleigh;
   const Texture4D& single_mie;
-  const Texture4D& multiple;  // that order's table when order >= 2
+  const Texture4D& multiple;  // that order's table when order >= 2 (divided, as stored)
+  const MultipleScatteringPhase& multiple_shape;
   Spectrum radiance(const TableSampler& sampler, double r, double mu, double mu_s, double nu,
                     bool ray_intersects_ground, double mie_g) const;
 };
 
 // Light scattered once more at each point, per unit length (W m^-3 sr^-1 nm^-1),
 // from the radiance of order n - 1 and, off the ground, the irradiance of
-// order n - 2 (`ground_irradiance`). Evaluated on the scattering table's
-// texels (for the multiple-scattering stage) and on the linear-mu texels of
-// the stored density table (see densityCoordMu).
+// order n - 2 (`ground_irradiance`), divided by the multiple-scattering shape
+// at the texel's r and nu (runtime/multiple_scattering_phase.h). Evaluated on the scattering table's texels (for the
+// multiple-scattering stage) and on the linear-mu texels of the stored
+// density table (see densityCoordMu).
 struct ScatteringDensity {
   Texture4D at_scattering_texels;
   Texture4D at_density_texels;
@@ -62,8 +65,9 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
 // Irradiance on a horizontal surface from the sky radiance of one order.
 Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const OrderRadiance& order);
 
-// Radiance of order n: the scattering density integrated along each ray.
+// Radiance of order n: the scattering density integrated along each ray,
+// stored divided by the multiple-scattering shape at the texel's r and nu.
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
-                                         const Texture4D& density);
+                                         const Texture4D& density, const MultipleScatteringPhase& shape);
 
 }  // namespace skybake

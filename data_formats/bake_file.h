@@ -16,22 +16,26 @@ namespace skybake {
 
 // Bumped whenever the meaning of a part or attribute changes; readers refuse
 // versions they do not know.
-inline constexpr int kBakeFormatVersion = 1;
+inline constexpr int kBakeFormatVersion = 2;
 
 struct BakeTables {
   // Optical depth (dimensionless) from (r, mu) to the top boundary, per channel.
   // Stored as optical depth rather than transmittance so that the transmittance
   // between two points is exp(-(difference)) and never 0/0 in thick atmospheres.
   Texture2D transmittance;
-  // Rayleigh single scattering plus all multiple scattering orders, radiance
-  // divided by the Rayleigh phase function: W m^-2 nm^-1 (W m^-2 sr^-1 nm^-1 / sr^-1).
-  Texture4D scattering;
+  // Single Rayleigh scattering divided by the Rayleigh phase function:
+  // W m^-2 nm^-1 (W m^-2 sr^-1 nm^-1 / sr^-1).
+  Texture4D single_rayleigh;
   // Single Mie scattering divided by the Mie phase function.
   Texture4D single_mie;
+  // Scattering orders 2..N divided by the multiple-scattering shape at the
+  // texel's r and own nu (runtime/multiple_scattering_phase.h), W m^-2 nm^-1.
+  Texture4D multiple_scattering;
   // Sky irradiance on a horizontal surface (direct sun excluded), W m^-2 nm^-1.
   Texture2D irradiance;
   // Light scattered once more per unit length at (r, mu_s) toward the viewer
-  // looking along (mu, nu), summed over orders 2..N: W m^-3 sr^-1 nm^-1. The
+  // looking along (mu, nu), summed over orders 2..N, divided like
+  // multiple_scattering by the multiple-scattering shape: W m^-3 nm^-1. The
   // source of multiple scattering, which lets short segments (aerial
   // perspective) be integrated directly instead of as a difference of two
   // nearly equal lookups.

@@ -4,8 +4,9 @@
 namespace skybake::bake_file {
 
 inline constexpr const char* kPartTransmittance = "transmittance";
-inline constexpr const char* kPartScattering = "scattering";
+inline constexpr const char* kPartSingleRayleigh = "single_rayleigh";
 inline constexpr const char* kPartSingleMie = "single_mie";
+inline constexpr const char* kPartMultipleScattering = "multiple_scattering";
 inline constexpr const char* kPartIrradiance = "irradiance";
 inline constexpr const char* kPartMultipleDensity = "multiple_scattering_density";
 

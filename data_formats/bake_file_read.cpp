@@ -149,7 +149,8 @@ Texture4D emptyTexture4D(const TextureSizes& s) {
 
 BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t file_bytes) {
   Reader in(stream, source);
-  const int first = in.findPart(kPartScattering);
+  // Every part carries the attributes; transmittance is in every version.
+  const int first = in.findPart(kPartTransmittance);
   const int version = in.attribute<Imf::IntAttribute>(first, kAttrFormatVersion).value();
   if (version != kBakeFormatVersion) {
     in.fail(fmt::format("format version {} is not understood by this skybake (it reads version {})",
@@ -166,8 +167,9 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
   BakeTables& t = bake.tables;
   t.transmittance = emptyTexture2D(s.transmittance_mu, s.transmittance_r);
   t.irradiance = emptyTexture2D(s.irradiance_mu_s, s.irradiance_r);
-  t.scattering = emptyTexture4D(s);
+  t.single_rayleigh = emptyTexture4D(s);
   t.single_mie = emptyTexture4D(s);
+  t.multiple_scattering = emptyTexture4D(s);
   t.multiple_density = emptyTexture4D(s);
   struct Table {
     const char* part;
@@ -178,8 +180,11 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
   const Table tables[] = {
       {kPartTransmittance, t.transmittance.width, t.transmittance.height, &t.transmittance.texels},
       {kPartIrradiance, t.irradiance.width, t.irradiance.height, &t.irradiance.texels},
-      {kPartScattering, t.scattering.atlasWidth(), t.scattering.atlasHeight(), &t.scattering.texels},
+      {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(),
+       &t.single_rayleigh.texels},
       {kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), &t.single_mie.texels},
+      {kPartMultipleScattering, t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(),
+       &t.multiple_scattering.texels},
       {kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(),
        &t.multiple_density.texels},
   };

@@ -113,6 +113,10 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
   }
 }
 
+std::string table4DSizeText(const Texture4D& t) {
+  return fmt::format("r={} mu={} mu_s={} nu={}", t.r_size, t.mu_size, t.mu_s_size, t.nu_size);
+}
+
 }  // namespace
 
 void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
@@ -122,26 +126,25 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
       {kPartTransmittance, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
        "dimensionless", &t.transmittance.texels, t.transmittance.width, t.transmittance.height,
        fmt::format("mu={} r={}", t.transmittance.width, t.transmittance.height)},
-      {kPartScattering,
-       "Rayleigh single plus multiple scattering radiance divided by the Rayleigh phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.scattering.texels,
-       t.scattering.atlasWidth(), t.scattering.atlasHeight(),
-       fmt::format("r={} mu={} mu_s={} nu={}", t.scattering.r_size, t.scattering.mu_size,
-                   t.scattering.mu_s_size, t.scattering.nu_size)},
+      {kPartSingleRayleigh, "single Rayleigh scattering radiance divided by the Rayleigh phase function",
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_rayleigh.texels,
+       t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(), table4DSizeText(t.single_rayleigh)},
       {kPartSingleMie, "single Mie scattering radiance divided by the Mie phase function",
        "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_mie.texels,
-       t.single_mie.atlasWidth(), t.single_mie.atlasHeight(),
-       fmt::format("r={} mu={} mu_s={} nu={}", t.single_mie.r_size, t.single_mie.mu_size,
-                   t.single_mie.mu_s_size, t.single_mie.nu_size)},
+       t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), table4DSizeText(t.single_mie)},
+      {kPartMultipleScattering,
+       "scattering orders 2 and up, radiance divided by the multiple-scattering shape at the texel's r and nu",
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_scattering.texels,
+       t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(),
+       table4DSizeText(t.multiple_scattering)},
       {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded",
        "W m^-2 nm^-1", &t.irradiance.texels, t.irradiance.width, t.irradiance.height,
        fmt::format("mu_s={} r={}", t.irradiance.width, t.irradiance.height)},
       {kPartMultipleDensity,
-       "scattering density of orders 2 and up: light scattered per unit length toward the viewer",
-       "W m^-3 sr^-1 nm^-1", &t.multiple_density.texels, t.multiple_density.atlasWidth(),
-       t.multiple_density.atlasHeight(),
-       fmt::format("r={} mu={} mu_s={} nu={}", t.multiple_density.r_size, t.multiple_density.mu_size,
-                   t.multiple_density.mu_s_size, t.multiple_density.nu_size)},
+       "scattering density of orders 2 and up: light scattered per unit length toward the viewer, "
+       "divided by the multiple-scattering shape at the texel's r and nu",
+       "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_density.texels,
+       t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
   };
   for (const PartToWrite& part : parts) {
     if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0) {

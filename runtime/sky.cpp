@@ -61,7 +61,8 @@ Sky Sky::load(const std::filesystem::path& path) { return Sky(readBakeFile(path)
 
 Sky::Sky(BakeFile bake)
     : bake_(std::move(bake)),
-      sampler_(AtmosphereDomain::fromParameters(bake_.config.atmosphere), bake_.config.sizes) {}
+      sampler_(AtmosphereDomain::fromParameters(bake_.config.atmosphere), bake_.config.sizes),
+      multiple_shape_(bake_.config.atmosphere) {}
 
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                           const glm::dvec3& sun_dir, double shadow_length_m) const {
@@ -79,11 +80,13 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
       ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, start.length, true))
              : glm::exp(-sampler_.opticalDepthToTop(t.transmittance, r, mu));
 
-  Spectrum rayleigh, mie;
+  Spectrum rayleigh, mie, multiple;
   const double shadow = std::max(shadow_length_m - start.moved, 0.0);
   if (shadow == 0.0) {
-    rayleigh = sampler_.scattering(t.scattering, r, mu, mu_s, nu, ground);
+    rayleigh = sampler_.scattering(t.single_rayleigh, r, mu, mu_s, nu, ground);
     mie = sampler_.scattering(t.single_mie, r, mu, mu_s, nu, ground);
+    multiple = sampler_.scattering(t.multiple_scattering, r, mu, mu_s, nu, ground) *
+               multiple_shape_(r - domain.bottom_radius_m, nu);
   } else {
     // Light shafts: only the part of the ray beyond the shadow scatters, seen
     // through the shadowed part.
@@ -92,29 +95,31 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
     const double mu_s_p = clampCosine((r * mu_s + shadow * nu) / r_p);
     const Spectrum shadow_transmittance =
         glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, shadow, ground));
-    rayleigh = sampler_.scattering(t.scattering, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+    rayleigh = sampler_.scattering(t.single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
     mie = sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+    multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
+               multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
   }
   const Spectrum radiance = rayleigh * static_cast<float>(rayleighPhase(nu)) +
-                            mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, nu));
+                            mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, nu)) + multiple;
   return {radiance, transmittance};
 }
 
 namespace {
 
 struct SegmentScattering {
-  Spectrum rayleigh;
-  Spectrum mie;
+  Spectrum rayleigh;  // over the Rayleigh phase
+  Spectrum mie;       // over the Mie phase
+  Spectrum multiple;  // radiance (the multiple-scattering shape applied at each end)
 };
 
 // In-scattering over [0, d] of the ray (r, mu): the scattering to the ray's
 // end seen from its start minus that seen from the point at d, attenuated.
-SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTables& t, double r,
-                                    double mu, double mu_s, double nu, double d, double shadow,
-                                    bool ground, const Spectrum& transmittance) {
+SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTables& t,
+                                    const MultipleScatteringPhase& multiple_shape, double r, double mu,
+                                    double mu_s, double nu, double d, double shadow, bool ground,
+                                    const Spectrum& transmittance) {
   const AtmosphereDomain& domain = sampler.domain();
-  const Spectrum rayleigh = sampler.scattering(t.scattering, r, mu, mu_s, nu, ground);
-  const Spectrum mie = sampler.scattering(t.single_mie, r, mu, mu_s, nu, ground);
   const double d_p = std::max(d - shadow, 0.0);
   const double r_p = std::clamp(radiusAlongRay(r, mu, d_p), domain.bottom_radius_m, domain.top_radius_m);
   const double mu_p = cosineAlongRay(r, mu, d_p, r_p);
@@ -122,10 +127,16 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
   const Spectrum shadow_transmittance =
       shadow == 0.0 ? transmittance
                     : glm::exp(-sampler.opticalDepthAlongRay(t.transmittance, r, mu, d_p, ground));
-  return {glm::max(rayleigh - shadow_transmittance * sampler.scattering(t.scattering, r_p, mu_p, mu_s_p, nu, ground),
-                   Spectrum(0.0f)),
-          glm::max(mie - shadow_transmittance * sampler.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground),
-                   Spectrum(0.0f))};
+  auto difference = [&](const Texture4D& table, const Spectrum& scale_here, const Spectrum& scale_there) {
+    return glm::max(sampler.scattering(table, r, mu, mu_s, nu, ground) * scale_here -
+                        shadow_transmittance * scale_there *
+                            sampler.scattering(table, r_p, mu_p, mu_s_p, nu, ground),
+                    Spectrum(0.0f));
+  };
+  const Spectrum one(1.0f);
+  return {difference(t.single_rayleigh, one, one), difference(t.single_mie, one, one),
+          difference(t.multiple_scattering, multiple_shape(r - domain.bottom_radius_m, nu),
+                     multiple_shape(r_p - domain.bottom_radius_m, nu))};
 }
 
 // In-scattered radiance over [0, length] of the ray (r, mu) by direct
@@ -135,12 +146,14 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
 // near 30 at the horizon whose difference over 1 km is 0.04: table error
 // would dominate it). Also gives the segment's transmittance.
 RadianceAndTransmittance directSegmentRadiance(const TableSampler& sampler, const BakeTables& t,
-                                               const AtmosphereParameters& a, double r, double mu, double mu_s,
-                                               double nu, double length) {
+                                               const AtmosphereParameters& a,
+                                               const MultipleScatteringPhase& multiple_shape, double r, double mu,
+                                               double mu_s, double nu, double length) {
   const AtmosphereDomain& domain = sampler.domain();
   const AtmosphereMedia media(a);
   const float rayleigh_phase = static_cast<float>(rayleighPhase(nu));
   const float mie_phase = static_cast<float>(cornetteShanksPhase(a.mie_phase_g, nu));
+  const double multiple_peak = multiple_shape.peakAt(nu);
   auto altitudeAt = [&](double d) {
     return std::clamp(radiusAlongRay(r, mu, d), domain.bottom_radius_m, domain.top_radius_m) - domain.bottom_radius_m;
   };
@@ -159,7 +172,9 @@ RadianceAndTransmittance directSegmentRadiance(const TableSampler& sampler, cons
             (a.rayleigh_scattering * (static_cast<float>(media.rayleighDensity(altitude)) * rayleigh_phase) +
              a.mie_scattering * (static_cast<float>(media.mieDensity(altitude)) * mie_phase)) *
             sunlight;
-        const Spectrum multiple_source = sampler.multipleDensity(t.multiple_density, r_d, mu_d, mu_s_d, nu);
+        const Spectrum multiple_source =
+            sampler.multipleDensity(t.multiple_density, r_d, mu_d, mu_s_d, nu) *
+            MultipleScatteringPhase::withPeak(multiple_shape.peakWeightAt(altitude), multiple_peak);
         sum += (single_source + multiple_source) * Spectrum(glm::exp(-depth_to_d)) * static_cast<float>(w);
       });
   return {sum, Spectrum(glm::exp(-depth))};
@@ -195,7 +210,7 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
   if (direct_weight > 0.0) {
     const float w = static_cast<float>(direct_weight);
     const RadianceAndTransmittance direct =
-        directSegmentRadiance(sampler_, t, atmosphere(), r, mu, mu_s, nu, scattering_length);
+        directSegmentRadiance(sampler_, t, atmosphere(), multiple_shape_, r, mu, mu_s, nu, scattering_length);
     radiance += direct.radiance * w;
     // With a shadow the segment to the point is longer than the lit part.
     transmittance += (shadow > 0.0 ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground))
@@ -214,23 +229,25 @@ Spectrum Sky::differenceSegmentRadiance(double r, double mu, double mu_s, double
                                         bool ground, const Spectrum& transmittance) const {
   const AtmosphereDomain& domain = sampler_.domain();
   const BakeTables& t = bake_.tables;
-  SegmentScattering s = segmentScattering(sampler_, t, r, mu, mu_s, nu, d, shadow, ground, transmittance);
+  SegmentScattering s =
+      segmentScattering(sampler_, t, multiple_shape_, r, mu, mu_s, nu, d, shadow, ground, transmittance);
   const double horizon_mu = tangentZenithCosine(r, domain.bottom_radius_m);
   const double from_horizon = mu - horizon_mu;
   if (std::abs(from_horizon) < kHorizonBlendCosine) {
     // Near the geometric horizon, blend with the other half's estimate of the
     // same segment so the result has no step where the halves meet.
     const SegmentScattering other =
-        segmentScattering(sampler_, t, r, mu, mu_s, nu, d, shadow, !ground, transmittance);
+        segmentScattering(sampler_, t, multiple_shape_, r, mu, mu_s, nu, d, shadow, !ground, transmittance);
     const double w_sky = 0.5 + 0.5 * from_horizon / kHorizonBlendCosine;  // 1 at +band, 0 at -band
     const float w_this = static_cast<float>(ground ? 1.0 - w_sky : w_sky);
     s.rayleigh = s.rayleigh * w_this + other.rayleigh * (1.0f - w_this);
     s.mie = s.mie * w_this + other.mie * (1.0f - w_this);
+    s.multiple = s.multiple * w_this + other.multiple * (1.0f - w_this);
   }
   const double mie_fade = std::clamp(mu_s / kMieTwilightFadeCosine, 0.0, 1.0);
   const double mie_weight = mie_fade * mie_fade * (3.0 - 2.0 * mie_fade);
   return s.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-         s.mie * static_cast<float>(mie_weight * cornetteShanksPhase(atmosphere().mie_phase_g, nu));
+         s.mie * static_cast<float>(mie_weight * cornetteShanksPhase(atmosphere().mie_phase_g, nu)) + s.multiple;
 }
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,

@@ -19,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/bake_file.h"
+#include "runtime/multiple_scattering_phase.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {
@@ -110,6 +111,7 @@ class Sky {
 
   BakeFile bake_;
   TableSampler sampler_;
+  MultipleScatteringPhase multiple_shape_;  // what multiple scattering is stored divided by
 };
 
 }  // namespace skybake

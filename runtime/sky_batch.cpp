@@ -84,8 +84,10 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
 
   const AxisLerp r_lerp = axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, ss.r), ss.r);
   const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(scatteringCoordMuS(d, ss.mu_s, mu_s), ss.mu_s);
-  const MuNuSlice rayleigh(t.scattering, r_lerp, mu_s_lerp, radianceBlend(mu_s));
+  const MuNuSlice rayleigh(t.single_rayleigh, r_lerp, mu_s_lerp, radianceBlend(mu_s));
   const MuNuSlice mie(t.single_mie, r_lerp, mu_s_lerp, radianceBlend(mu_s));
+  const MuNuSlice multiple(t.multiple_scattering, r_lerp, mu_s_lerp, radianceBlend(mu_s));
+  const SpectrumD multiple_peak_weight = multiple_shape_.peakWeightAt(r - d.bottom_radius_m);
   const OpticalDepthRow depth_here(
       t.transmittance, axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, sizes.transmittance_r),
                                                 sizes.transmittance_r));
@@ -108,7 +110,8 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
     const double base = one_plus_g2 - 2.0 * g * nu;
     const double mie_phase = cs_norm * (1.0 + nu * nu) / (base * std::sqrt(base));
     const Spectrum l = rayleigh.sample(mu_lerp, nu_lerp) * static_cast<float>(rayleighPhase(nu)) +
-                       mie.sample(mu_lerp, nu_lerp) * static_cast<float>(mie_phase);
+                       mie.sample(mu_lerp, nu_lerp) * static_cast<float>(mie_phase) +
+                       multiple.sample(mu_lerp, nu_lerp) * multiple_shape_(multiple_peak_weight, nu);
     Spectrum tau;
     if (ground) {
       // Both legs reversed (pointing up), as TableSampler::opticalDepthAlongRay.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include <fmt/format.h>
@@ -25,13 +26,15 @@ bool refusalIsClear(const std::string& message) {
   return equals != std::string::npos && message.find(": ", equals) != std::string::npos;
 }
 
-void tableRange(const Texture4D& table, int channels, double& lo, double& hi) {
+void tableRange(std::initializer_list<const Texture4D*> tables, int channels, double& lo, double& hi) {
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
-  for (const Spectrum& t : table.texels) {
-    for (int c = 0; c < channels; ++c) {
-      lo = std::min(lo, double(t[c]));
-      hi = std::max(hi, double(t[c]));
+  for (const Texture4D* table : tables) {
+    for (const Spectrum& t : table->texels) {
+      for (int c = 0; c < channels; ++c) {
+        lo = std::min(lo, double(t[c]));
+        hi = std::max(hi, double(t[c]));
+      }
     }
   }
 }
@@ -105,15 +108,19 @@ StressRow runStressCase(const StressCase& stress_case, int threads) {
   row.orders_used = bake.file.orders_computed;
   row.automatic_orders = bake.report.orders_decision.automatic;
   row.converged = bake.report.orders_decision.converged;
-  tableRange(bake.file.tables.scattering, channels, row.scattering_min, row.scattering_max);
+  tableRange({&bake.file.tables.single_rayleigh, &bake.file.tables.multiple_scattering}, channels,
+             row.scattering_min, row.scattering_max);
 
   const BakeTables& t = bake.file.tables;
   // Optical depth >= 0 is transmittance <= 1; finite is transmittance > 0 or
   // exactly 0 through the ground.
   row.invariants.push_back(checkFiniteNonNegativeTexels("transmittance table (optical depth finite >= 0)",
                                                         t.transmittance.texels, channels));
-  row.invariants.push_back(checkFiniteNonNegativeTexels("scattering table finite >= 0", t.scattering.texels, channels));
+  row.invariants.push_back(
+      checkFiniteNonNegativeTexels("single_rayleigh table finite >= 0", t.single_rayleigh.texels, channels));
   row.invariants.push_back(checkFiniteNonNegativeTexels("single_mie table finite >= 0", t.single_mie.texels, channels));
+  row.invariants.push_back(
+      checkFiniteNonNegativeTexels("multiple_scattering table finite >= 0", t.multiple_scattering.texels, channels));
   row.invariants.push_back(checkFiniteNonNegativeTexels("irradiance table finite >= 0", t.irradiance.texels, channels));
   row.invariants.push_back(checkFiniteNonNegativeTexels("multiple_density table finite >= 0",
                                                         t.multiple_density.texels, channels));

@@ -31,7 +31,8 @@ struct StressRow {
   int orders_used = 0;
   bool automatic_orders = false;
   bool converged = false;  // automatic orders only
-  double scattering_min = 0.0, scattering_max = 0.0;  // scattering table, W m^-2 nm^-1
+  // Over the single Rayleigh and multiple-scattering tables, W m^-2 nm^-1.
+  double scattering_min = 0.0, scattering_max = 0.0;
   double lookup_min = 0.0, lookup_max = 0.0;          // radiance lookups, W m^-2 sr^-1 nm^-1
   long long lookups = 0;
   std::vector<InvariantResult> invariants;

@@ -13,7 +13,7 @@ void BM_DefaultEarthBake(benchmark::State& state) {
   skybake::BakeReport last;
   for (auto _ : state) {
     skybake::BakeOutput bake = skybake::bakeAtmosphere(config, static_cast<int>(state.range(0)), silent);
-    benchmark::DoNotOptimize(bake.file.tables.scattering.texels.data());
+    benchmark::DoNotOptimize(bake.file.tables.multiple_scattering.texels.data());
     last = bake.report;
   }
   for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering",

@@ -28,7 +28,7 @@ TEST(BakeMemoryEstimate, CountsEveryTableAliveAtThePeak) {
   EXPECT_EQ(three.table_4d_bytes, table_4d);
   EXPECT_EQ(three.tables_4d_at_peak, 9);
   EXPECT_EQ(three.peak_bytes, 9 * table_4d + 64 * 16 * texel + 3 * 16 * 8 * texel);
-  EXPECT_EQ(three.kept_bytes, 3 * table_4d + 64 * 16 * texel + 16 * 8 * texel);
+  EXPECT_EQ(three.kept_bytes, 4 * table_4d + 64 * 16 * texel + 16 * 8 * texel);
   config.bake.orders = 1;
   EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 4);
   config.bake.orders = 2;

@@ -74,7 +74,7 @@ TEST(Bake, TablesAreFiniteAndNonNegative) {
   SilentProgress silent;
   const BakeOutput bake = bakeAtmosphere(test::smallEarth(3), 0, silent);
   const BakeTables& t = bake.file.tables;
-  for (const auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.scattering.texels, &t.single_mie.texels,
+  for (const auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
                              &t.multiple_density.texels}) {
     for (const Spectrum& s : *texels) {
       for (int c = 0; c < 4; ++c) {
@@ -95,7 +95,7 @@ TEST(Bake, ResultIsIdenticalForOneAndTwoThreads) {
   };
   EXPECT_TRUE(identical(one.file.tables.transmittance.texels, two.file.tables.transmittance.texels));
   EXPECT_TRUE(identical(one.file.tables.irradiance.texels, two.file.tables.irradiance.texels));
-  EXPECT_TRUE(identical(one.file.tables.scattering.texels, two.file.tables.scattering.texels));
+  EXPECT_TRUE(identical(one.file.tables.multiple_scattering.texels, two.file.tables.multiple_scattering.texels));
   EXPECT_TRUE(identical(one.file.tables.single_mie.texels, two.file.tables.single_mie.texels));
   EXPECT_TRUE(identical(one.file.tables.multiple_density.texels, two.file.tables.multiple_density.texels));
 }

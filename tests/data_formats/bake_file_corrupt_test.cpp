@@ -41,9 +41,10 @@ BakeFile tinyBake() {
   BakeTables& t = bake.tables;
   t.transmittance = Texture2D(s.transmittance_mu, s.transmittance_r);
   t.irradiance = Texture2D(s.irradiance_mu_s, s.irradiance_r);
-  t.scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
-  t.single_mie = t.scattering;
-  t.multiple_density = t.scattering;
+  t.single_rayleigh = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
+  t.single_mie = t.single_rayleigh;
+  t.multiple_scattering = t.single_rayleigh;
+  t.multiple_density = t.single_rayleigh;
   return bake;
 }
 
@@ -86,8 +87,9 @@ void writeHeadersOnly(const fs::path& path, const BakeConfig& config) {
     int width;
     int height;
   } parts[] = {{bake_file::kPartTransmittance, s.transmittance_mu, s.transmittance_r},
-               {bake_file::kPartScattering, atlas_width, atlas_height},
+               {bake_file::kPartSingleRayleigh, atlas_width, atlas_height},
                {bake_file::kPartSingleMie, atlas_width, atlas_height},
+               {bake_file::kPartMultipleScattering, atlas_width, atlas_height},
                {bake_file::kPartIrradiance, s.irradiance_mu_s, s.irradiance_r},
                {bake_file::kPartMultipleDensity, atlas_width, atlas_height}};
   // Parts of a multi-part file share one display window.
@@ -130,7 +132,7 @@ TEST_F(BakeFileCorruptTest, MemoryReadEqualsFileRead) {
   const BakeFile from_memory = readBakeFileFromMemory(fileBytes(good), "in memory");
   EXPECT_EQ(configToToml(from_memory.config), configToToml(from_file.config));
   EXPECT_EQ(from_memory.report_json, from_file.report_json);
-  EXPECT_EQ(from_memory.tables.scattering.texels, from_file.tables.scattering.texels);
+  EXPECT_EQ(from_memory.tables.single_rayleigh.texels, from_file.tables.single_rayleigh.texels);
 }
 
 TEST_F(BakeFileCorruptTest, TruncatedMemoryIsRefusedNamingTheSource) {

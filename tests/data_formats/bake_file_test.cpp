@@ -25,11 +25,12 @@ BakeFile syntheticBake() {
   BakeTables& t = bake.tables;
   t.transmittance = Texture2D(s.transmittance_mu, s.transmittance_r);
   t.irradiance = Texture2D(s.irradiance_mu_s, s.irradiance_r);
-  t.scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
+  t.single_rayleigh = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.single_mie = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
+  t.multiple_scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.multiple_density = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   float x = 0.1f;
-  for (auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.scattering.texels, &t.single_mie.texels,
+  for (auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
                        &t.multiple_density.texels}) {
     for (Spectrum& v : *texels) {
       v = Spectrum(x, x * 1.5f, x * 0.25f, 0.0f);
@@ -68,7 +69,7 @@ TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
   };
   same(read.tables.transmittance.texels, written.tables.transmittance.texels);
   same(read.tables.irradiance.texels, written.tables.irradiance.texels);
-  same(read.tables.scattering.texels, written.tables.scattering.texels);
+  same(read.tables.single_rayleigh.texels, written.tables.single_rayleigh.texels);
   same(read.tables.single_mie.texels, written.tables.single_mie.texels);
   same(read.tables.multiple_density.texels, written.tables.multiple_density.texels);
 }
@@ -82,9 +83,9 @@ TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {
   EXPECT_EQ(read.config.bake.precision, StoragePrecision::Half);
   // half has an 11-bit significand: relative rounding error <= 2^-11 ~ 4.9e-4
   // for normal values (the synthetic values are all in half's normal range).
-  for (size_t i = 0; i < read.tables.scattering.texels.size(); ++i) {
-    const float a = written.tables.scattering.texels[i][0];
-    EXPECT_NEAR(read.tables.scattering.texels[i][0], a, std::abs(a) * 4.9e-4f);
+  for (size_t i = 0; i < read.tables.single_rayleigh.texels.size(); ++i) {
+    const float a = written.tables.single_rayleigh.texels[i][0];
+    EXPECT_NEAR(read.tables.single_rayleigh.texels[i][0], a, std::abs(a) * 4.9e-4f);
   }
 }
 
@@ -93,7 +94,7 @@ TEST_F(BakeFileTest, FailedWriteLeavesExistingFileIntactAndNoTemporary) {
   writeBakeFile(path, syntheticBake());
   const auto size_before = fs::file_size(path);
   BakeFile broken = syntheticBake();
-  broken.tables.scattering.texels.clear();  // inconsistent: the write must fail
+  broken.tables.single_rayleigh.texels.clear();  // inconsistent: the write must fail
   EXPECT_THROW(writeBakeFile(path, broken), Error);
   EXPECT_EQ(fs::file_size(path), size_before);
   EXPECT_NO_THROW(readBakeFile(path));
