@@ -5,7 +5,9 @@
 
 #include <chrono>
 #include <limits>
+#include <memory>
 
+#include "baker/order_shapes.h"
 #include "baker/stages.h"
 
 #include <fmt/format.h>
@@ -48,30 +50,6 @@ Spectrum meanSingleScatteringRadiance(const TableSampler& sampler, const Texture
   return Spectrum(sum / static_cast<double>(rayleigh.texels.size()));
 }
 
-// Mean radiance of one multiple-scattering order over all texels, the
-// multiple-scattering shape at each texel's r and nu multiplied back.
-Spectrum meanMultipleScatteringRadiance(const TableSampler& sampler, const Texture4D& delta,
-                                        const MultipleScatteringPhase& shape) {
-  const ScatteringSizes& s = sampler.scatteringSizes();
-  std::vector<double> mu_s_of_texel(s.mu_s);
-  for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
-    mu_s_of_texel[i_mu_s] = muSFromScatteringTexel(sampler.domain(), s, i_mu_s);
-  }
-  SpectrumD sum(0.0);
-  for (int i_r = 0; i_r < s.r; ++i_r)
-    for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
-      const ScatteringTexelConfig c = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0);
-      const double mu = c.mu;
-      const SpectrumD peak_weight = shape.peakWeightAt(c.r - sampler.domain().bottom_radius_m);
-      for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
-        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-          const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), mu, mu_s_of_texel[i_mu_s]);
-          sum += SpectrumD(delta.at(i_r, i_mu, i_mu_s, i_nu) * shape(peak_weight, nu));
-        }
-    }
-  return Spectrum(sum / static_cast<double>(std::max<size_t>(delta.texels.size(), 1)));
-}
-
 void addScaled(std::vector<Spectrum>& sum, const std::vector<Spectrum>& delta, const Spectrum& scale) {
   for (size_t i = 0; i < sum.size(); ++i) sum[i] += delta[i] * scale;
 }
@@ -96,8 +74,10 @@ float lastOrderShare(const std::vector<OrderContribution>& orders, int channels)
 // (and too large) to add: such atmospheres need more computed orders.
 constexpr float kMaxTailRatio = 0.8f;
 
-TailEstimate addTailEstimate(const std::vector<OrderContribution>& orders, int channels, const Texture4D& last_radiance,
-                             const Texture4D& last_density, const Texture2D& last_irradiance, BakeTables& tables) {
+TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<OrderContribution>& orders, int channels,
+                             const Texture4D& last_radiance, const Texture4D& last_density,
+                             const MultipleScatteringPhase& last_shape, const MultipleScatteringPhase& stored_shape,
+                             const Texture2D& last_irradiance, BakeTables& tables) {
   TailEstimate tail;
   const size_t n = orders.size();
   if (n < 3) {
@@ -115,8 +95,9 @@ TailEstimate addTailEstimate(const std::vector<OrderContribution>& orders, int c
     }
     scale[c] = tail.ratio[c] / (1.0f - tail.ratio[c]);
   }
-  addScaled(tables.multiple_scattering.texels, last_radiance.texels, scale);
-  addScaled(tables.multiple_density.texels, last_density.texels, scale);
+  addReshaped(sampler, TexelLayout::Scattering, last_radiance, last_shape, stored_shape, scale,
+              tables.multiple_scattering);
+  addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, scale, tables.multiple_density);
   // The sky irradiance holds orders 1 .. N-1; the rest follow the same series
   // from order N - 1 on.
   addScaled(tables.irradiance.texels, last_irradiance.texels, scale);
@@ -188,8 +169,11 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
        Spectrum(0.0f)});
 
   // Orders 2..N, each texel divided by the multiple-scattering shape at its
-  // r and nu (runtime/multiple_scattering_phase.h); a lookup multiplies it back.
-  const MultipleScatteringPhase multiple_shape(a);
+  // r and nu (runtime/multiple_scattering_phase.h): while iterating, each
+  // order by its own; summed into the file, by the stored one, which a lookup
+  // multiplies back.
+  const MultipleScatteringPhase stored_shape(a);
+  std::unique_ptr<MultipleScatteringPhase> previous_shape;  // the last computed order's
   tables.multiple_scattering = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
   tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
@@ -201,11 +185,14 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   report.orders_decision.tolerance = settings.auto_orders ? settings.order_tolerance : 0.0;
   report.orders_decision.cap = settings.auto_orders ? settings.max_orders : 0;
   for (int order = 2; order <= last_order; ++order) {
-    const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple, multiple_shape};
+    auto order_shape = std::make_unique<MultipleScatteringPhase>(a, order);
+    const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple,
+                                 previous_shape ? *previous_shape : stored_shape};
     const ScatteringDensity density = stage.run("scattering_density", order, slices_4d, [&] {
-      return computeScatteringDensityTable(ctx, optical_depth, previous, delta_irradiance);
+      return computeScatteringDensityTable(ctx, optical_depth, previous, *order_shape, delta_irradiance);
     });
-    addScaled(tables.multiple_density.texels, density.at_density_texels.texels, Spectrum(1.0f));
+    addReshaped(sampler, TexelLayout::Density, density.at_density_texels, *order_shape, stored_shape, Spectrum(1.0f),
+                tables.multiple_density);
     last_density = density.at_density_texels;
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
       return computeIndirectIrradianceTable(ctx, previous);
@@ -214,11 +201,12 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 
     delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
-      return computeMultipleScatteringTable(ctx, optical_depth, density.at_scattering_texels, multiple_shape);
+      return computeMultipleScatteringTable(ctx, optical_depth, density.at_scattering_texels, *order_shape);
     });
-    addScaled(tables.multiple_scattering.texels, delta_multiple.texels, Spectrum(1.0f));
-    report.orders.push_back(
-        {order, meanMultipleScatteringRadiance(sampler, delta_multiple, multiple_shape), Spectrum(0.0f)});
+    addReshaped(sampler, TexelLayout::Scattering, delta_multiple, *order_shape, stored_shape, Spectrum(1.0f),
+                tables.multiple_scattering);
+    report.orders.push_back({order, meanShapedRadiance(sampler, delta_multiple, *order_shape), Spectrum(0.0f)});
+    previous_shape = std::move(order_shape);
     report.orders_decision.last_order_share = lastOrderShare(report.orders, a.channelCount());
     if (settings.auto_orders && report.orders_decision.last_order_share < settings.order_tolerance) {
       report.orders_decision.converged = true;
@@ -227,7 +215,9 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   }
 
   if (config.bake.tail_estimate) {
-    report.tail = addTailEstimate(report.orders, a.channelCount(), delta_multiple, last_density, delta_irradiance, tables);
+    report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density,
+                                  previous_shape ? *previous_shape : stored_shape, stored_shape, delta_irradiance,
+                                  tables);
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";
   }

@@ -122,7 +122,7 @@ IncidentRadiance incidentRadiance(const StageContext& ctx, const DirectionGrid& 
 }  // namespace
 
 ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
-                                                const OrderRadiance& previous,
+                                                const OrderRadiance& previous, const MultipleScatteringPhase& shape,
                                                 const Texture2D& ground_irradiance) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
@@ -152,7 +152,7 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
           a.rayleigh_scattering * (rayleigh_norm * static_cast<float>(media.rayleighDensity(altitude)));
       const Spectrum mie_coefficient = a.mie_scattering * (cs_norm * static_cast<float>(media.mieDensity(altitude)));
       const double sun_x = safeSqrt(1.0 - mu_s * mu_s);
-      const SpectrumD peak_weight = previous.multiple_shape.peakWeightAt(altitude);
+      const SpectrumD peak_weight = shape.peakWeightAt(altitude);
 
       // Density toward the viewer looking along (mu, nu): the phase-weighted
       // sum over incident directions.
@@ -186,10 +186,10 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
           const ScatteringTexelConfig c =
               scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
           out.at_scattering_texels.at(i_r, i_mu, i_mu_s, i_nu) =
-              densityToward(c.mu, c.nu) / previous.multiple_shape(peak_weight, c.nu);
+              densityToward(c.mu, c.nu) / shape(peak_weight, c.nu);
           const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), density_mu, mu_s);
           out.at_density_texels.at(i_r, i_mu, i_mu_s, i_nu) =
-              densityToward(density_mu, nu) / previous.multiple_shape(peak_weight, nu);
+              densityToward(density_mu, nu) / shape(peak_weight, nu);
         }
       }
       ctx.progress.advance(1);

@@ -50,8 +50,8 @@ struct OrderRadiance {
 
 // Light scattered once more at each point, per unit length (W m^-3 sr^-1 nm^-1),
 // from the radiance of order n - 1 and, off the ground, the irradiance of
-// order n - 2 (`ground_irradiance`), divided by the multiple-scattering shape
-// at the texel's r and nu (runtime/multiple_scattering_phase.h). Evaluated on the scattering table's texels (for the
+// order n - 2 (`ground_irradiance`), divided by order n's multiple-scattering
+// `shape` at the texel's r and nu (runtime/multiple_scattering_phase.h). Evaluated on the scattering table's texels (for the
 // multiple-scattering stage) and on the linear-mu texels of the stored
 // density table (see densityCoordMu).
 struct ScatteringDensity {
@@ -59,8 +59,8 @@ struct ScatteringDensity {
   Texture4D at_density_texels;
 };
 ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
-                                        const OrderRadiance& previous,
-                                        const Texture2D& ground_irradiance);
+                                                const OrderRadiance& previous, const MultipleScatteringPhase& shape,
+                                                const Texture2D& ground_irradiance);
 
 // Irradiance on a horizontal surface from the sky radiance of one order.
 Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const OrderRadiance& order);

@@ -72,10 +72,23 @@ inline constexpr double kMaxMultipleScatteringG = 0.7;
 // a few pieces' width (15 m in a 60 km shell).
 inline constexpr int kColumnDepthPieces = 4096;
 
+// The order whose shape the stored tables are divided by: the second, the
+// brightest and most peaked of the multiple-scattering orders.
+inline constexpr int kStoredShapeOrder = 2;
+
 class MultipleScatteringPhase {
  public:
-  explicit MultipleScatteringPhase(const AtmosphereParameters& a)
-      : g_(std::clamp(a.mie_phase_g * a.mie_phase_g, -kMaxMultipleScatteringG, kMaxMultipleScatteringG)),
+  // The shape of scattering order `order` (>= 2): g_ms = g^order and
+  // w = m_local m_column^order, a peak that each further Mie event widens and
+  // each Rayleigh event weakens. The stored tables use kStoredShapeOrder; the
+  // bake divides each order by its own shape while iterating (a higher order
+  // divided by the second's peak came out too bright toward the sun, and
+  // feeding that into the next order made light: in a Mie x1000 haze the
+  // orders decayed by 0.95 each where single-scattering albedo 0.9 allows at
+  // most 0.9).
+  explicit MultipleScatteringPhase(const AtmosphereParameters& a, int order = kStoredShapeOrder)
+      : g_(std::clamp(std::pow(a.mie_phase_g, order), -kMaxMultipleScatteringG, kMaxMultipleScatteringG)),
+        order_(order),
         rayleigh_scattering_(a.rayleigh_scattering),
         mie_scattering_(a.mie_scattering),
         rayleigh_density_(a.rayleigh_density),
@@ -89,12 +102,14 @@ class MultipleScatteringPhase {
       mie_column_m += profileDensity(mie_density_, altitude_m) * piece_m;
     }
     column_mie_share_ = mieShare(rayleigh_column_m, mie_column_m);
+    column_mie_share_power_ = SpectrumD(1.0);
+    for (int i = 0; i < order; ++i) column_mie_share_power_ *= column_mie_share_;
   }
 
   // w at an altitude, per channel, in [0, 1].
   SpectrumD peakWeightAt(double altitude_m) const {
     return mieShare(profileDensity(rayleigh_density_, altitude_m), profileDensity(mie_density_, altitude_m)) *
-           column_mie_share_ * column_mie_share_;
+           column_mie_share_power_;
   }
 
   // f for a peak weight w (from peakWeightAt) at nu, per channel, sr^-1;
@@ -113,6 +128,7 @@ class MultipleScatteringPhase {
   Spectrum operator()(double altitude_m, double nu) const { return (*this)(peakWeightAt(altitude_m), nu); }
 
   double g() const { return g_; }
+  int order() const { return order_; }
 
  private:
   // Mie's share of scattering, per channel, for the given amounts (densities
@@ -129,9 +145,11 @@ class MultipleScatteringPhase {
   }
 
   double g_;
+  int order_;
   Spectrum rayleigh_scattering_, mie_scattering_;
   DensityProfile rayleigh_density_, mie_density_;
   SpectrumD column_mie_share_{0.0};
+  SpectrumD column_mie_share_power_{0.0};  // m_column^order
 };
 
 }  // namespace skybake

@@ -84,8 +84,8 @@ std::vector<StressCase> stressCases(bool quick) {
     add("thick_haze", "Mie x1000: visibility ~0.9 km, vertical Mie optical depth ~5", c);
     failsInQuickRun(
         kOrdersDecrease,
-        "at the quick sizes orders 5 to 9 rise by up to 4 % before decaying at ~0.93 per order; at the full "
-        "sizes every order decreases, so the coarse tables are the likely cause");
+        "at the quick sizes an order after the fifth can exceed the one before by up to 0.4 % before the orders "
+        "decay at ~0.93 per order; at the full sizes every order decreases, so the coarse tables are the likely cause");
   }
   {
     // Rayleigh x1000 with a 16 km scale height (Venus's): vertical optical
@@ -99,12 +99,6 @@ std::vector<StressCase> stressCases(bool quick) {
     a.rayleigh_density = {{0.0, 1.0, -1.0 / kVenusScaleHeight_m, 0.0, 0.0}};
     useAutomaticOrders(c, quick);
     add("venus_like", "Rayleigh x1000, scale height 16 km: vertical optical depth 93 to 530", c);
-    failsInQuickRun(
-        kOrdersDecrease,
-        "at the quick sizes the 440 nm channel (vertical optical depth 530) diverges: each order's mean radiance "
-        "is 1.33 times the previous one, without end. Doubling the transmittance table's mu axis (64 to 128) alone "
-        "makes it converge (ratio 0.89): interpolated optical depths of 500 are too coarse there, segment "
-        "transmittances come out too high and each order gains energy");
   }
   {
     BakeConfig c = earth;
@@ -129,11 +123,11 @@ std::vector<StressCase> stressCases(bool quick) {
     cases.back().check_energy_budget = true;
     failsInQuickRun(
         kEnergyBudgetCloses,
-        "at the quick sizes the bake makes light: (in - out) / in = -1.5 %, -2.8 %, -5.3 % at 680, 550, 440 nm. The "
+        "at the quick sizes the bake makes light: (in - out) / in = -1.5 %, -3.0 %, -5.7 % at 680, 550, 440 nm. The "
         "scattering table's 8 mu_s texels leave one interval from mu_s 0.36 to 1 (sun zenith 69 to 0 deg); "
         "interpolated linearly in the texture coordinate, light proportional to mu_s (the lit ground's, most of "
         "what leaves a planet of albedo 1) comes out up to 24 % high mid-interval, 12 % over the sphere. With 16 "
-        "mu_s and 16 r texels the imbalance is -0.3 to -0.5 %, at the full sizes -0.4 to -1.2 %");
+        "mu_s and 16 r texels the imbalance is -0.3 to -0.5 %, at the full sizes -0.4 to -1.5 %");
   }
   for (const auto& [name, g] : {std::pair{"mie_g_0.99", 0.99}, {"mie_g_0", 0.0}, {"mie_g_-0.9", -0.9}}) {
     BakeConfig c = earth;

@@ -50,6 +50,25 @@ TEST(MultipleScatteringPhase, PeakWeightIsTheLocalMieShareTimesTheColumnsSquared
   EXPECT_LT(shape.peakWeightAt(10000.0)[0], 0.01 * shape.peakWeightAt(0.0)[0]);
 }
 
+TEST(MultipleScatteringPhase, HigherOrdersHaveWiderAndWeakerPeaks) {
+  AtmosphereParameters a = builtinEarthConfig().atmosphere;
+  a.mie_scattering *= 100.0f;  // a haze, so the peak weights are far from 0
+  a.mie_extinction *= 100.0f;
+  const MultipleScatteringPhase second(a), third(a, 3);
+  EXPECT_EQ(second.order(), kStoredShapeOrder);
+  EXPECT_DOUBLE_EQ(third.g(), 0.8 * 0.8 * 0.8);
+  for (int c = 0; c < 3; ++c) {
+    // One more factor of the column's Mie share, which is below 1.
+    const double ratio = third.peakWeightAt(0.0)[c] / second.peakWeightAt(0.0)[c];
+    EXPECT_GT(ratio, 0.5) << c;
+    EXPECT_LT(ratio, 1.0) << c;
+  }
+  // Two backward Mie scatterings make a forward peak, three a backward one.
+  a.mie_phase_g = -0.6;
+  EXPECT_GT(MultipleScatteringPhase(a, 2).g(), 0.0);
+  EXPECT_LT(MultipleScatteringPhase(a, 3).g(), 0.0);
+}
+
 TEST(MultipleScatteringPhase, NothingScatteringGivesTheIsotropicShape) {
   AtmosphereParameters a = builtinEarthConfig().atmosphere;
   a.rayleigh_scattering = Spectrum(0.0f);

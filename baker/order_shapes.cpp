@@ -1,0 +1,66 @@
+#include "baker/order_shapes.h"
+
+#include <vector>
+
+namespace skybake {
+namespace {
+
+// Calls f(i_r, i_mu, i_mu_s, i_nu, nu) for every texel, nu being the one the
+// texel was computed for (its slice's, clamped to the range its mu and mu_s
+// allow).
+template <typename F>
+void forEachTexel(const TableSampler& sampler, TexelLayout layout, F&& f) {
+  const AtmosphereDomain& d = sampler.domain();
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  std::vector<double> mu_s_of_texel(s.mu_s);
+  for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) mu_s_of_texel[i_mu_s] = muSFromScatteringTexel(d, s, i_mu_s);
+  for (int i_r = 0; i_r < s.r; ++i_r) {
+    for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
+      const double mu = layout == TexelLayout::Scattering ? scatteringTexelConfig(d, s, i_r, i_mu, 0, 0).mu
+                                                          : muFromDensityTexel(i_mu, s.mu);
+      for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
+          f(i_r, i_mu, i_mu_s, i_nu, clampNu(nuOfScatteringSlice(i_nu, s.nu), mu, mu_s_of_texel[i_mu_s]));
+        }
+      }
+    }
+  }
+}
+
+// The shape's peak weight at each r texel.
+std::vector<SpectrumD> peakWeightsOfRows(const TableSampler& sampler, const MultipleScatteringPhase& shape) {
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  std::vector<SpectrumD> w(s.r);
+  for (int i_r = 0; i_r < s.r; ++i_r) {
+    w[i_r] = shape.peakWeightAt(rFromScatteringTexel(sampler.domain(), s, i_r) - sampler.domain().bottom_radius_m);
+  }
+  return w;
+}
+
+}  // namespace
+
+Spectrum meanShapedRadiance(const TableSampler& sampler, const Texture4D& table, const MultipleScatteringPhase& shape) {
+  const std::vector<SpectrumD> weight = peakWeightsOfRows(sampler, shape);
+  SpectrumD sum(0.0);  // long sum: double
+  forEachTexel(sampler, TexelLayout::Scattering, [&](int i_r, int i_mu, int i_mu_s, int i_nu, double nu) {
+    sum += SpectrumD(table.at(i_r, i_mu, i_mu_s, i_nu) * shape(weight[i_r], nu));
+  });
+  return Spectrum(sum / static_cast<double>(std::max<size_t>(table.texels.size(), 1)));
+}
+
+void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
+                 const MultipleScatteringPhase& from, const MultipleScatteringPhase& to, const Spectrum& scale,
+                 Texture4D& sum) {
+  if (from.order() == to.order()) {
+    for (size_t i = 0; i < sum.texels.size(); ++i) sum.texels[i] += delta.texels[i] * scale;
+    return;
+  }
+  const std::vector<SpectrumD> from_weight = peakWeightsOfRows(sampler, from);
+  const std::vector<SpectrumD> to_weight = peakWeightsOfRows(sampler, to);
+  forEachTexel(sampler, layout, [&](int i_r, int i_mu, int i_mu_s, int i_nu, double nu) {
+    sum.at(i_r, i_mu, i_mu_s, i_nu) +=
+        delta.at(i_r, i_mu, i_mu_s, i_nu) * scale * from(from_weight[i_r], nu) / to(to_weight[i_r], nu);
+  });
+}
+
+}  // namespace skybake

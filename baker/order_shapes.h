@@ -1,0 +1,25 @@
+// Multiple-scattering tables are stored divided by a shape that depends on
+// the texel's r and nu (runtime/multiple_scattering_phase.h), a different one
+// for each order while the bake iterates. These walk a table's texels with
+// the nu each was computed for.
+#pragma once
+
+#include "baker/stages.h"
+
+namespace skybake {
+
+// Which texels a 4D table holds: the scattering tables' (Bruneton's mu with
+// the horizon split) or the stored density's (mu linear in [-1, 1]).
+enum class TexelLayout { Scattering, Density };
+
+// Mean radiance over all texels of a table stored divided by `shape`, the
+// shape multiplied back (W m^-2 sr^-1 nm^-1).
+Spectrum meanShapedRadiance(const TableSampler& sampler, const Texture4D& table, const MultipleScatteringPhase& shape);
+
+// sum += scale * delta * from / to at every texel: `delta` is divided by the
+// shape `from`, `sum` by `to`.
+void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
+                 const MultipleScatteringPhase& from, const MultipleScatteringPhase& to, const Spectrum& scale,
+                 Texture4D& sum);
+
+}  // namespace skybake
