@@ -214,6 +214,9 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     }
   }
 
+  // A bake without Mie scattering stores no single Mie table (all zeros).
+  if (!bakeStoresSingleMie(a)) tables.single_mie.texels = {};
+
   if (config.bake.tail_estimate) {
     report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density,
                                   previous_shape ? *previous_shape : stored_shape, stored_shape, delta_irradiance,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <span>
@@ -26,7 +27,8 @@ struct BakeTables {
   // Single Rayleigh scattering divided by the Rayleigh phase function:
   // W m^-2 nm^-1 (W m^-2 sr^-1 nm^-1 / sr^-1).
   Texture4D single_rayleigh;
-  // Single Mie scattering divided by the Mie phase function.
+  // Single Mie scattering divided by the Mie phase function; no texels where
+  // the bake has no Mie scattering (bakeStoresSingleMie).
   Texture4D single_mie;
   // Scattering orders 2..N divided by the multiple-scattering shape at the
   // texel's r and own nu (runtime/multiple_scattering_phase.h), W m^-2 nm^-1.
@@ -41,6 +43,25 @@ struct BakeTables {
   // nearly equal lookups.
   Texture4D multiple_density;
 };
+
+// Whether a bake stores the `single_mie` part: not when no channel has Mie
+// scattering, where it would hold nothing but zeros (a quarter of the file).
+// Readers then leave BakeTables::single_mie without texels.
+inline bool bakeStoresSingleMie(const AtmosphereParameters& a) {
+  for (int c = 0; c < a.channelCount(); ++c) {
+    if (a.mie_scattering[c] > 0.0f) return true;
+  }
+  return false;
+}
+
+// The bytes a 4D table of this bake takes uncompressed: what leaving one out
+// saves before compression.
+inline uint64_t table4DBytes(const BakeConfig& c) {
+  const TextureSizes& s = c.sizes;
+  const uint64_t value_bytes = c.bake.precision == StoragePrecision::Half ? 2 : 4;
+  return static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu *
+         c.atmosphere.channelCount() * value_bytes;
+}
 
 struct BakeFile {
   BakeConfig config;         // every parameter; sizes equal the tables' sizes

@@ -9,6 +9,7 @@
 #include <memory>
 #include <new>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -177,7 +178,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
     int height;
     std::vector<Spectrum>* texels;
   };
-  const Table tables[] = {
+  std::vector<Table> tables = {
       {kPartTransmittance, t.transmittance.width, t.transmittance.height, &t.transmittance.texels},
       {kPartIrradiance, t.irradiance.width, t.irradiance.height, &t.irradiance.texels},
       {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(),
@@ -188,6 +189,9 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
       {kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(),
        &t.multiple_density.texels},
   };
+  if (!bakeStoresSingleMie(a)) {
+    std::erase_if(tables, [](const Table& table) { return std::string_view(table.part) == kPartSingleMie; });
+  }
   std::vector<PartLayout> layouts;
   uint64_t stored_bytes = 0;
   for (const Table& table : tables) {

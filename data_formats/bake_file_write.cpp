@@ -1,5 +1,6 @@
 // Bake file writer. OpenEXR writes straight from the tables' float4 storage
 // (a stride of one Spectrum per texel), converting to half on request.
+#include <string_view>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -122,7 +123,7 @@ std::string table4DSizeText(const Texture4D& t) {
 void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
                    const std::function<void(const std::filesystem::path& temp)>& before_rename) {
   const BakeTables& t = bake.tables;
-  const std::vector<PartToWrite> parts = {
+  std::vector<PartToWrite> parts = {
       {kPartTransmittance, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
        "dimensionless", &t.transmittance.texels, t.transmittance.width, t.transmittance.height,
        fmt::format("mu={} r={}", t.transmittance.width, t.transmittance.height)},
@@ -146,6 +147,9 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
        "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_density.texels,
        t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
   };
+  if (!bakeStoresSingleMie(bake.config.atmosphere)) {
+    std::erase_if(parts, [](const PartToWrite& p) { return std::string_view(p.name) == kPartSingleMie; });
+  }
   for (const PartToWrite& part : parts) {
     if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0) {
       throw Error(ErrorKind::Internal, fmt::format("{}: part {} has no data of its size", path.string(), part.name));

@@ -84,7 +84,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
   const double shadow = std::max(shadow_length_m - start.moved, 0.0);
   if (shadow == 0.0) {
     rayleigh = sampler_.scattering(t.single_rayleigh, r, mu, mu_s, nu, ground);
-    mie = sampler_.scattering(t.single_mie, r, mu, mu_s, nu, ground);
+    mie = hasSingleMie() ? sampler_.scattering(t.single_mie, r, mu, mu_s, nu, ground) : Spectrum(0.0f);
     multiple = sampler_.scattering(t.multiple_scattering, r, mu, mu_s, nu, ground) *
                multiple_shape_(r - domain.bottom_radius_m, nu);
   } else {
@@ -96,7 +96,8 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
     const Spectrum shadow_transmittance =
         glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, shadow, ground));
     rayleigh = sampler_.scattering(t.single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
-    mie = sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+    mie = hasSingleMie() ? sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance
+                         : Spectrum(0.0f);
     multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
                multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
   }
@@ -134,7 +135,8 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
                     Spectrum(0.0f));
   };
   const Spectrum one(1.0f);
-  return {difference(t.single_rayleigh, one, one), difference(t.single_mie, one, one),
+  return {difference(t.single_rayleigh, one, one),
+          t.single_mie.texels.empty() ? Spectrum(0.0f) : difference(t.single_mie, one, one),
           difference(t.multiple_scattering, multiple_shape(r - domain.bottom_radius_m, nu),
                      multiple_shape(r_p - domain.bottom_radius_m, nu))};
 }

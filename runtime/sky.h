@@ -101,6 +101,8 @@ class Sky {
                         SpectrumBatch transmittance) const;
 
   const TableSampler& sampler() const { return sampler_; }
+  // False for a bake without Mie scattering, which stores no single Mie table.
+  bool hasSingleMie() const { return !bake_.tables.single_mie.texels.empty(); }
   const BakeTables& tables() const { return bake_.tables; }
 
  private:

@@ -12,11 +12,12 @@ namespace {
 
 // A 4D table interpolated at one (r, mu_s): mu_size x nu_size texels.
 struct MuNuSlice {
-  int mu_size;
-  int nu_size;
-  Blend blend;
+  int mu_size = 0;
+  int nu_size = 0;
+  Blend blend = Blend::Linear;
   std::vector<Spectrum> texels;  // [i_mu * nu_size + i_nu]
 
+  MuNuSlice() = default;
   MuNuSlice(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu_s, Blend blend)
       : mu_size(t.mu_size), nu_size(t.nu_size), blend(blend), texels(static_cast<size_t>(t.mu_size) * t.nu_size) {
     // Same multilinear weights as sample4D, applied in a different order.
@@ -29,6 +30,16 @@ struct MuNuSlice {
         texels[static_cast<size_t>(i_mu) * nu_size + i_nu] = r0 + (row(r.i1) - r0) * r.w1;
       }
     }
+  }
+
+  // A slice of zeros of `t`'s mu and nu sizes.
+  static MuNuSlice zeros(const Texture4D& t, Blend blend) {
+    MuNuSlice s;
+    s.mu_size = t.mu_size;
+    s.nu_size = t.nu_size;
+    s.blend = blend;
+    s.texels.assign(static_cast<size_t>(t.mu_size) * t.nu_size, Spectrum(0.0f));
+    return s;
   }
 
   Spectrum sample(const AxisLerp& mu, const AxisLerp& nu) const {
@@ -85,7 +96,9 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
   const AxisLerp r_lerp = axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, ss.r), ss.r);
   const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(scatteringCoordMuS(d, ss.mu_s, mu_s), ss.mu_s);
   const MuNuSlice rayleigh(t.single_rayleigh, r_lerp, mu_s_lerp, radianceBlend(mu_s));
-  const MuNuSlice mie(t.single_mie, r_lerp, mu_s_lerp, radianceBlend(mu_s));
+  // Without Mie scattering the bake stores no single Mie table: a slice of zeros.
+  const MuNuSlice mie = hasSingleMie() ? MuNuSlice(t.single_mie, r_lerp, mu_s_lerp, radianceBlend(mu_s))
+                                       : MuNuSlice::zeros(t.single_rayleigh, radianceBlend(mu_s));
   const MuNuSlice multiple(t.multiple_scattering, r_lerp, mu_s_lerp, radianceBlend(mu_s));
   const SpectrumD multiple_peak_weight = multiple_shape_.peakWeightAt(r - d.bottom_radius_m);
   const OpticalDepthRow depth_here(

@@ -26,7 +26,8 @@ void expectTableSizes(const skybake::BakeFile& bake) {
   const bool ok =
       t.transmittance.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
       t.irradiance.texels.size() == static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r &&
-      t.single_rayleigh.texels.size() == texels_4d && t.single_mie.texels.size() == texels_4d &&
+      t.single_rayleigh.texels.size() == texels_4d &&
+      t.single_mie.texels.size() == (skybake::bakeStoresSingleMie(bake.config.atmosphere) ? texels_4d : 0) &&
       t.multiple_scattering.texels.size() == texels_4d &&
       t.multiple_density.texels.size() == texels_4d;
   if (!ok) skybake::fuzz::finding("accepted bake's tables do not match its config", bake.config.name);

@@ -1,0 +1,85 @@
+// A bake without Mie scattering leaves out the single Mie table (it would be
+// all zeros) and gives the same sky as one with negligible Mie scattering.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfMultiPartInputFile.h>
+#include <glm/geometric.hpp>
+
+#include "baker/bake.h"
+#include "data_formats/bake_file_attributes.h"
+#include "runtime/sky.h"
+#include "test_configs.h"
+
+namespace skybake {
+namespace {
+
+namespace fs = std::filesystem;
+
+BakeConfig withMieScattering(float scattering_per_m) {
+  BakeConfig c = test::smallEarth(2);
+  c.atmosphere.mie_scattering = Spectrum(scattering_per_m);
+  c.atmosphere.mie_extinction = Spectrum(scattering_per_m);
+  return c;
+}
+
+TEST(NoMieBake, LeavesOutTheSingleMiePartAndMatchesANegligibleMieBake) {
+  const fs::path path = fs::temp_directory_path() / ("skybake_no_mie_test_" + std::to_string(::getpid()) + ".exr");
+  SilentProgress silent;
+  writeBakeFile(path, bakeAtmosphere(withMieScattering(0.0f), 0, silent).file);
+
+  std::vector<std::string> parts;
+  {
+    Imf::MultiPartInputFile file(path.c_str());
+    for (int i = 0; i < file.parts(); ++i) parts.push_back(file.header(i).name());
+  }
+  EXPECT_EQ(parts.size(), 5u);
+  for (const std::string& name : parts) EXPECT_NE(name, bake_file::kPartSingleMie);
+
+  const Sky no_mie = Sky::load(path);
+  fs::remove(path);
+  EXPECT_FALSE(no_mie.hasSingleMie());
+  // 1e-30 m^-1 of Mie scattering: its part is stored and contributes ~1e-24
+  // of the radiance, far below float resolution.
+  const Sky tiny_mie(bakeAtmosphere(withMieScattering(1e-30f), 0, silent).file);
+  EXPECT_TRUE(tiny_mie.hasSingleMie());
+
+  const glm::dvec3 camera(0.0, 0.0, no_mie.atmosphere().bottom_radius_m + 1000.0);
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.5, 0.0, 0.8));
+  std::vector<float> x, y, z;
+  for (double zenith_deg : {0.0, 45.0, 89.0, 91.0, 135.0}) {
+    const double v = zenith_deg * M_PI / 180.0;
+    x.push_back(static_cast<float>(std::sin(v)));
+    y.push_back(0.0f);
+    z.push_back(static_cast<float>(std::cos(v)));
+  }
+  std::vector<float> batch[3], unused[3];
+  for (auto& b : batch) b.resize(x.size());
+  for (auto& u : unused) u.resize(x.size());
+  no_mie.skyRadianceBatch(camera, sun, {x.data(), y.data(), z.data(), x.size()},
+                          {{batch[0].data(), batch[1].data(), batch[2].data(), nullptr}},
+                          {{unused[0].data(), unused[1].data(), unused[2].data(), nullptr}});
+  for (size_t i = 0; i < x.size(); ++i) {
+    const glm::dvec3 view(x[i], y[i], z[i]);
+    const Spectrum a = no_mie.skyRadiance(camera, view, sun).radiance;
+    const Spectrum b = tiny_mie.skyRadiance(camera, view, sun).radiance;
+    const Spectrum to_point = no_mie.radianceToPoint(camera, camera + 5000.0 * view, sun).radiance;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_GT(a[c], 0.0f) << i;
+      // Same tables but for the zero-filled one: equal to float rounding.
+      EXPECT_NEAR(a[c], b[c], 1e-5f * b[c]) << i << " channel " << c;
+      EXPECT_NEAR(batch[c][i], a[c], 1e-5f * a[c]) << i << " channel " << c;
+      EXPECT_TRUE(std::isfinite(to_point[c]) && to_point[c] >= 0.0f) << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skybake
