@@ -214,8 +214,9 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     }
   }
 
-  // A bake without Mie scattering stores no single Mie table (all zeros).
-  if (!bakeStoresSingleMie(a)) tables.single_mie.texels = {};
+  // The parts the file leaves out (no Mie scattering, outputs the scene does
+  // not use): computed where later orders needed them, not kept.
+  clearLeftOutTables(config, tables);
 
   if (config.bake.tail_estimate) {
     report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density,

@@ -81,11 +81,25 @@ struct BakeSettings {
   bool tail_estimate = true;
 };
 
+// What the scene uses of the bake ([scene] in CONFIG.md). The tables of an
+// output it does not use are left out of the file. Sky radiance is always
+// baked: the other outputs are built on its tables.
+struct SceneOutputs {
+  // Sky::radianceToPoint (aerial perspective): the multiple-scattering density table.
+  bool radiance_to_points = true;
+  // Sky::irradiance, and the lit ground in Sky::receivedRadiance: the sky
+  // irradiance table (computed anyway, since higher orders need it).
+  bool ground_irradiance = true;
+
+  bool all() const { return radiance_to_points && ground_irradiance; }
+};
+
 struct BakeConfig {
   std::string name = "custom";
   AtmosphereParameters atmosphere;
   TextureSizes sizes;
   BakeSettings bake;
+  SceneOutputs scene;
 };
 
 }  // namespace skybake

@@ -9,6 +9,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "atmosphere_parameters.h"
 #include "textures.h"
@@ -54,14 +55,17 @@ inline bool bakeStoresSingleMie(const AtmosphereParameters& a) {
   return false;
 }
 
-// The bytes a 4D table of this bake takes uncompressed: what leaving one out
-// saves before compression.
-inline uint64_t table4DBytes(const BakeConfig& c) {
-  const TextureSizes& s = c.sizes;
-  const uint64_t value_bytes = c.bake.precision == StoragePrecision::Half ? 2 : 4;
-  return static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu *
-         c.atmosphere.channelCount() * value_bytes;
-}
+// A part that a bake leaves out of its file: the scene does not use it
+// ([scene] outputs) or it would hold only zeros.
+struct LeftOutPart {
+  const char* part;    // its name (FORMAT.md)
+  const char* reason;  // why, in words
+  uint64_t bytes;      // what it would take uncompressed
+};
+std::vector<LeftOutPart> leftOutParts(const BakeConfig& config);
+bool leavesOut(const BakeConfig& config, const char* part);
+// Empties the texels of the tables a bake leaves out (their sizes stay).
+void clearLeftOutTables(const BakeConfig& config, BakeTables& tables);
 
 struct BakeFile {
   BakeConfig config;         // every parameter; sizes equal the tables' sizes

@@ -189,9 +189,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
       {kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(),
        &t.multiple_density.texels},
   };
-  if (!bakeStoresSingleMie(a)) {
-    std::erase_if(tables, [](const Table& table) { return std::string_view(table.part) == kPartSingleMie; });
-  }
+  std::erase_if(tables, [&](const Table& table) { return leavesOut(bake.config, table.part); });
   std::vector<PartLayout> layouts;
   uint64_t stored_bytes = 0;
   for (const Table& table : tables) {

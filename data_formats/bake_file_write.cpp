@@ -147,9 +147,7 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
        "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_density.texels,
        t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
   };
-  if (!bakeStoresSingleMie(bake.config.atmosphere)) {
-    std::erase_if(parts, [](const PartToWrite& p) { return std::string_view(p.name) == kPartSingleMie; });
-  }
+  std::erase_if(parts, [&](const PartToWrite& p) { return leavesOut(bake.config, p.name); });
   for (const PartToWrite& part : parts) {
     if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0) {
       throw Error(ErrorKind::Internal, fmt::format("{}: part {} has no data of its size", path.string(), part.name));

@@ -163,7 +163,7 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
   const ConfigReader in(source);
   in.rejectUnknownKeys(root, "", {"name", "channels", "planet", "sun", "rayleigh", "mie",
-                                  "absorption", "resolution", "bake"});
+                                  "absorption", "resolution", "bake", "scene"});
   BakeConfig config;
   AtmosphereParameters& a = config.atmosphere;
 
@@ -280,6 +280,35 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
         config.bake.precision = StoragePrecision::Half;
       } else {
         in.fail(precision, "bake.precision", value, "must be \"float\" or \"half\"");
+      }
+    }
+  }
+
+  if (const toml::table* t = in.table(root, "", "scene", false)) {
+    in.rejectUnknownKeys(*t, "scene.", {"outputs"});
+    if (const toml::node* outputs = t->get("outputs")) {
+      const char* kExpected = "must be a list of \"sky_radiance\", \"radiance_to_points\", \"ground_irradiance\"";
+      const toml::array* list = outputs->as_array();
+      if (list == nullptr) in.fail(outputs, "scene.outputs", ConfigReader::describe(*outputs), kExpected);
+      bool sky_radiance = false;
+      config.scene.radiance_to_points = false;
+      config.scene.ground_irradiance = false;
+      for (const toml::node& item : *list) {
+        const auto name = item.as_string();
+        if (!name) in.fail(&item, "scene.outputs", ConfigReader::describe(item), kExpected);
+        if (name->get() == "sky_radiance") {
+          sky_radiance = true;
+        } else if (name->get() == "radiance_to_points") {
+          config.scene.radiance_to_points = true;
+        } else if (name->get() == "ground_irradiance") {
+          config.scene.ground_irradiance = true;
+        } else {
+          in.fail(&item, "scene.outputs", ConfigReader::describe(item), kExpected);
+        }
+      }
+      if (!sky_radiance) {
+        in.fail(outputs, "scene.outputs", ConfigReader::describe(*outputs),
+                "must include \"sky_radiance\": the other outputs are built on its tables");
       }
     }
   }

@@ -38,6 +38,14 @@ std::string profileList(const DensityProfile& layers) {
   return out + "]";
 }
 
+// The [scene] table: the outputs the scene uses, sky radiance first.
+std::string sceneTable(const SceneOutputs& scene) {
+  std::string outputs = "\"sky_radiance\"";
+  if (scene.radiance_to_points) outputs += ", \"radiance_to_points\"";
+  if (scene.ground_irradiance) outputs += ", \"ground_irradiance\"";
+  return fmt::format("\n[scene]\noutputs = [{}]\n", outputs);
+}
+
 }  // namespace
 
 std::string configToToml(const BakeConfig& config) {
@@ -68,7 +76,7 @@ std::string configToToml(const BakeConfig& config) {
       "[absorption]\nextinction = {}\ndensity = {}\n\n"
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
       "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n\n"
-      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}",
+      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}",
       name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
       spectrumList(a.ground_albedo, n), spectrumList(a.sun_irradiance, n),
       numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
@@ -84,7 +92,9 @@ std::string configToToml(const BakeConfig& config) {
       // canonical text (and the reference cache keys hashed from it).
       config.bake.auto_orders ? fmt::format("order_tolerance = {}\nmax_orders = {}\n",
                                             numberText(config.bake.order_tolerance), config.bake.max_orders)
-                              : std::string());
+                              : std::string(),
+      // Written only when the scene leaves an output out, for the same reason.
+      config.scene.all() ? std::string() : sceneTable(config.scene));
 }
 
 }  // namespace skybake

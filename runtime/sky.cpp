@@ -186,6 +186,10 @@ RadianceAndTransmittance directSegmentRadiance(const TableSampler& sampler, cons
 
 RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
                                               const glm::dvec3& sun_dir, double shadow_length_m) const {
+  if (!outputs().radiance_to_points) {
+    throw Error(ErrorKind::BadInput,
+                "radiance to a point: this bake leaves it out (its scene.outputs lacks \"radiance_to_points\")");
+  }
   const AtmosphereDomain& domain = sampler_.domain();
   const glm::dvec3 offset = point - camera;
   const double distance = glm::length(offset);
@@ -266,6 +270,10 @@ RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const g
 
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
                                     const glm::dvec3& sun_dir) const {
+  if (!outputs().ground_irradiance) {
+    throw Error(ErrorKind::BadInput,
+                "irradiance: this bake leaves it out (its scene.outputs lacks \"ground_irradiance\")");
+  }
   const AtmosphereDomain& domain = sampler_.domain();
   const double length = glm::length(point);
   const double r = std::clamp(length, domain.bottom_radius_m, domain.top_radius_m);

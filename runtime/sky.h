@@ -103,6 +103,10 @@ class Sky {
   const TableSampler& sampler() const { return sampler_; }
   // False for a bake without Mie scattering, which stores no single Mie table.
   bool hasSingleMie() const { return !bake_.tables.single_mie.texels.empty(); }
+  // What the bake holds besides sky radiance ([scene] outputs in CONFIG.md).
+  // radianceToPoint and irradiance (and receivedRadiance for a ray that ends
+  // on the ground) throw Error(BadInput) for an output the bake left out.
+  const SceneOutputs& outputs() const { return bake_.config.scene; }
   const BakeTables& tables() const { return bake_.tables; }
 
  private:

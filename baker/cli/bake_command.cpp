@@ -1,8 +1,11 @@
-// skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float]
+// skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float] [--outputs ...]
+#include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "baker/available_memory.h"
@@ -26,6 +29,7 @@ struct BakeOptions {
   std::optional<double> order_tolerance;  // absent: from the config
   int threads = 0;     // 0: all cores (OpenMP's default)
   std::string precision;  // empty: from the config
+  std::vector<std::string> outputs;  // empty: from the config
   bool reproducible = false;
 };
 
@@ -50,6 +54,16 @@ void runBake(const BakeOptions& o) {
   if (o.order_tolerance) config.bake.order_tolerance = *o.order_tolerance;
   if (o.precision == "half") config.bake.precision = StoragePrecision::Half;
   if (o.precision == "float") config.bake.precision = StoragePrecision::Float;
+  if (!o.outputs.empty()) {
+    if (std::find(o.outputs.begin(), o.outputs.end(), "sky_radiance") == o.outputs.end()) {
+      refuseOptionValue("--outputs", fmt::format("{}", fmt::join(o.outputs, ",")),
+                        "must include sky_radiance: the other outputs are built on its tables");
+    }
+    config.scene.radiance_to_points =
+        std::find(o.outputs.begin(), o.outputs.end(), "radiance_to_points") != o.outputs.end();
+    config.scene.ground_irradiance =
+        std::find(o.outputs.begin(), o.outputs.end(), "ground_irradiance") != o.outputs.end();
+  }
   validateConfig(config, source + " (with command-line overrides)");
 
   const std::filesystem::path output(o.output_path);
@@ -121,6 +135,12 @@ Command addBakeCommand(CLI::App& app) {
   cmd->add_option("--precision", options->precision,
                   "Storage precision in the file (overrides bake.precision).")
       ->check(CLI::IsMember({"half", "float"}));
+  cmd->add_option("--outputs", options->outputs,
+                  "What the scene uses, comma separated: sky_radiance (always), radiance_to_points, "
+                  "ground_irradiance; the tables of the others are left out of the file (overrides "
+                  "scene.outputs).")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"sky_radiance", "radiance_to_points", "ground_irradiance"}));
   cmd->add_flag("--reproducible", options->reproducible,
                 "Leave times, thread count and memory out of the file header, so the same config "
                 "always gives a byte-identical file.");

@@ -27,9 +27,8 @@ void runInfo(const std::string& path) {
   fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
   fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu,
              s.scattering_mu_s, s.scattering_nu);
-  if (!bakeStoresSingleMie(c.atmosphere)) {
-    fmt::print("left out:      single_mie (no Mie scattering), {:.1f} MiB uncompressed\n",
-               table4DBytes(c) / (1024.0 * 1024.0));
+  for (const LeftOutPart& p : leftOutParts(c)) {
+    fmt::print("left out:      {} ({}), {:.1f} MiB uncompressed\n", p.part, p.reason, p.bytes / (1024.0 * 1024.0));
   }
 
   const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report_json, nullptr, false);

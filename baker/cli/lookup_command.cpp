@@ -6,6 +6,7 @@
 #include "baker/local_frame.h"
 #include "baker/validation/validation_queries.h"
 #include "data_formats/atomic_file.h"
+#include "data_formats/error.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {
@@ -44,6 +45,14 @@ void requireWritableLookupOutput(const LookupOptions& o) {
   if (!o.output_path.empty()) requireWritableOutput(o.output_path, {o.bake_path, o.queries_path});
 }
 
+// Refuses, naming the bake, a lookup of an output its scene.outputs left out.
+void requireOutput(const std::string& bake_path, bool baked, const char* output) {
+  if (!baked) {
+    throwBadInput(fmt::format("{}: the bake leaves out {} (its scene.outputs); bake with --outputs including {}",
+                              bake_path, output, output));
+  }
+}
+
 void runRadiance(const LookupOptions& o) {
   requireWritableLookupOutput(o);
   const CsvTable q = CsvTable::read(o.queries_path);
@@ -62,6 +71,7 @@ void runRadiance(const LookupOptions& o) {
     const glm::dvec3 sun = directionFromZenithAzimuthDeg(q.value(row, sun_zenith), 0.0);
     const glm::dvec3 view = directionFromZenithAzimuthDeg(q.value(row, view_zenith), q.value(row, view_azimuth));
     const double d = distance ? q.value(row, *distance) : 0.0;
+    if (d > 0.0) requireOutput(o.bake_path, sky.outputs().radiance_to_points, "radiance_to_points");
     const RadianceAndTransmittance v =
         d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
     std::string line = inputCells(q, row);
@@ -81,6 +91,7 @@ void runIrradiance(const LookupOptions& o) {
   q.requireRange(sun_zenith, 0.0, kMaxZenithAngle_deg);
 
   const Sky sky = Sky::load(o.bake_path);
+  requireOutput(o.bake_path, sky.outputs().ground_irradiance, "ground_irradiance");
   const int n = sky.channelCount();
   std::string out = headerWith(q, sky, {"sky_irradiance", "sun_irradiance"});
   for (size_t row = 0; row < q.rowCount(); ++row) {

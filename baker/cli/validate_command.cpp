@@ -62,7 +62,8 @@ void runValidate(const ValidateOptions& o) {
   const Sky sky = Sky::load(o.bake_path);
   requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
-  const QuerySet queries = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
+  std::string left_out;
+  const QuerySet queries = queriesAnsweredBy(sky, querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m), left_out);
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
 
   TerminalProgress progress;
@@ -77,6 +78,7 @@ void runValidate(const ValidateOptions& o) {
   fmt::print("relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
              "0 to 10, twilight: -10 to 0\n\n{}",
              kSmallestComparedValue, report.table());
+  if (!left_out.empty()) fmt::print("\n{}\n", left_out);
 
   nlohmann::ordered_json j = report.toJson();
   j["bake_file"] = o.bake_path;

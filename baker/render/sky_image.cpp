@@ -63,9 +63,12 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
 }
 
 // What a pixel sees along `dir`: what the viewer receives (sky and lit
-// ground), plus the sun disk seen through the air.
+// ground; the air alone where the bake left out ground irradiance), plus the
+// sun disk seen through the air.
 Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun) {
-  const RadianceAndTransmittance received = sky.receivedRadiance(camera, dir, sun);
+  const RadianceAndTransmittance received = sky.outputs().ground_irradiance
+                                                ? sky.receivedRadiance(camera, dir, sun)
+                                                : sky.skyRadiance(camera, dir, sun);
   Spectrum radiance = received.radiance;
   const AtmosphereRay ray =
       atmosphereRay(sky.atmosphere().bottom_radius_m, sky.atmosphere().top_radius_m, camera, dir, 0.0);

@@ -12,6 +12,7 @@
 
 #include "baker/reference/reference_solver.h"
 #include "baker/local_frame.h"
+#include "runtime/atmosphere_ray.h"
 #include "data_formats/error.h"
 #include "runtime/atmosphere_ray.h"
 
@@ -129,6 +130,37 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
     out.irradiance.push_back(sky.irradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m}, {0.0, 0.0, 1.0},
                                             directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)).sky);
   }
+  return out;
+}
+
+QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string& left_out) {
+  const AtmosphereParameters& a = sky.atmosphere();
+  const SceneOutputs& outputs = sky.outputs();
+  QuerySet out{queries.name, {}, {}};
+  size_t to_points = 0, to_ground = 0;
+  for (const RadianceQuery& q : queries.radiance) {
+    if (q.distance_m > 0.0 && !outputs.radiance_to_points) {
+      ++to_points;
+      continue;
+    }
+    const QueryGeometry g = geometryOf(a, q);
+    if (q.distance_m <= 0.0 && !outputs.ground_irradiance &&
+        atmosphereRay(a.bottom_radius_m, a.top_radius_m, g.camera, g.view, 0.0).ends_on_ground) {
+      ++to_ground;
+      continue;
+    }
+    out.radiance.push_back(q);
+  }
+  if (outputs.ground_irradiance) out.irradiance = queries.irradiance;
+  std::vector<std::string> parts;
+  if (to_points > 0) parts.push_back(fmt::format("{} radiance-to-point queries (no radiance_to_points)", to_points));
+  if (to_ground > 0) parts.push_back(fmt::format("{} ground-ray queries (no ground_irradiance)", to_ground));
+  if (!outputs.ground_irradiance && !queries.irradiance.empty()) {
+    parts.push_back(fmt::format("{} irradiance queries (no ground_irradiance)", queries.irradiance.size()));
+  }
+  left_out.clear();
+  for (size_t i = 0; i < parts.size(); ++i) left_out += (i > 0 ? ", " : "") + parts[i];
+  if (!left_out.empty()) left_out = "not validated, left out of the bake by its scene.outputs: " + left_out;
   return out;
 }
 

@@ -62,6 +62,12 @@ struct MethodValues {
 
 MethodValues evaluateBake(const Sky& sky, const QuerySet& queries);
 
+// The queries a bake answers: without radiance to points (scene.outputs) no
+// query with a distance; without ground irradiance no ray that ends on the
+// ground (its lit ground needs the irradiance) and no irradiance query.
+// `left_out` gets a sentence saying what was dropped, or stays empty.
+QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string& left_out);
+
 struct ErrorStats {
   int count = 0;    // values compared (per channel)
   int skipped = 0;  // reference below kSmallestComparedValue

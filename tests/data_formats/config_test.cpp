@@ -87,6 +87,39 @@ TEST(Config, AutomaticOrdersParseAndRoundTrip) {
   EXPECT_EQ(configToToml(again), text);
 }
 
+TEST(Config, SceneOutputsParseAndRoundTrip) {
+  const BakeConfig all = parseConfig(kMinimal, "minimal");
+  EXPECT_TRUE(all.scene.radiance_to_points);
+  EXPECT_TRUE(all.scene.ground_irradiance);
+  // The default writes no [scene], so existing canonical texts (and the
+  // reference cache keys hashed from them) stay as they were.
+  EXPECT_EQ(configToToml(all).find("[scene]"), std::string::npos);
+
+  const BakeConfig sky_only = parseConfig(kMinimal + "[scene]\noutputs = [\"sky_radiance\"]\n", "sky only");
+  EXPECT_FALSE(sky_only.scene.radiance_to_points);
+  EXPECT_FALSE(sky_only.scene.ground_irradiance);
+  const BakeConfig ground =
+      parseConfig(kMinimal + "[scene]\noutputs = [\"ground_irradiance\", \"sky_radiance\"]\n", "ground");
+  EXPECT_FALSE(ground.scene.radiance_to_points);
+  EXPECT_TRUE(ground.scene.ground_irradiance);
+  for (const BakeConfig& c : {sky_only, ground}) {
+    const std::string text = configToToml(c);
+    const BakeConfig again = parseConfig(text, "round trip");
+    EXPECT_EQ(again.scene.radiance_to_points, c.scene.radiance_to_points);
+    EXPECT_EQ(again.scene.ground_irradiance, c.scene.ground_irradiance);
+    EXPECT_EQ(configToToml(again), text);
+  }
+}
+
+TEST(Config, RejectsBadSceneOutputs) {
+  expectRejected(kMinimal + "[scene]\noutputs = \"sky_radiance\"\n", {"scene.outputs", "must be a list"});
+  expectRejected(kMinimal + "[scene]\noutputs = [\"sky_radiance\", \"clouds\"]\n",
+                 {"scene.outputs", "clouds", "must be a list of"});
+  expectRejected(kMinimal + "[scene]\noutputs = [\"ground_irradiance\"]\n",
+                 {"scene.outputs", "must include \"sky_radiance\""});
+  expectRejected(kMinimal + "[scene]\naltitude = 3\n", {"scene.altitude", "unknown key"});
+}
+
 TEST(Config, RejectsBadOrderSettings) {
   expectRejected(kMinimal + "[bake]\norders = \"many\"\n", {"bake.orders", "many", "\"auto\""});
   expectRejected(kMinimal + "[bake]\norders = \"auto\"\norder_tolerance = 0.0\n", {"bake.order_tolerance", "must be in"});

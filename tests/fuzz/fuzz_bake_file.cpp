@@ -25,11 +25,12 @@ void expectTableSizes(const skybake::BakeFile& bake) {
                            s.scattering_nu;
   const bool ok =
       t.transmittance.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
-      t.irradiance.texels.size() == static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r &&
+      t.irradiance.texels.size() ==
+          (bake.config.scene.ground_irradiance ? static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r : 0) &&
       t.single_rayleigh.texels.size() == texels_4d &&
       t.single_mie.texels.size() == (skybake::bakeStoresSingleMie(bake.config.atmosphere) ? texels_4d : 0) &&
       t.multiple_scattering.texels.size() == texels_4d &&
-      t.multiple_density.texels.size() == texels_4d;
+      t.multiple_density.texels.size() == (bake.config.scene.radiance_to_points ? texels_4d : 0);
   if (!ok) skybake::fuzz::finding("accepted bake's tables do not match its config", bake.config.name);
 }
 

@@ -1,5 +1,5 @@
-// A bake without Mie scattering leaves out the single Mie table (it would be
-// all zeros) and gives the same sky as one with negligible Mie scattering.
+// Parts a bake leaves out: the single Mie table without Mie scattering (it
+// would be all zeros), and the tables of outputs the scene does not use.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -15,6 +15,7 @@
 
 #include "baker/bake.h"
 #include "data_formats/bake_file_attributes.h"
+#include "data_formats/error.h"
 #include "runtime/sky.h"
 #include "test_configs.h"
 
@@ -79,6 +80,53 @@ TEST(NoMieBake, LeavesOutTheSingleMiePartAndMatchesANegligibleMieBake) {
       EXPECT_TRUE(std::isfinite(to_point[c]) && to_point[c] >= 0.0f) << i;
     }
   }
+}
+
+std::vector<std::string> partsOf(const fs::path& path) {
+  std::vector<std::string> parts;
+  Imf::MultiPartInputFile file(path.c_str());
+  for (int i = 0; i < file.parts(); ++i) parts.push_back(file.header(i).name());
+  return parts;
+}
+
+TEST(SceneOutputs, SkyRadianceOnlyLeavesOutTheDensityAndIrradianceAndSaysSoWhenAsked) {
+  SilentProgress silent;
+  BakeConfig config = test::smallEarth(2);
+  const Sky full(bakeAtmosphere(config, 0, silent).file);
+  config.scene.radiance_to_points = false;
+  config.scene.ground_irradiance = false;
+  const fs::path path = fs::temp_directory_path() / ("skybake_sky_only_test_" + std::to_string(::getpid()) + ".exr");
+  writeBakeFile(path, bakeAtmosphere(config, 0, silent).file);
+  const std::vector<std::string> parts = partsOf(path);
+  const Sky sky_only = Sky::load(path);
+  fs::remove(path);
+
+  EXPECT_EQ(parts.size(), 4u);
+  for (const std::string& name : parts) {
+    EXPECT_NE(name, bake_file::kPartMultipleDensity);
+    EXPECT_NE(name, bake_file::kPartIrradiance);
+  }
+  EXPECT_FALSE(sky_only.outputs().radiance_to_points);
+  EXPECT_FALSE(sky_only.outputs().ground_irradiance);
+
+  const glm::dvec3 camera(0.0, 0.0, full.atmosphere().bottom_radius_m + 1000.0);
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.5, 0.0, 0.8));
+  const glm::dvec3 up(0.0, 0.0, 1.0), down(0.0, 0.0, -1.0);
+  // The sky's tables are the same: the same sky, to the bit.
+  EXPECT_EQ(sky_only.skyRadiance(camera, up, sun).radiance, full.skyRadiance(camera, up, sun).radiance);
+  auto expectRefused = [](auto&& lookup, const std::string& output) {
+    try {
+      lookup();
+      ADD_FAILURE() << "no error for " << output;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+      EXPECT_NE(std::string(e.what()).find(output), std::string::npos) << e.what();
+    }
+  };
+  expectRefused([&] { sky_only.radianceToPoint(camera, camera + 1000.0 * up, sun); }, "radiance_to_points");
+  expectRefused([&] { sky_only.irradiance(camera, up, sun); }, "ground_irradiance");
+  // A ray that ends on the ground needs the irradiance for the lit ground.
+  expectRefused([&] { sky_only.receivedRadiance(camera, down, sun); }, "ground_irradiance");
 }
 
 }  // namespace
