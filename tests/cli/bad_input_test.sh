@@ -81,6 +81,8 @@ done
 for v in 0 nan -inf 1e-12; do
   refused "--order-tolerance = $v: must be a finite number in [1e-09, 0.5]" -- "${bake[@]}" --orders auto --order-tolerance "$v"
 done
+refused "--outputs = ground_irradiance: must include sky_radiance" -- "${bake[@]}" --outputs ground_irradiance
+refused "--outputs: clouds not in {sky_radiance,radiance_to_points,ground_irradiance}" -- "${bake[@]}" --outputs sky_radiance,clouds
 [ -e "$work/never.exr" ] && fail "a refused bake wrote its output"
 
 render=(render "$work/none.exr" -o "$work/never.png")
