@@ -188,12 +188,12 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     auto order_shape = std::make_unique<MultipleScatteringPhase>(a, order);
     const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple,
                                  previous_shape ? *previous_shape : stored_shape};
-    const ScatteringDensity density = stage.run("scattering_density", order, slices_4d, [&] {
+    const Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
       return computeScatteringDensityTable(ctx, optical_depth, previous, *order_shape, delta_irradiance);
     });
-    addReshaped(sampler, TexelLayout::Density, density.at_density_texels, *order_shape, stored_shape, Spectrum(1.0f),
+    addReshaped(sampler, TexelLayout::Density, density, *order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_density);
-    last_density = density.at_density_texels;
+    last_density = density;
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
       return computeIndirectIrradianceTable(ctx, previous);
     });
@@ -201,7 +201,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 
     delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
-      return computeMultipleScatteringTable(ctx, optical_depth, density.at_scattering_texels, *order_shape);
+      return computeMultipleScatteringTable(ctx, optical_depth, density, *order_shape);
     });
     addReshaped(sampler, TexelLayout::Scattering, delta_multiple, *order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_scattering);

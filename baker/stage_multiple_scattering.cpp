@@ -75,7 +75,9 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
             Spectrum sum(0.0f);
             for (const RayNode& n : nodes) {
               const double mu_s_t = clampCosine((c.r * c.mu_s + n.t * c.nu) / n.r);
-              const ScatteringCoord coord = sampler.scatteringCoord(n.r, n.mu, mu_s_t, c.nu, c.ray_intersects_ground);
+              // The density table's mu is linear (densityCoordMu); its other axes are the scattering tables'.
+              ScatteringCoord coord = sampler.scatteringCoord(n.r, 1.0, mu_s_t, c.nu, false);
+              coord.u_mu = densityCoordMu(n.mu, density.mu_size);
               sum += sample4D(density, coord, nu_lerp) * MultipleScatteringPhase::withPeak(n.peak_weight, peak) *
                      n.transmittance * static_cast<float>(n.weight);
             }

@@ -121,7 +121,7 @@ IncidentRadiance incidentRadiance(const StageContext& ctx, const DirectionGrid& 
 
 }  // namespace
 
-ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
+Texture4D computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
                                                 const OrderRadiance& previous, const MultipleScatteringPhase& shape,
                                                 const Texture2D& ground_irradiance) {
   const AtmosphereParameters& a = ctx.atmosphere;
@@ -133,7 +133,7 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
     const double r = rFromScatteringTexel(ctx.sampler.domain(), s, i_r);
     grids[i_r] = makeDirectionGrid(std::acos(tangentZenithCosine(r, a.bottom_radius_m)));
   }
-  ScatteringDensity out{Texture4D(s.r, s.mu, s.mu_s, s.nu), Texture4D(s.r, s.mu, s.mu_s, s.nu)};
+  Texture4D out(s.r, s.mu, s.mu_s, s.nu);
   const float g = static_cast<float>(a.mie_phase_g);
   const float cs_norm = static_cast<float>(3.0 / (8.0 * kPi) * (1.0 - a.mie_phase_g * a.mie_phase_g) /
                                            (2.0 + a.mie_phase_g * a.mie_phase_g));
@@ -183,13 +183,8 @@ ScatteringDensity computeScatteringDensityTable(const StageContext& ctx, const T
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
         const double density_mu = muFromDensityTexel(i_mu, s.mu);
         for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-          const ScatteringTexelConfig c =
-              scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
-          out.at_scattering_texels.at(i_r, i_mu, i_mu_s, i_nu) =
-              densityToward(c.mu, c.nu) / shape(peak_weight, c.nu);
           const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), density_mu, mu_s);
-          out.at_density_texels.at(i_r, i_mu, i_mu_s, i_nu) =
-              densityToward(density_mu, nu) / shape(peak_weight, nu);
+          out.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(density_mu, nu) / shape(peak_weight, nu);
         }
       }
       ctx.progress.advance(1);
