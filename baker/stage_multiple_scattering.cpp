@@ -22,6 +22,8 @@ struct RayNode {
   double mu;
   Spectrum transmittance;  // from the ray's start to the node
   SpectrumD peak_weight;   // of the multiple-scattering shape at the node's altitude
+  AxisLerp density_r;      // where the node falls on the density table's r and mu axes
+  AxisLerp density_mu;
 };
 
 void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, const MultipleScatteringPhase& shape,
@@ -40,10 +42,16 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
       [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
       [&](double t, double w) {
         const double r_t = radiusAt(t);
-        nodes.push_back({t, w, r_t, cosineAlongRay(c.r, c.mu, t, r_t),
+        const double mu_t = cosineAlongRay(c.r, c.mu, t, r_t);
+        // The density table's mu is linear (densityCoordMu); its other axes are the scattering tables'.
+        const AtmosphereDomain& d = sampler.domain();
+        const ScatteringSizes& s = sampler.scatteringSizes();
+        const double u_r = textureCoordFromUnitRange(d.distanceToHorizon(r_t) / d.horizonToTopDistance(), s.r);
+        nodes.push_back({t, w, r_t, mu_t,
                          glm::exp(-sampler.opticalDepthAlongRay(optical_depth, c.r, c.mu, t,
                                                                 c.ray_intersects_ground)),
-                         shape.peakWeightAt(r_t - a.bottom_radius_m)});
+                         shape.peakWeightAt(r_t - a.bottom_radius_m), axisLerpFromTextureCoord(u_r, s.r),
+                         axisLerpFromTextureCoord(densityCoordMu(mu_t, s.mu), s.mu)});
       });
 }
 
@@ -75,10 +83,10 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
             Spectrum sum(0.0f);
             for (const RayNode& n : nodes) {
               const double mu_s_t = clampCosine((c.r * c.mu_s + n.t * c.nu) / n.r);
-              // The density table's mu is linear (densityCoordMu); its other axes are the scattering tables'.
-              ScatteringCoord coord = sampler.scatteringCoord(n.r, 1.0, mu_s_t, c.nu, false);
-              coord.u_mu = densityCoordMu(n.mu, density.mu_size);
-              sum += sample4D(density, coord, nu_lerp) * MultipleScatteringPhase::withPeak(n.peak_weight, peak) *
+              const AxisLerp mu_s_lerp =
+                  axisLerpFromTextureCoord(scatteringCoordMuS(sampler.domain(), s.mu_s, mu_s_t), s.mu_s);
+              sum += sample4D(density, n.density_r, n.density_mu, mu_s_lerp, nu_lerp) *
+                     MultipleScatteringPhase::withPeak(n.peak_weight, peak) *
                      n.transmittance * static_cast<float>(n.weight);
             }
             table.at(i_r, i_mu, i_mu_s, i_nu) = sum / MultipleScatteringPhase::withPeak(texel_peak_weight, peak);

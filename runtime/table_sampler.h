@@ -95,11 +95,11 @@ inline Blend radianceBlend(double mu_s) { return mu_s < 0.0 ? Blend::GeometricWh
 // Quadrilinear lookup: trilinear in (mu_s, mu, r) within the two nearest nu
 // slices, then across nu; mu_s and nu blended as `blend` says (a template
 // argument, so the bake's linear lookups carry no branch).
+// The same from the four axes' interpolation weights, for callers that reuse
+// some of them across lookups.
 template <Blend blend = Blend::Linear>
-inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu) {
-  const AxisLerp r = axisLerpFromTextureCoord(c.u_r, t.r_size);
-  const AxisLerp mu = axisLerpFromTextureCoord(c.u_mu, t.mu_size);
-  const AxisLerp mu_s = axisLerpFromTextureCoord(c.u_mu_s, t.mu_s_size);
+inline Spectrum sample4D(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu, const AxisLerp& mu_s,
+                         const AxisLerp& nu) {
   auto slice = [&](int i_nu) {
     auto row = [&](int i_r, int i_mu) {
       return blendAcross<blend>(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
@@ -109,6 +109,12 @@ inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const Axi
     return r0 + (r1 - r0) * r.w1;
   };
   return blendAcross<blend>(slice(nu.i0), slice(nu.i1), nu.w1);
+}
+
+template <Blend blend = Blend::Linear>
+inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu) {
+  return sample4D<blend>(t, axisLerpFromTextureCoord(c.u_r, t.r_size), axisLerpFromTextureCoord(c.u_mu, t.mu_size),
+                         axisLerpFromTextureCoord(c.u_mu_s, t.mu_s_size), nu);
 }
 
 class TableSampler {
