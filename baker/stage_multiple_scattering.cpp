@@ -71,9 +71,17 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
         const ScatteringTexelConfig row = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0);
         collectRayNodes(ctx, optical_depth, shape, row, nodes);
         const SpectrumD texel_peak_weight = shape.peakWeightAt(row.r - ctx.atmosphere.bottom_radius_m);
-        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-          for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+        for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+          // Slices clamped to the same end of the nu range are the same
+          // texel: integrated once.
+          double last_nu = 2.0;  // no nu
+          for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
             const ScatteringTexelConfig c = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
+            if (c.nu == last_nu) {
+              table.at(i_r, i_mu, i_mu_s, i_nu) = table.at(i_r, i_mu, i_mu_s, i_nu - 1);
+              continue;
+            }
+            last_nu = c.nu;
             // nu is constant along a straight ray: its interpolation is too.
             const AxisLerp nu_lerp = axisLerpNu((c.nu + 1.0) * 0.5, s.nu);
             // The density is stored divided by the shape at its texels: the

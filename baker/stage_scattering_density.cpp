@@ -182,9 +182,18 @@ Texture4D computeScatteringDensityTable(const StageContext& ctx, const Texture2D
 
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
         const double density_mu = muFromDensityTexel(i_mu, s.mu);
+        // Slices past the end of the nu range this (mu, mu_s) allows are
+        // clamped to it and repeat the last value (every slice does at
+        // mu = -1 and 1): computed once.
+        double last_nu = 2.0;  // no nu
+        Spectrum last_value(0.0f);
         for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
           const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), density_mu, mu_s);
-          out.at(i_r, i_mu, i_mu_s, i_nu) = densityToward(density_mu, nu) / shape(peak_weight, nu);
+          if (nu != last_nu) {
+            last_value = densityToward(density_mu, nu) / shape(peak_weight, nu);
+            last_nu = nu;
+          }
+          out.at(i_r, i_mu, i_mu_s, i_nu) = last_value;
         }
       }
       ctx.progress.advance(1);

@@ -119,10 +119,19 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
         const double length = rayLength(ctx.atmosphere, row.r, row.mu, row.ray_intersects_ground);
         whole_ray.clear();
         collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, 0.0, length, whole_ray);
-        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-          for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+        for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+          // Slices clamped to the same end of the nu range are the same
+          // texel: integrated once.
+          double last_nu = 2.0;  // no nu
+          for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
             const ScatteringTexelConfig c =
                 scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
+            if (c.nu == last_nu) {
+              rayleigh.at(i_r, i_mu, i_mu_s, i_nu) = rayleigh.at(i_r, i_mu, i_mu_s, i_nu - 1);
+              mie.at(i_r, i_mu, i_mu_s, i_nu) = mie.at(i_r, i_mu, i_mu_s, i_nu - 1);
+              continue;
+            }
+            last_nu = c.nu;
             const ShadowCrossings crossings = shadowCrossings(ctx.atmosphere, c.r, c.mu, c.mu_s, c.nu, length);
             const std::vector<ViewNode>* nodes = &whole_ray;
             if (crossings.count > 0) {
