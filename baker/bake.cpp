@@ -214,10 +214,6 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     }
   }
 
-  // The parts the file leaves out (no Mie scattering, outputs the scene does
-  // not use): computed where later orders needed them, not kept.
-  clearLeftOutTables(config, tables);
-
   if (config.bake.tail_estimate) {
     report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density,
                                   previous_shape ? *previous_shape : stored_shape, stored_shape, delta_irradiance,
@@ -225,6 +221,10 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";
   }
+
+  // The parts the file leaves out (no Mie scattering, outputs the scene does
+  // not use): computed where later orders needed them, not kept.
+  clearLeftOutTables(config, tables);
 
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.cpu_seconds = processCpuSeconds() - cpu_start;

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "data_formats/error.h"
+
 namespace skybake {
 namespace {
 
@@ -51,6 +53,9 @@ Spectrum meanShapedRadiance(const TableSampler& sampler, const Texture4D& table,
 void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
                  const MultipleScatteringPhase& from, const MultipleScatteringPhase& to, const Spectrum& scale,
                  Texture4D& sum) {
+  if (sum.texels.size() != delta.texels.size()) {
+    throw Error(ErrorKind::Internal, "addReshaped: tables of different sizes");
+  }
   if (from.order() == to.order()) {
     for (size_t i = 0; i < sum.texels.size(); ++i) sum.texels[i] += delta.texels[i] * scale;
     return;
