@@ -5,7 +5,7 @@
 
 #include <chrono>
 #include <limits>
-#include <memory>
+#include <optional>
 
 #include "baker/order_shapes.h"
 #include "baker/stages.h"
@@ -173,7 +173,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   // order by its own; summed into the file, by the stored one, which a lookup
   // multiplies back.
   const MultipleScatteringPhase stored_shape(a);
-  std::unique_ptr<MultipleScatteringPhase> previous_shape;  // the last computed order's
+  std::optional<MultipleScatteringPhase> previous_shape;  // the last computed order's
   tables.multiple_scattering = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
   tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
@@ -185,13 +185,13 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   report.orders_decision.tolerance = settings.auto_orders ? settings.order_tolerance : 0.0;
   report.orders_decision.cap = settings.auto_orders ? settings.max_orders : 0;
   for (int order = 2; order <= last_order; ++order) {
-    auto order_shape = std::make_unique<MultipleScatteringPhase>(a, order);
+    const MultipleScatteringPhase order_shape(a, order);
     const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple,
                                  previous_shape ? *previous_shape : stored_shape};
     const Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
-      return computeScatteringDensityTable(ctx, optical_depth, previous, *order_shape, delta_irradiance);
+      return computeScatteringDensityTable(ctx, optical_depth, previous, order_shape, delta_irradiance);
     });
-    addReshaped(sampler, TexelLayout::Density, density, *order_shape, stored_shape, Spectrum(1.0f),
+    addReshaped(sampler, TexelLayout::Density, density, order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_density);
     last_density = density;
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
@@ -201,12 +201,12 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 
     delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
-      return computeMultipleScatteringTable(ctx, optical_depth, density, *order_shape);
+      return computeMultipleScatteringTable(ctx, optical_depth, density, order_shape);
     });
-    addReshaped(sampler, TexelLayout::Scattering, delta_multiple, *order_shape, stored_shape, Spectrum(1.0f),
+    addReshaped(sampler, TexelLayout::Scattering, delta_multiple, order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_scattering);
-    report.orders.push_back({order, meanShapedRadiance(sampler, delta_multiple, *order_shape), Spectrum(0.0f)});
-    previous_shape = std::move(order_shape);
+    report.orders.push_back({order, meanShapedRadiance(sampler, delta_multiple, order_shape), Spectrum(0.0f)});
+    previous_shape = order_shape;
     report.orders_decision.last_order_share = lastOrderShare(report.orders, a.channelCount());
     if (settings.auto_orders && report.orders_decision.last_order_share < settings.order_tolerance) {
       report.orders_decision.converged = true;

@@ -19,7 +19,6 @@ struct RayNode {
   double t;
   double weight;
   double r;
-  double mu;
   Spectrum transmittance;  // from the ray's start to the node
   SpectrumD peak_weight;   // of the multiple-scattering shape at the node's altitude
   AxisLerp density_r;      // where the node falls on the density table's r and mu axes
@@ -31,8 +30,8 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
   const AtmosphereParameters& a = ctx.atmosphere;
   const AtmosphereMedia media(a);
   const TableSampler& sampler = ctx.sampler;
-  const double length = c.ray_intersects_ground ? distanceToInnerSphere(c.r, c.mu, a.bottom_radius_m)
-                                                : distanceToOuterSphere(c.r, c.mu, a.top_radius_m);
+  const double length =
+      distanceToAtmosphereEnd(c.r, c.mu, a.bottom_radius_m, a.top_radius_m, c.ray_intersects_ground);
   auto radiusAt = [&](double t) {
     return std::clamp(radiusAlongRay(c.r, c.mu, t), a.bottom_radius_m, a.top_radius_m);
   };
@@ -47,7 +46,7 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
         const AtmosphereDomain& d = sampler.domain();
         const ScatteringSizes& s = sampler.scatteringSizes();
         const double u_r = textureCoordFromUnitRange(d.distanceToHorizon(r_t) / d.horizonToTopDistance(), s.r);
-        nodes.push_back({t, w, r_t, mu_t,
+        nodes.push_back({t, w, r_t,
                          glm::exp(-sampler.opticalDepthAlongRay(optical_depth, c.r, c.mu, t,
                                                                 c.ray_intersects_ground)),
                          shape.peakWeightAt(r_t - a.bottom_radius_m), axisLerpFromTextureCoord(u_r, s.r),

@@ -65,11 +65,6 @@ SingleScattering sumOverNodes(const StageContext& ctx, const Texture2D& optical_
   return {rayleigh * a.sun_irradiance * a.rayleigh_scattering, mie * a.sun_irradiance * a.mie_scattering};
 }
 
-double rayLength(const AtmosphereParameters& a, double r, double mu, bool ray_intersects_ground) {
-  return ray_intersects_ground ? distanceToInnerSphere(r, mu, a.bottom_radius_m)
-                               : distanceToOuterSphere(r, mu, a.top_radius_m);
-}
-
 // Where the planet's shadow cuts the ray (r, mu) with the sun at (mu_s, nu).
 ShadowCrossings shadowCrossings(const AtmosphereParameters& a, double r, double mu, double mu_s, double nu,
                                 double length) {
@@ -96,7 +91,7 @@ void collectPiecewiseNodes(const StageContext& ctx, const Texture2D& optical_dep
 SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth,
                                          double r, double mu, double mu_s, double nu,
                                          bool ray_intersects_ground) {
-  const double length = rayLength(ctx.atmosphere, r, mu, ray_intersects_ground);
+  const double length = distanceToAtmosphereEnd(r, mu, ctx.atmosphere.bottom_radius_m, ctx.atmosphere.top_radius_m, ray_intersects_ground);
   std::vector<ViewNode> nodes;
   collectPiecewiseNodes(ctx, optical_depth, r, mu, ray_intersects_ground,
                         shadowCrossings(ctx.atmosphere, r, mu, mu_s, nu, length), length, nodes);
@@ -116,7 +111,8 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
         // The row's ray and its nodes, for every sun the shadow leaves alone.
         const ScatteringTexelConfig row = scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, 0, 0);
-        const double length = rayLength(ctx.atmosphere, row.r, row.mu, row.ray_intersects_ground);
+        const double length = distanceToAtmosphereEnd(row.r, row.mu, ctx.atmosphere.bottom_radius_m, ctx.atmosphere.top_radius_m,
+                                                    row.ray_intersects_ground);
         whole_ray.clear();
         collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, 0.0, length, whole_ray);
         for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {

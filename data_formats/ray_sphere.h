@@ -28,6 +28,13 @@ inline double distanceToInnerSphere(double r, double mu, double radius) {
   return std::max(-r * mu - safeSqrt(discriminant), 0.0);
 }
 
+// Length of the ray (r, mu) inside the atmosphere: to the ground when it
+// hits it, else to the top.
+inline double distanceToAtmosphereEnd(double r, double mu, double bottom_radius, double top_radius,
+                                      bool ray_intersects_ground) {
+  return ray_intersects_ground ? distanceToInnerSphere(r, mu, bottom_radius) : distanceToOuterSphere(r, mu, top_radius);
+}
+
 // True when the ray (r, mu) from r >= radius hits the sphere of radius `radius`.
 inline bool rayIntersectsSphere(double r, double mu, double radius) {
   return mu < 0.0 && r * r * (mu * mu - 1.0) + radius * radius >= 0.0;

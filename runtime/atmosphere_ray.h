@@ -47,7 +47,7 @@ inline AtmosphereRay atmosphereRay(double bottom, double top, glm::dvec3 start, 
   ray.r = r;
   ray.mu = clampCosine(rmu / r);
   ray.ends_on_ground = rayIntersectsSphere(r, ray.mu, bottom);
-  ray.length = ray.ends_on_ground ? distanceToInnerSphere(r, ray.mu, bottom) : distanceToOuterSphere(r, ray.mu, top);
+  ray.length = distanceToAtmosphereEnd(r, ray.mu, bottom, top, ray.ends_on_ground);
   if (max_length > 0.0) {
     const double limit = max_length - ray.moved;
     if (limit <= 0.0) {

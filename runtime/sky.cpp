@@ -80,27 +80,24 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
       ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, start.length, true))
              : glm::exp(-sampler_.opticalDepthToTop(t.transmittance, r, mu));
 
-  Spectrum rayleigh, mie, multiple;
+  // Light shafts: only the part of the ray beyond the shadow scatters, seen
+  // through the shadowed part. Without a shadow that part starts here.
   const double shadow = std::max(shadow_length_m - start.moved, 0.0);
-  if (shadow == 0.0) {
-    rayleigh = sampler_.scattering(t.single_rayleigh, r, mu, mu_s, nu, ground);
-    mie = hasSingleMie() ? sampler_.scattering(t.single_mie, r, mu, mu_s, nu, ground) : Spectrum(0.0f);
-    multiple = sampler_.scattering(t.multiple_scattering, r, mu, mu_s, nu, ground) *
-               multiple_shape_(r - domain.bottom_radius_m, nu);
-  } else {
-    // Light shafts: only the part of the ray beyond the shadow scatters, seen
-    // through the shadowed part.
-    const double r_p = std::clamp(radiusAlongRay(r, mu, shadow), domain.bottom_radius_m, domain.top_radius_m);
-    const double mu_p = cosineAlongRay(r, mu, shadow, r_p);
-    const double mu_s_p = clampCosine((r * mu_s + shadow * nu) / r_p);
-    const Spectrum shadow_transmittance =
-        glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, shadow, ground));
-    rayleigh = sampler_.scattering(t.single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
-    mie = hasSingleMie() ? sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance
-                         : Spectrum(0.0f);
-    multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
-               multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
+  double r_p = r, mu_p = mu, mu_s_p = mu_s;
+  Spectrum shadow_transmittance(1.0f);
+  if (shadow > 0.0) {
+    r_p = std::clamp(radiusAlongRay(r, mu, shadow), domain.bottom_radius_m, domain.top_radius_m);
+    mu_p = cosineAlongRay(r, mu, shadow, r_p);
+    mu_s_p = clampCosine((r * mu_s + shadow * nu) / r_p);
+    shadow_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, shadow, ground));
   }
+  const Spectrum rayleigh =
+      sampler_.scattering(t.single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+  const Spectrum mie = hasSingleMie()
+                           ? sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance
+                           : Spectrum(0.0f);
+  const Spectrum multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
+                            multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
   const Spectrum radiance = rayleigh * static_cast<float>(rayleighPhase(nu)) +
                             mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, nu)) + multiple;
   return {radiance, transmittance};

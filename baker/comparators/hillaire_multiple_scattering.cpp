@@ -51,8 +51,7 @@ HillaireMultipleScattering::HillaireMultipleScattering(const AtmosphereParameter
           const glm::dvec3 dir(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
           const double r = glm::length(x);
           const bool ground = rayIntersectsSphere(r, cos_t, a_.bottom_radius_m);
-          const double length = ground ? distanceToInnerSphere(r, cos_t, a_.bottom_radius_m)
-                                       : distanceToOuterSphere(r, cos_t, a_.top_radius_m);
+          const double length = distanceToAtmosphereEnd(r, cos_t, a_.bottom_radius_m, a_.top_radius_m, ground);
           const double dt = length / kTableRaySteps;
           SpectrumD depth(0.0);
           for (int k = 0; k < kTableRaySteps; ++k) {
