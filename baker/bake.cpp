@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "baker/order_shapes.h"
+#include "baker/scene_tables.h"
 #include "baker/stages.h"
 
 #include <fmt/format.h>
@@ -147,7 +148,9 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   const double cpu_start = processCpuSeconds();
 
   const AtmosphereParameters& a = config.atmosphere;
-  const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
+  // The orders iterate over the whole domain; a scene that narrows it gets
+  // its stored tables afterwards (narrowTablesToScene).
+  const TableSampler sampler(AtmosphereDomain::fromParameters(a), iterationTextureSizes(config));
   const StageContext ctx{a, sampler, progress};
   const ScatteringSizes& s = sampler.scatteringSizes();
   const size_t rows_4d = static_cast<size_t>(s.r) * s.mu;
@@ -220,6 +223,16 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
                                   tables);
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";
+  }
+
+  // A scene that narrows the domain stores its 4D tables on its own texels.
+  const AtmosphereDomain scene_domain = AtmosphereDomain::fromConfig(config);
+  if (scene_domain.narrowed()) {
+    const TableSampler scene_sampler(scene_domain, config.sizes);
+    const StageContext scene_ctx{a, scene_sampler, progress};
+    stage.run("scene_tables", 0, 2 * rows_4d, [&] {
+      narrowTablesToScene(scene_ctx, sampler, optical_depth, stored_shape, tables);
+    });
   }
 
   // The parts the file leaves out (no Mie scattering, outputs the scene does

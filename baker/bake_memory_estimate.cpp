@@ -1,9 +1,11 @@
 #include "baker/bake_memory_estimate.h"
 
+#include <algorithm>
 #include <initializer_list>
 #include <limits>
 
 #include "data_formats/spectrum.h"
+#include "data_formats/texture_mapping.h"
 
 namespace skybake {
 namespace {
@@ -49,16 +51,25 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   const uint64_t transmittance = product({axis(s.transmittance_mu), axis(s.transmittance_r), texel_bytes});
   const uint64_t irradiance = product({axis(s.irradiance_mu_s), axis(s.irradiance_r), texel_bytes});
   BakeMemoryEstimate e;
-  e.table_4d_bytes = product(
-      {axis(s.scattering_r), axis(s.scattering_mu), axis(s.scattering_mu_s), axis(s.scattering_nu), texel_bytes});
-  e.tables_4d_at_peak = tables4DAtPeak(config.bake.auto_orders ? config.bake.max_orders : config.bake.orders);
+  auto table4DBytes = [&](const TextureSizes& t) {
+    return product(
+        {axis(t.scattering_r), axis(t.scattering_mu), axis(t.scattering_mu_s), axis(t.scattering_nu), texel_bytes});
+  };
+  // The orders iterate on the whole domain's tables; a narrowing scene then
+  // builds its 4 stored tables beside them.
+  const uint64_t iteration_bytes = table4DBytes(iterationTextureSizes(config));
+  const uint64_t stored_bytes = table4DBytes(s);
+  const bool narrowed = AtmosphereDomain::fromConfig(config).narrowed();
+  e.table_4d_bytes = std::max(iteration_bytes, stored_bytes);
+  e.tables_4d_at_peak = tables4DAtPeak(config.bake.auto_orders ? config.bake.max_orders : config.bake.orders) +
+                        (narrowed ? 4 : 0);
   // 2D: the transmittance table, the summed sky irradiance, and the last
   // order's irradiance beside the one being computed.
   e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), transmittance,
                       product({3, irradiance})});
   // The file's tables: single Rayleigh, single Mie, multiple scattering,
   // multiple-scattering density, transmittance and irradiance.
-  e.kept_bytes = sum({product({4, e.table_4d_bytes}), transmittance, irradiance});
+  e.kept_bytes = sum({product({4, stored_bytes}), transmittance, irradiance});
   return e;
 }
 

@@ -138,11 +138,13 @@ size_t CsvTable::require(const std::string& name) const {
 void CsvTable::requireRange(size_t column, double lo, double hi) const {
   for (size_t row = 0; row < rows_.size(); ++row) {
     const double v = rows_[row][column];
-    if (v < lo || v > hi) {
-      throwBadInput(fmt::format("{}:{}:{} ({}): {} is out of range [{:g}, {:g}]", path_, line_numbers_[row],
-                                column + 1, columns_[column], texts_[row][column], lo, hi));
-    }
+    if (v < lo || v > hi) failCell(row, column, fmt::format("is out of range [{:g}, {:g}]", lo, hi));
   }
+}
+
+void CsvTable::failCell(size_t row, size_t column, const std::string& reason) const {
+  throwBadInput(fmt::format("{}:{}:{} ({}): {} {}", path_, line_numbers_[row], column + 1, columns_[column],
+                            texts_[row][column], reason));
 }
 
 void writeCsvOutput(const std::string& path, const std::string& text) {

@@ -29,6 +29,8 @@ class CsvTable {
   const std::string& text(size_t row, size_t column) const { return texts_[row][column]; }
   // Throws Error(BadInput) for a cell outside [lo, hi], with its position.
   void requireRange(size_t column, double lo, double hi) const;
+  // Throws Error(BadInput) "<path>:<line>:<column> (<name>): <text> <reason>".
+  [[noreturn]] void failCell(size_t row, size_t column, const std::string& reason) const;
 
  private:
   void checkHeader(const std::vector<std::string>& names, int line_number) const;

@@ -25,8 +25,8 @@ struct RayNode {
   AxisLerp density_mu;
 };
 
-void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, const MultipleScatteringPhase& shape,
-                     const ScatteringTexelConfig& c, std::vector<RayNode>& nodes) {
+void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, const TableSampler& density_sampler,
+                     const MultipleScatteringPhase& shape, const ScatteringTexelConfig& c, std::vector<RayNode>& nodes) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const AtmosphereMedia media(a);
   const TableSampler& sampler = ctx.sampler;
@@ -43,9 +43,9 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
         const double r_t = radiusAt(t);
         const double mu_t = cosineAlongRay(c.r, c.mu, t, r_t);
         // The density table's mu is linear (densityCoordMu); its other axes are the scattering tables'.
-        const AtmosphereDomain& d = sampler.domain();
-        const ScatteringSizes& s = sampler.scatteringSizes();
-        const double u_r = textureCoordFromUnitRange(d.distanceToHorizon(r_t) / d.horizonToTopDistance(), s.r);
+        const AtmosphereDomain& d = density_sampler.domain();
+        const ScatteringSizes& s = density_sampler.scatteringSizes();
+        const double u_r = scatteringCoordR(d, s.r, d.distanceToHorizon(r_t));
         nodes.push_back({t, w, r_t,
                          glm::exp(-sampler.opticalDepthAlongRay(optical_depth, c.r, c.mu, t,
                                                                 c.ray_intersects_ground)),
@@ -84,8 +84,15 @@ Spectrum samplePlane(const std::vector<Spectrum>& plane, int nu_size, const Axis
 
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
                                          const Texture4D& density, const MultipleScatteringPhase& shape) {
+  return computeMultipleScatteringTable(ctx, optical_depth, ctx.sampler, density, shape);
+}
+
+Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
+                                         const TableSampler& density_sampler, const Texture4D& density,
+                                         const MultipleScatteringPhase& shape) {
   const TableSampler& sampler = ctx.sampler;
   const ScatteringSizes& s = sampler.scatteringSizes();
+  const ScatteringSizes& density_sizes = density_sampler.scatteringSizes();
   Texture4D table(s.r, s.mu, s.mu_s, s.nu);
 #pragma omp parallel
   {
@@ -95,7 +102,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
         const ScatteringTexelConfig row = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0);
-        collectRayNodes(ctx, optical_depth, shape, row, nodes);
+        collectRayNodes(ctx, optical_depth, density_sampler, shape, row, nodes);
         if (planes.size() < nodes.size()) planes.resize(nodes.size());
         for (size_t k = 0; k < nodes.size(); ++k) interpolateAtNode(density, nodes[k], planes[k]);
         const SpectrumD texel_peak_weight = shape.peakWeightAt(row.r - ctx.atmosphere.bottom_radius_m);
@@ -111,7 +118,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
             }
             last_nu = c.nu;
             // nu is constant along a straight ray: its interpolation is too.
-            const AxisLerp nu_lerp = axisLerpNu((c.nu + 1.0) * 0.5, s.nu);
+            const AxisLerp nu_lerp = axisLerpNu((c.nu + 1.0) * 0.5, density_sizes.nu);
             // The density is stored divided by the shape at its texels: the
             // shape at each node gives it back, the shape at this texel
             // divides the result for storage.
@@ -120,9 +127,9 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
             for (size_t k = 0; k < nodes.size(); ++k) {
               const RayNode& n = nodes[k];
               const double mu_s_t = clampCosine((c.r * c.mu_s + n.t * c.nu) / n.r);
-              const AxisLerp mu_s_lerp =
-                  axisLerpFromTextureCoord(scatteringCoordMuS(sampler.domain(), s.mu_s, mu_s_t), s.mu_s);
-              sum += samplePlane(planes[k], s.nu, mu_s_lerp, nu_lerp) *
+              const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(
+                  scatteringCoordMuS(density_sampler.domain(), density_sizes.mu_s, mu_s_t), density_sizes.mu_s);
+              sum += samplePlane(planes[k], density_sizes.nu, mu_s_lerp, nu_lerp) *
                      MultipleScatteringPhase::withPeak(n.peak_weight, peak) *
                      n.transmittance * static_cast<float>(n.weight);
             }

@@ -3,7 +3,9 @@
 // (config_parse.cpp) or the built-in Earth, checked by validateConfig.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +65,11 @@ struct TextureSizes {
   int scattering_mu = 128;  // even: half for rays that hit the ground
   int scattering_mu_s = 32;
   int scattering_nu = 8;
+  // [resolution] iteration, r, mu, mu_s and nu: the 4D sizes the orders
+  // iterate on over the whole domain when a [scene] narrows the stored
+  // tables (iterationTextureSizes in texture_mapping.h). Absent: the default
+  // scattering sizes above. Refused without a narrowing scene.
+  std::optional<std::array<int, 4>> iteration;
 };
 
 enum class StoragePrecision { Float, Half };
@@ -94,12 +101,26 @@ struct SceneOutputs {
   bool all() const { return radiance_to_points && ground_irradiance; }
 };
 
+// The cameras and suns the scene has ([scene] in CONFIG.md): the 4D tables
+// cover only these ranges, so their texels all go where the scene looks.
+// Unset: the whole atmosphere, every sun up to sun.max_zenith_deg.
+struct SceneRanges {
+  // Altitudes above the ground of the cameras and of the points they look
+  // at (radiance to a point), metres: [low, high].
+  std::optional<std::array<double, 2>> altitude_m;
+  // Sun zenith angles, degrees: [low, high], high <= sun.max_zenith_deg.
+  std::optional<std::array<double, 2>> sun_zenith_deg;
+
+  bool narrows() const { return altitude_m.has_value() || sun_zenith_deg.has_value(); }
+};
+
 struct BakeConfig {
   std::string name = "custom";
   AtmosphereParameters atmosphere;
   TextureSizes sizes;
   BakeSettings bake;
   SceneOutputs scene;
+  SceneRanges scene_ranges;
 };
 
 }  // namespace skybake

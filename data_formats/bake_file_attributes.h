@@ -20,6 +20,8 @@ inline constexpr const char* kAttrWavelengths = "skybake:wavelengths_nm";
 inline constexpr const char* kAttrBottomRadius = "skybake:bottom_radius_m";
 inline constexpr const char* kAttrTopRadius = "skybake:top_radius_m";
 inline constexpr const char* kAttrMuSMin = "skybake:mu_s_min";
+inline constexpr const char* kAttrScatteringRRange = "skybake:scattering_r_range_m";
+inline constexpr const char* kAttrScatteringMuSRange = "skybake:scattering_mu_s_range";
 inline constexpr const char* kAttrTableSize = "skybake:table_size";
 
 }  // namespace skybake::bake_file

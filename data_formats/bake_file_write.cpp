@@ -12,6 +12,7 @@
 #include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfVecAttribute.h>
 #include <Imath/half.h>
 #include <fmt/format.h>
 
@@ -62,7 +63,7 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
   }
   std::string wavelengths;
   for (double w : a.wavelengths_nm) wavelengths += fmt::format("{}{}", wavelengths.empty() ? "" : " ", w);
-  const AtmosphereDomain domain = AtmosphereDomain::fromParameters(a);
+  const AtmosphereDomain domain = AtmosphereDomain::fromConfig(bake.config);
   header.insert(kAttrFormatVersion, Imf::IntAttribute(kBakeFormatVersion));
   header.insert(kAttrContent, Imf::StringAttribute(part.content));
   header.insert(kAttrUnits, Imf::StringAttribute(part.units));
@@ -71,6 +72,11 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
   header.insert(kAttrBottomRadius, Imf::DoubleAttribute(domain.bottom_radius_m));
   header.insert(kAttrTopRadius, Imf::DoubleAttribute(domain.top_radius_m));
   header.insert(kAttrMuSMin, Imf::DoubleAttribute(domain.mu_s_min));
+  const ScatteringSizes s = ScatteringSizes::fromTextureSizes(bake.config.sizes);
+  header.insert(kAttrScatteringRRange,
+                Imf::V2dAttribute({rFromScatteringTexel(domain, s, 0), rFromScatteringTexel(domain, s, s.r - 1)}));
+  header.insert(kAttrScatteringMuSRange, Imf::V2dAttribute({muSFromScatteringTexel(domain, s, 0),
+                                                            muSFromScatteringTexel(domain, s, s.mu_s - 1)}));
   header.insert(kAttrOrders, Imf::IntAttribute(bake.orders_computed));
   header.insert(kAttrConfig, Imf::StringAttribute(configToToml(bake.config)));
   header.insert(kAttrBakeReport, Imf::StringAttribute(bake.report_json));

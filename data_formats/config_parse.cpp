@@ -218,7 +218,7 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
 
   if (const toml::table* t = in.table(root, "", "resolution", false)) {
-    in.rejectUnknownKeys(*t, "resolution.", {"transmittance", "irradiance", "scattering"});
+    in.rejectUnknownKeys(*t, "resolution.", {"transmittance", "irradiance", "scattering", "iteration"});
     TextureSizes& s = config.sizes;
     auto pair = [&](std::string_view key, int& first, int& second) {
       const toml::node* node = t->get(key);
@@ -244,6 +244,19 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
       size("mu", s.scattering_mu);
       size("mu_s", s.scattering_mu_s);
       size("nu", s.scattering_nu);
+    }
+    if (const toml::table* it = in.table(*t, "resolution.", "iteration", false)) {
+      in.rejectUnknownKeys(*it, "resolution.iteration.", {"r", "mu", "mu_s", "nu"});
+      const TextureSizes defaults;
+      std::array<int, 4> sizes{defaults.scattering_r, defaults.scattering_mu, defaults.scattering_mu_s,
+                               defaults.scattering_nu};
+      const char* keys[4] = {"r", "mu", "mu_s", "nu"};
+      for (int i = 0; i < 4; ++i) {
+        if (const toml::node* node = it->get(keys[i])) {
+          sizes[i] = in.integer(*node, "resolution.iteration." + std::string(keys[i]));
+        }
+      }
+      s.iteration = sizes;
     }
   }
 
@@ -285,7 +298,17 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
 
   if (const toml::table* t = in.table(root, "", "scene", false)) {
-    in.rejectUnknownKeys(*t, "scene.", {"outputs"});
+    in.rejectUnknownKeys(*t, "scene.", {"outputs", "altitude_range_m", "sun_zenith_range_deg"});
+    auto range = [&](std::string_view key, std::optional<std::array<double, 2>>& out) {
+      const toml::node* node = t->get(key);
+      if (node == nullptr) return;
+      const std::string name = "scene." + std::string(key);
+      const std::vector<double> values = in.numbers(*node, name);
+      if (values.size() != 2) in.fail(node, name, ConfigReader::describe(*node), "must be [low, high]");
+      out = std::array<double, 2>{values[0], values[1]};
+    };
+    range("altitude_range_m", config.scene_ranges.altitude_m);
+    range("sun_zenith_range_deg", config.scene_ranges.sun_zenith_deg);
     if (const toml::node* outputs = t->get("outputs")) {
       const char* kExpected = "must be a list of \"sky_radiance\", \"radiance_to_points\", \"ground_irradiance\"";
       const toml::array* list = outputs->as_array();

@@ -151,6 +151,27 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
     check.fail("resolution.scattering", fmt::format("{} texels", texels),
                fmt::format("more than {} texels per table", kMaxScatteringTexels));
   }
+  if (s.iteration) {
+    const std::array<int, 4>& it = *s.iteration;
+    if (!config.scene_ranges.narrows()) {
+      check.fail("resolution.iteration", fmt::format("{{ r = {}, mu = {}, mu_s = {}, nu = {} }}", it[0], it[1], it[2], it[3]),
+                 "only with scene.altitude_range_m or scene.sun_zenith_range_deg: without them the orders "
+                 "iterate on the stored tables (resolution.scattering)");
+    }
+    size("resolution.iteration.r", it[0], 2, kMax4DAxis);
+    size("resolution.iteration.mu", it[1], 4, kMax4DAxis);
+    size("resolution.iteration.mu_s", it[2], 2, kMax4DAxis);
+    size("resolution.iteration.nu", it[3], 2, kMax4DAxis);
+    if (it[1] % 2 != 0) {
+      check.fail("resolution.iteration.mu", fmt::format("{}", it[1]),
+                 "must be even: half the rows hold rays that hit the ground, half those that do not");
+    }
+    const long long iteration_texels = 1LL * it[0] * it[1] * it[2] * it[3];
+    if (iteration_texels > kMaxScatteringTexels) {
+      check.fail("resolution.iteration", fmt::format("{} texels", iteration_texels),
+                 fmt::format("more than {} texels per table", kMaxScatteringTexels));
+    }
+  }
 
   if (config.bake.orders < 1 || config.bake.orders > kMaxOrders) {
     check.fail("bake.orders", fmt::format("{}", config.bake.orders),
@@ -163,6 +184,33 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
   if (config.bake.max_orders < 2 || config.bake.max_orders > kMaxOrders) {
     check.fail("bake.max_orders", fmt::format("{}", config.bake.max_orders),
                fmt::format("must be in [2, {}]", kMaxOrders));
+  }
+
+  const SceneRanges& scene = config.scene_ranges;
+  auto ordered = [&](const std::string& key, const std::array<double, 2>& r) {
+    check.finite(key + "[0]", r[0]);
+    check.finite(key + "[1]", r[1]);
+    if (!(r[0] < r[1])) {
+      check.fail(key, fmt::format("[{}, {}]", r[0], r[1]), "the low end must be below the high end");
+    }
+  };
+  if (scene.altitude_m) {
+    const std::array<double, 2>& r = *scene.altitude_m;
+    ordered("scene.altitude_range_m", r);
+    const double thickness_m = a.top_radius_m - a.bottom_radius_m;
+    if (r[0] < 0.0 || r[0] >= thickness_m) {
+      check.fail("scene.altitude_range_m[0]", fmt::format("{}", r[0]),
+                 fmt::format("must be in [0, {}) m: from the ground to below the top of the atmosphere", thickness_m));
+    }
+  }
+  if (scene.sun_zenith_deg) {
+    const std::array<double, 2>& r = *scene.sun_zenith_deg;
+    ordered("scene.sun_zenith_range_deg", r);
+    if (r[0] < 0.0) check.fail("scene.sun_zenith_range_deg[0]", fmt::format("{}", r[0]), "must be >= 0");
+    if (r[1] > a.sun_max_zenith_deg) {
+      check.fail("scene.sun_zenith_range_deg[1]", fmt::format("{}", r[1]),
+                 fmt::format("must be <= sun.max_zenith_deg ({}), the lowest sun baked", a.sun_max_zenith_deg));
+    }
   }
 }
 

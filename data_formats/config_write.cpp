@@ -38,12 +38,19 @@ std::string profileList(const DensityProfile& layers) {
   return out + "]";
 }
 
-// The [scene] table: the outputs the scene uses, sky radiance first.
-std::string sceneTable(const SceneOutputs& scene) {
+// The [scene] table: the outputs the scene uses, sky radiance first, and the
+// ranges it sets.
+std::string sceneTable(const SceneOutputs& scene, const SceneRanges& ranges) {
   std::string outputs = "\"sky_radiance\"";
   if (scene.radiance_to_points) outputs += ", \"radiance_to_points\"";
   if (scene.ground_irradiance) outputs += ", \"ground_irradiance\"";
-  return fmt::format("\n[scene]\noutputs = [{}]\n", outputs);
+  std::string text = fmt::format("\n[scene]\noutputs = [{}]\n", outputs);
+  auto range = [&](const char* key, const std::optional<std::array<double, 2>>& r) {
+    if (r) text += fmt::format("{} = [{}, {}]\n", key, numberText((*r)[0]), numberText((*r)[1]));
+  };
+  range("altitude_range_m", ranges.altitude_m);
+  range("sun_zenith_range_deg", ranges.sun_zenith_deg);
+  return text;
 }
 
 }  // namespace
@@ -75,7 +82,7 @@ std::string configToToml(const BakeConfig& config) {
       "[mie]\nscattering = {}\nextinction = {}\nphase_g = {}\ndensity = {}\n\n"
       "[absorption]\nextinction = {}\ndensity = {}\n\n"
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
-      "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n\n"
+      "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n{}\n"
       "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}",
       name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
       spectrumList(a.ground_albedo, n), spectrumList(a.sun_irradiance, n),
@@ -86,6 +93,9 @@ std::string configToToml(const BakeConfig& config) {
       spectrumList(a.absorption_extinction, n), profileList(a.absorption_density),
       s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r,
       s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
+      s.iteration ? fmt::format("iteration = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n", (*s.iteration)[0],
+                                (*s.iteration)[1], (*s.iteration)[2], (*s.iteration)[3])
+                  : std::string(),
       config.bake.auto_orders ? std::string("\"auto\"") : std::to_string(config.bake.orders),
       config.bake.precision == StoragePrecision::Half ? "half" : "float", config.bake.tail_estimate,
       // Written only for automatic orders, so fixed-order configs keep their
@@ -93,8 +103,10 @@ std::string configToToml(const BakeConfig& config) {
       config.bake.auto_orders ? fmt::format("order_tolerance = {}\nmax_orders = {}\n",
                                             numberText(config.bake.order_tolerance), config.bake.max_orders)
                               : std::string(),
-      // Written only when the scene leaves an output out, for the same reason.
-      config.scene.all() ? std::string() : sceneTable(config.scene));
+      // Written only when the scene leaves an output out or narrows the
+      // domain, for the same reason.
+      config.scene.all() && !config.scene_ranges.narrows() ? std::string()
+                                                            : sceneTable(config.scene, config.scene_ranges));
 }
 
 }  // namespace skybake

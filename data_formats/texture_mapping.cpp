@@ -3,6 +3,9 @@
 // round-trip property the tests check.
 #include "texture_mapping.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace skybake {
 namespace {
 
@@ -14,7 +17,78 @@ double muFromDistanceToTop(double r, double dist, double rho, double H) {
   return dist == 0.0 ? 1.0 : clampCosine((H * H - rho * rho - dist * dist) / (2.0 * r * dist));
 }
 
+// Sun angles the 4D tables cover beyond the scene's range, on each side: a
+// point that radiance to a point looks up 100 km from the camera sees the sun
+// 0.9 deg higher or lower than the camera does (on Earth), and its lookup
+// would clamp to the range's end.
+constexpr double kSceneSunZenithMargin_deg = 1.0;
+
+double cosineOfDegrees(double deg) { return std::cos(deg * (M_PI / 180.0)); }
+
+// Moves the low end of a narrowed sun axis down (to lower suns) until a texel
+// sits on the horizon, mu_s = 0, where the sky changes character (sunlight
+// reaching the ground turns off over the disk's half-degree): interpolating
+// across it from texels on both sides smears it, by up to 5 % in the low-sun
+// band when the texel spacing shifted by a tenth. Left alone when the
+// horizon is outside the range or the low end would leave the whole range.
+void alignTexelWithHorizon(AtmosphereDomain& d, int size_mu_s) {
+  const double horizon = muSUnitCoord(d, 0.0);
+  const double lo = d.scattering_mu_s_coord_min, hi = d.scattering_mu_s_coord_max;
+  const int last = size_mu_s - 1;
+  if (!(horizon > lo && horizon < hi) || last < 2) return;
+  const int k = static_cast<int>(std::ceil((horizon - lo) / (hi - lo) * last));
+  if (k >= last) return;
+  const double aligned_lo = (horizon * last - k * hi) / (last - k);
+  if (aligned_lo >= 0.0 && aligned_lo <= lo) d.scattering_mu_s_coord_min = aligned_lo;
+}
+
 }  // namespace
+
+AtmosphereDomain AtmosphereDomain::fromConfig(const BakeConfig& config) {
+  const AtmosphereParameters& a = config.atmosphere;
+  AtmosphereDomain d = fromParameters(a);
+  const SceneRanges& scene = config.scene_ranges;
+  if (scene.altitude_m) {
+    // Cameras above the top are looked up where their rays enter, at the top.
+    const double thickness_m = a.top_radius_m - a.bottom_radius_m;
+    const double low_m = std::clamp((*scene.altitude_m)[0], 0.0, thickness_m);
+    const double high_m = std::clamp((*scene.altitude_m)[1], low_m, thickness_m);
+    d.scattering_rho_min_m = d.distanceToHorizon(a.bottom_radius_m + low_m);
+    d.scattering_rho_max_m = d.distanceToHorizon(a.bottom_radius_m + high_m);
+  }
+  if (scene.sun_zenith_deg) {
+    const double low_deg = std::max((*scene.sun_zenith_deg)[0] - kSceneSunZenithMargin_deg, 0.0);
+    const double high_deg = std::min((*scene.sun_zenith_deg)[1] + kSceneSunZenithMargin_deg, a.sun_max_zenith_deg);
+    d.scattering_mu_s_coord_max = muSUnitCoord(d, cosineOfDegrees(low_deg));
+    d.scattering_mu_s_coord_min = muSUnitCoord(d, cosineOfDegrees(high_deg));
+    alignTexelWithHorizon(d, config.sizes.scattering_mu_s);
+  }
+  return d;
+}
+
+double muSFromUnitCoord(const AtmosphereDomain& d, double x) {
+  const double H = d.horizonToTopDistance();
+  const double d_min = d.top_radius_m - d.bottom_radius_m;
+  const double d_max = H;
+  const double A = (distanceToOuterSphere(d.bottom_radius_m, d.mu_s_min, d.top_radius_m) - d_min) /
+                   (d_max - d_min);
+  const double a = (A - x * A) / (1.0 + x * A);
+  const double dist = d_min + std::min(a, A) * (d_max - d_min);
+  return dist == 0.0 ? 1.0 : clampCosine((H * H - dist * dist) / (2.0 * d.bottom_radius_m * dist));
+}
+
+TextureSizes iterationTextureSizes(const BakeConfig& config) {
+  TextureSizes sizes = config.sizes;
+  if (!AtmosphereDomain::fromConfig(config).narrowed()) return sizes;
+  const TextureSizes defaults{};
+  const std::array<int, 4> iteration = config.sizes.iteration.value_or(std::array<int, 4>{
+      defaults.scattering_r, defaults.scattering_mu, defaults.scattering_mu_s, defaults.scattering_nu});
+  sizes.scattering_r = iteration[0];
+  sizes.scattering_mu = iteration[1];
+  sizes.scattering_mu_s = iteration[2];
+  sizes.scattering_nu = iteration[3];
+  return sizes;
+}
 
 RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r, int i_mu,
                              int i_r) {
@@ -32,30 +106,23 @@ RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r,
 RMu irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
                           int i_r) {
   const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
-  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m), muSFromTexel(d, size_mu_s, i_mu_s)};
+  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m),
+          muSFromIrradianceTexel(d, size_mu_s, i_mu_s)};
 }
 
 double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r) {
-  const double H = d.horizonToTopDistance();
-  const double rho = H * unitRangeFromTextureCoord(texelCentre(i_r, s.r), s.r);
-  return std::sqrt(rho * rho + d.bottom_radius_m * d.bottom_radius_m);
+  const double x = unitRangeFromTextureCoord(texelCentre(i_r, s.r), s.r);
+  return d.radiusAtDistanceToHorizon(d.scattering_rho_min_m + x * (d.scattering_rho_max_m - d.scattering_rho_min_m));
 }
 
 double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_mu_s) {
-  return muSFromTexel(d, s.mu_s, i_mu_s);
+  const double x = unitRangeFromTextureCoord(texelCentre(i_mu_s, s.mu_s), s.mu_s);
+  return muSFromUnitCoord(d, d.scattering_mu_s_coord_min +
+                                 x * (d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min));
 }
 
-double muSFromTexel(const AtmosphereDomain& d, int size, int i_mu_s) {
-  const double x_mu_s = unitRangeFromTextureCoord(texelCentre(i_mu_s, size), size);
-  const double H = d.horizonToTopDistance();
-  const double d_min = d.top_radius_m - d.bottom_radius_m;
-  const double d_max = H;
-  const double A = (distanceToOuterSphere(d.bottom_radius_m, d.mu_s_min, d.top_radius_m) - d_min) /
-                   (d_max - d_min);
-  const double a = (A - x_mu_s * A) / (1.0 + x_mu_s * A);
-  const double dist = d_min + std::min(a, A) * (d_max - d_min);
-  return dist == 0.0 ? 1.0
-                     : clampCosine((H * H - dist * dist) / (2.0 * d.bottom_radius_m * dist));
+double muSFromIrradianceTexel(const AtmosphereDomain& d, int size, int i_mu_s) {
+  return muSFromUnitCoord(d, unitRangeFromTextureCoord(texelCentre(i_mu_s, size), size));
 }
 
 ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s,

@@ -19,14 +19,37 @@
 
 namespace skybake {
 
-// The part of the atmosphere's geometry that the parameterization needs.
+// The part of the atmosphere's geometry that the parameterization needs, and
+// the part of it the 4D tables cover.
 struct AtmosphereDomain {
   double bottom_radius_m = 0.0;
   double top_radius_m = 0.0;
+  // The lowest sun of the irradiance table and of the full mu_s coordinate.
   double mu_s_min = -1.0;
+  // The 4D tables' ends in their axes' own coordinates: rho (the distance to
+  // the horizon, see distanceToHorizon) at the r axis's ends, and the unit
+  // sun coordinate (muSUnitCoord: 0 at mu_s_min, 1 at the zenith) at the
+  // mu_s axis's ends. The whole domain is [0, H] and [0, 1]; a [scene]
+  // narrows them (fromConfig), and the axes keep their texel spacing's shape
+  // over the narrower range.
+  double scattering_rho_min_m = 0.0;
+  double scattering_rho_max_m = 0.0;
+  double scattering_mu_s_coord_min = 0.0;
+  double scattering_mu_s_coord_max = 1.0;
 
+  // The whole domain: every altitude, every sun up to sun.max_zenith_deg.
   static AtmosphereDomain fromParameters(const AtmosphereParameters& a) {
-    return {a.bottom_radius_m, a.top_radius_m, a.sunMuSMin()};
+    AtmosphereDomain d{a.bottom_radius_m, a.top_radius_m, a.sunMuSMin()};
+    d.scattering_rho_max_m = d.horizonToTopDistance();
+    return d;
+  }
+  // The 4D tables narrowed to the config's scene ranges (the whole domain
+  // without them).
+  static AtmosphereDomain fromConfig(const BakeConfig& config);
+
+  bool narrowed() const {
+    return scattering_rho_min_m > 0.0 || scattering_rho_max_m < horizonToTopDistance() ||
+           scattering_mu_s_coord_min > 0.0 || scattering_mu_s_coord_max < 1.0;
   }
   // Distance from the ground to the top boundary along the horizontal: the
   // longest path a ray that does not hit the ground spends above one point.
@@ -37,7 +60,15 @@ struct AtmosphereDomain {
   double distanceToHorizon(double r) const {
     return safeSqrt(r * r - bottom_radius_m * bottom_radius_m);
   }
+  double radiusAtDistanceToHorizon(double rho) const {
+    return std::sqrt(rho * rho + bottom_radius_m * bottom_radius_m);
+  }
 };
+
+// The sizes the bake's orders iterate on: the stored ones, except that a
+// scene that narrows the domain iterates over the whole domain at
+// resolution.iteration (default: the default scattering sizes).
+TextureSizes iterationTextureSizes(const BakeConfig& config);
 
 // [0, 1] -> texture coordinate whose texel centres hit 0 and 1 exactly.
 inline double textureCoordFromUnitRange(double x, int size) {
@@ -95,7 +126,11 @@ struct ScatteringSizes {
   }
 };
 
-inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, double mu_s) {
+// The sun coordinate over the whole sun range: 1 at the zenith, 0 at
+// mu_s_min. a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) / (1 + a)
+// compresses the high sun and spreads the horizon, where the sky changes
+// fastest.
+inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) {
   const double H = d.horizonToTopDistance();
   const double d_min = d.top_radius_m - d.bottom_radius_m;
   const double d_max = H;
@@ -103,10 +138,22 @@ inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, doubl
                    (d_max - d_min);
   const double A = (distanceToOuterSphere(d.bottom_radius_m, d.mu_s_min, d.top_radius_m) - d_min) /
                    (d_max - d_min);
-  // a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) / (1 + a) compresses the
-  // high sun and spreads the horizon, where the sky changes fastest.
-  return textureCoordFromUnitRange(A > 0.0 ? std::max(1.0 - a / A, 0.0) / (1.0 + a) : 0.0,
-                                   size_mu_s);
+  return A > 0.0 ? std::max(1.0 - a / A, 0.0) / (1.0 + a) : 0.0;
+}
+
+// The sun at unit coordinate x (the inverse of muSUnitCoord).
+double muSFromUnitCoord(const AtmosphereDomain& d, double x);
+
+// The 4D tables' mu_s texture coordinate: the unit coordinate over the
+// tables' sun range (outside it the lookup clamps to the range's ends).
+inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, double mu_s) {
+  return textureCoordFromUnitRange(
+      fractionOfRange(muSUnitCoord(d, mu_s), d.scattering_mu_s_coord_min, d.scattering_mu_s_coord_max), size_mu_s);
+}
+
+// The 4D tables' r texture coordinate: rho over the tables' altitude range.
+inline double scatteringCoordR(const AtmosphereDomain& d, int size_r, double rho) {
+  return textureCoordFromUnitRange(fractionOfRange(rho, d.scattering_rho_min_m, d.scattering_rho_max_m), size_r);
 }
 
 // The mu coordinate alone (see transmittanceCoordMu).
@@ -134,7 +181,7 @@ inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r
 inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s,
                                               int size_r, double r, double mu_s) {
   const double x_r = (r - d.bottom_radius_m) / (d.top_radius_m - d.bottom_radius_m);
-  return {scatteringCoordMuS(d, size_mu_s, mu_s), textureCoordFromUnitRange(x_r, size_r)};
+  return {textureCoordFromUnitRange(muSUnitCoord(d, mu_s), size_mu_s), textureCoordFromUnitRange(x_r, size_r)};
 }
 
 inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
@@ -144,8 +191,7 @@ inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
   const double H = d.horizonToTopDistance();
   const double rho = d.distanceToHorizon(r);
   return {(nu + 1.0) * 0.5, scatteringCoordMuS(d, s.mu_s, mu_s),
-          scatteringCoordMu(d, s.mu, r, rho, H, mu, ray_intersects_ground),
-          textureCoordFromUnitRange(rho / H, s.r)};
+          scatteringCoordMu(d, s.mu, r, rho, H, mu, ray_intersects_ground), scatteringCoordR(d, s.r, rho)};
 }
 
 // The multiple-scattering density table shares the scattering table's r,
@@ -171,9 +217,9 @@ struct ScatteringTexelConfig {
 
 double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r);
 double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_mu_s);
-// mu_s at the centre of texel i_mu_s of a mu_s axis of `size` texels (the
-// scattering and irradiance tables share this axis's mapping).
-double muSFromTexel(const AtmosphereDomain& d, int size, int i_mu_s);
+// mu_s at the centre of texel i_mu_s of the irradiance table's mu_s axis of
+// `size` texels (the whole sun range; the 4D tables' axis may be narrower).
+double muSFromIrradianceTexel(const AtmosphereDomain& d, int size, int i_mu_s);
 ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s,
                                             int i_r, int i_mu, int i_mu_s, int i_nu);
 

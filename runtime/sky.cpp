@@ -1,5 +1,7 @@
 #include "runtime/sky.h"
 
+#include <limits>
+
 #include <glm/geometric.hpp>
 
 #include "data_formats/error.h"
@@ -55,14 +57,43 @@ AtmosphereRay enter(const AtmosphereDomain& domain, const glm::dvec3& camera, co
   return atmosphereRay(domain.bottom_radius_m, domain.top_radius_m, camera, dir, 0.0);
 }
 
+// Lookups this close outside a baked range count as inside: the range's
+// ends come back from the tables' coordinates through a square root (r from
+// rho) or an arccosine, which rounds by far less.
+constexpr double kRangeAltitudeTolerance_m = 1e-3;
+constexpr double kRangeSunZenithTolerance_deg = 1e-6;
+
+double degreesOfCosine(double cosine) { return std::acos(clampCosine(cosine)) * (180.0 / kPi); }
+
+BakedRanges bakedRangesOf(const AtmosphereDomain& d, double sun_max_zenith_deg) {
+  const double thickness_m = d.top_radius_m - d.bottom_radius_m;
+  const double high_m = d.radiusAtDistanceToHorizon(d.scattering_rho_max_m) - d.bottom_radius_m;
+  return {d.radiusAtDistanceToHorizon(d.scattering_rho_min_m) - d.bottom_radius_m,
+          high_m >= thickness_m - kRangeAltitudeTolerance_m ? std::numeric_limits<double>::infinity() : high_m,
+          d.scattering_mu_s_coord_max >= 1.0 ? 0.0 : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_max)),
+          d.scattering_mu_s_coord_min <= 0.0 ? sun_max_zenith_deg
+                                             : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_min))};
+}
+
 }  // namespace
+
+bool BakedRanges::containsAltitude(double altitude_m) const {
+  return altitude_m >= altitude_min_m - kRangeAltitudeTolerance_m &&
+         altitude_m <= altitude_max_m + kRangeAltitudeTolerance_m;
+}
+
+bool BakedRanges::containsSunZenith(double sun_zenith_deg) const {
+  return sun_zenith_deg >= sun_zenith_min_deg - kRangeSunZenithTolerance_deg &&
+         sun_zenith_deg <= sun_zenith_max_deg + kRangeSunZenithTolerance_deg;
+}
 
 Sky Sky::load(const std::filesystem::path& path) { return Sky(readBakeFile(path)); }
 
 Sky::Sky(BakeFile bake)
     : bake_(std::move(bake)),
-      sampler_(AtmosphereDomain::fromParameters(bake_.config.atmosphere), bake_.config.sizes),
-      multiple_shape_(bake_.config.atmosphere) {}
+      sampler_(AtmosphereDomain::fromConfig(bake_.config), bake_.config.sizes),
+      multiple_shape_(bake_.config.atmosphere),
+      ranges_(bakedRangesOf(sampler_.domain(), bake_.config.atmosphere.sun_max_zenith_deg)) {}
 
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                           const glm::dvec3& sun_dir, double shadow_length_m) const {

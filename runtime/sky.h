@@ -10,7 +10,12 @@
 //  - a camera below the ground is treated as on the ground, directly above
 //    where it is;
 //  - a sun below the lowest baked sun angle (sun.max_zenith_deg) is looked up
-//    at that angle, where the tables hold small finite twilight values.
+//    at that angle, where the tables hold small finite twilight values;
+//  - a bake whose [scene] narrows the altitudes and sun angles (bakedRanges)
+//    looks a camera or point outside them up at the nearest baked altitude,
+//    in the same direction relative to its horizon, and a sun outside them at
+//    the nearest baked sun angle: close for small excursions, wrong for large
+//    ones. Check bakedRanges().contains(...) where that can happen.
 #pragma once
 
 #include <cstddef>
@@ -27,6 +32,23 @@ namespace skybake {
 struct RadianceAndTransmittance {
   Spectrum radiance;       // W m^-2 sr^-1 nm^-1 scattered toward the camera
   Spectrum transmittance;  // along the same path, dimensionless
+};
+
+// The camera altitudes and sun zenith angles a bake's scattering tables
+// cover: [scene] altitude_range_m and sun_zenith_range_deg (with their 1 deg
+// margin), or the whole atmosphere (altitude_max_m infinite: cameras in
+// space are looked up where their rays enter) and every sun up to
+// sun.max_zenith_deg.
+struct BakedRanges {
+  double altitude_min_m;
+  double altitude_max_m;
+  double sun_zenith_min_deg;
+  double sun_zenith_max_deg;
+  bool containsAltitude(double altitude_m) const;
+  bool containsSunZenith(double sun_zenith_deg) const;
+  bool contains(double altitude_m, double sun_zenith_deg) const {
+    return containsAltitude(altitude_m) && containsSunZenith(sun_zenith_deg);
+  }
 };
 
 struct SunAndSkyIrradiance {
@@ -107,6 +129,9 @@ class Sky {
   // radianceToPoint and irradiance (and receivedRadiance for a ray that ends
   // on the ground) throw Error(BadInput) for an output the bake left out.
   const SceneOutputs& outputs() const { return bake_.config.scene; }
+  // The altitudes and sun angles the scattering tables cover (see the
+  // geometry conventions above for lookups outside them).
+  const BakedRanges& bakedRanges() const { return ranges_; }
   const BakeTables& tables() const { return bake_.tables; }
 
  private:
@@ -118,6 +143,7 @@ class Sky {
   BakeFile bake_;
   TableSampler sampler_;
   MultipleScatteringPhase multiple_shape_;  // what multiple scattering is stored divided by
+  BakedRanges ranges_;
 };
 
 }  // namespace skybake

@@ -93,7 +93,7 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
   const ScatteringSizes& ss = sampler_.scatteringSizes();
   const BakeTables& t = bake_.tables;
 
-  const AxisLerp r_lerp = axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, ss.r), ss.r);
+  const AxisLerp r_lerp = axisLerpFromTextureCoord(scatteringCoordR(d, ss.r, rho), ss.r);
   const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(scatteringCoordMuS(d, ss.mu_s, mu_s), ss.mu_s);
   const MuNuSlice rayleigh(t.single_rayleigh, r_lerp, mu_s_lerp, radianceBlend(mu_s));
   // Without Mie scattering the bake stores no single Mie table: a slice of zeros.

@@ -1,4 +1,5 @@
 // skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float] [--outputs ...]
+//   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH]
 #include <algorithm>
 #include <filesystem>
 #include <optional>
@@ -30,6 +31,8 @@ struct BakeOptions {
   int threads = 0;     // 0: all cores (OpenMP's default)
   std::string precision;  // empty: from the config
   std::vector<std::string> outputs;  // empty: from the config
+  std::string altitude_range;        // "LOW:HIGH" metres; empty: from the config
+  std::string sun_zenith_range;      // "LOW:HIGH" degrees; empty: from the config
   bool reproducible = false;
 };
 
@@ -38,6 +41,9 @@ std::string stageSummary(const BakeReport& report) {
   for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering",
                             "scattering_density", "indirect_irradiance", "multiple_scattering"}) {
     text += fmt::format("{}{} {:.2f} s", text.empty() ? "" : ", ", stage, report.stageSeconds(stage));
+  }
+  if (const double scene = report.stageSeconds("scene_tables"); scene > 0.0) {
+    text += fmt::format(", scene_tables {:.2f} s", scene);
   }
   return text;
 }
@@ -63,6 +69,12 @@ void runBake(const BakeOptions& o) {
         std::find(o.outputs.begin(), o.outputs.end(), "radiance_to_points") != o.outputs.end();
     config.scene.ground_irradiance =
         std::find(o.outputs.begin(), o.outputs.end(), "ground_irradiance") != o.outputs.end();
+  }
+  if (!o.altitude_range.empty()) {
+    config.scene_ranges.altitude_m = parseRangeOption("--altitude-range", o.altitude_range);
+  }
+  if (!o.sun_zenith_range.empty()) {
+    config.scene_ranges.sun_zenith_deg = parseRangeOption("--sun-zenith-range", o.sun_zenith_range);
   }
   validateConfig(config, source + " (with command-line overrides)");
 
@@ -141,6 +153,12 @@ Command addBakeCommand(CLI::App& app) {
                   "scene.outputs).")
       ->delimiter(',')
       ->check(CLI::IsMember({"sky_radiance", "radiance_to_points", "ground_irradiance"}));
+  cmd->add_option("--altitude-range", options->altitude_range,
+                  "LOW:HIGH, metres above the ground: the altitudes of the scene's cameras and of the points "
+                  "they look at; the 4D tables cover only these (overrides scene.altitude_range_m).");
+  cmd->add_option("--sun-zenith-range", options->sun_zenith_range,
+                  "LOW:HIGH, degrees: the scene's sun zenith angles; the 4D tables cover only these, plus "
+                  "1 deg each side (overrides scene.sun_zenith_range_deg).");
   cmd->add_flag("--reproducible", options->reproducible,
                 "Leave times, thread count and memory out of the file header, so the same config "
                 "always gives a byte-identical file.");

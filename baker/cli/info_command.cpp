@@ -5,6 +5,8 @@
 #include "baker/cli/commands.h"
 #include "data_formats/bake_file.h"
 #include "data_formats/config.h"
+#include "data_formats/texture_mapping.h"
+#include "runtime/sky.h"
 
 namespace skybake::cli {
 namespace {
@@ -27,6 +29,14 @@ void runInfo(const std::string& path) {
   fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
   fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu,
              s.scattering_mu_s, s.scattering_nu);
+  if (c.scene_ranges.narrows()) {
+    const BakedRanges ranges = Sky(bake).bakedRanges();
+    const TextureSizes it = iterationTextureSizes(c);
+    fmt::print("scene ranges:  altitude {:g} to {:g} m, sun zenith {:g} to {:.2f} deg (the scattering tables; the "
+               "orders iterated over the whole atmosphere at {} r x {} mu x {} mu_s x {} nu)\n",
+               ranges.altitude_min_m, ranges.altitude_max_m, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg,
+               it.scattering_r, it.scattering_mu, it.scattering_mu_s, it.scattering_nu);
+  }
   for (const LeftOutPart& p : leftOutParts(c)) {
     fmt::print("left out:      {} ({}), {:.1f} MiB uncompressed\n", p.part, p.reason, p.bytes / (1024.0 * 1024.0));
   }

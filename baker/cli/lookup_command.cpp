@@ -1,5 +1,8 @@
 // skybake lookup radiance|irradiance FILE.exr --queries Q.csv [-o OUT.csv]
+#include <algorithm>
+
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include "baker/cli/commands.h"
 #include "baker/csv_table.h"
@@ -53,6 +56,38 @@ void requireOutput(const std::string& bake_path, bool baked, const char* output)
   }
 }
 
+// Refuses, naming the query's cell and the bake, a query outside the bake's
+// scene ranges: the lookup would clamp it to the nearest baked altitude or
+// sun angle and print a value for a sky it did not bake.
+void requireInsideRanges(const CsvTable& q, size_t row, const RadianceQueryColumns& columns, const Sky& sky,
+                         const std::string& bake_path) {
+  const BakedRanges& ranges = sky.bakedRanges();
+  const AtmosphereParameters& a = sky.atmosphere();
+  const double thickness_m = a.top_radius_m - a.bottom_radius_m;  // cameras in space enter at the top
+  const std::string altitudes =
+      fmt::format("outside the altitudes {} covers ({:g} to {:g} m, its scene.altitude_range_m)", bake_path,
+                  ranges.altitude_min_m, ranges.altitude_max_m);
+  if (!ranges.containsAltitude(std::min(q.value(row, columns.altitude_m), thickness_m))) {
+    q.failCell(row, columns.altitude_m, "m is " + altitudes);
+  }
+  if (!ranges.containsSunZenith(q.value(row, columns.sun_zenith_deg))) {
+    q.failCell(row, columns.sun_zenith_deg,
+               fmt::format("deg is outside the sun angles {} covers ({:g} to {:g} deg, its scene.sun_zenith_range_deg)",
+                           bake_path, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg));
+  }
+  if (columns.distance_m && q.value(row, *columns.distance_m) > 0.0) {
+    const glm::dvec3 camera = cameraAtAltitude(a.bottom_radius_m, q.value(row, columns.altitude_m));
+    const glm::dvec3 view =
+        directionFromZenithAzimuthDeg(q.value(row, columns.view_zenith_deg), q.value(row, columns.view_azimuth_deg));
+    const double point_altitude_m =
+        glm::length(camera + view * q.value(row, *columns.distance_m)) - a.bottom_radius_m;
+    if (!ranges.containsAltitude(std::min(point_altitude_m, thickness_m))) {
+      q.failCell(row, *columns.distance_m,
+                 fmt::format("m away puts the point at altitude {:.0f} m, {}", point_altitude_m, altitudes));
+    }
+  }
+}
+
 void runRadiance(const LookupOptions& o) {
   requireWritableLookupOutput(o);
   const CsvTable q = CsvTable::read(o.queries_path);
@@ -72,6 +107,7 @@ void runRadiance(const LookupOptions& o) {
     const glm::dvec3 view = directionFromZenithAzimuthDeg(q.value(row, view_zenith), q.value(row, view_azimuth));
     const double d = distance ? q.value(row, *distance) : 0.0;
     if (d > 0.0) requireOutput(o.bake_path, sky.outputs().radiance_to_points, "radiance_to_points");
+    requireInsideRanges(q, row, columns, sky, o.bake_path);
     const RadianceAndTransmittance v =
         d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
     std::string line = inputCells(q, row);

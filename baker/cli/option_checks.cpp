@@ -38,6 +38,16 @@ void refuseOptionValue(const std::string& option, const std::string& value, cons
   throwBadInput(fmt::format("{} = {}: {}", option, value, reason));
 }
 
+std::array<double, 2> parseRangeOption(const std::string& option, const std::string& text) {
+  const size_t colon = text.find(':');
+  const std::optional<double> low = colon == std::string::npos ? std::nullopt : parseNumber(text.substr(0, colon));
+  const std::optional<double> high = colon == std::string::npos ? std::nullopt : parseNumber(text.substr(colon + 1));
+  if (!low || !high || !std::isfinite(*low) || !std::isfinite(*high)) {
+    refuseOptionValue(option, text, "must be LOW:HIGH, two finite numbers");
+  }
+  return {*low, *high};
+}
+
 std::optional<long long> parseWholeNumber(const std::string& text) {
   long long value = 0;
   const char* end = text.data() + text.size();

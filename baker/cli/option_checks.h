@@ -9,6 +9,7 @@
 // name is not prefixed twice.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -32,6 +33,10 @@ inline constexpr long long kMaxThreadCount = 4096;
 // The --threads option every parallel subcommand has: a whole number in
 // [1, kMaxThreadCount]; `threads` stays 0 (all cores) when it is not given.
 CLI::Option* addThreadsOption(CLI::App& command, int& threads);
+
+// "LOW:HIGH", two finite numbers (a range option such as --altitude-range);
+// refuses anything else naming `option`.
+std::array<double, 2> parseRangeOption(const std::string& option, const std::string& text);
 
 // The whole number `text` spells exactly, or nothing.
 std::optional<long long> parseWholeNumber(const std::string& text);

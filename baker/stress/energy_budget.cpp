@@ -193,10 +193,10 @@ EnergyBudgetLookups energyBudgetLookups(const Sky& sky) {
   const AtmosphereDomain& domain = sky.sampler().domain();
   const TextureSizes& sizes = sky.config().sizes;
   for (int i = 0; i < sizes.scattering_mu_s; ++i) {
-    lookups.radiance_kinks_mu_s.push_back(muSFromTexel(domain, sizes.scattering_mu_s, i));
+    lookups.radiance_kinks_mu_s.push_back(muSFromScatteringTexel(domain, ScatteringSizes::fromTextureSizes(sizes), i));
   }
   for (int i = 0; i < sizes.irradiance_mu_s; ++i) {
-    lookups.ground_irradiance_kinks_mu_s.push_back(muSFromTexel(domain, sizes.irradiance_mu_s, i));
+    lookups.ground_irradiance_kinks_mu_s.push_back(muSFromIrradianceTexel(domain, sizes.irradiance_mu_s, i));
   }
   for (int i = 0; i < sizes.transmittance_mu; ++i) {
     lookups.ground_irradiance_kinks_mu_s.push_back(

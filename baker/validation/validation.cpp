@@ -136,14 +136,24 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
 QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string& left_out) {
   const AtmosphereParameters& a = sky.atmosphere();
   const SceneOutputs& outputs = sky.outputs();
+  const BakedRanges& ranges = sky.bakedRanges();
   QuerySet out{queries.name, {}, {}};
-  size_t to_points = 0, to_ground = 0;
+  size_t to_points = 0, to_ground = 0, outside = 0;
   for (const RadianceQuery& q : queries.radiance) {
     if (q.distance_m > 0.0 && !outputs.radiance_to_points) {
       ++to_points;
       continue;
     }
     const QueryGeometry g = geometryOf(a, q);
+    // A camera in space is looked up where its ray enters, at the top.
+    const double thickness_m = a.top_radius_m - a.bottom_radius_m;
+    const double point_altitude_m =
+        q.distance_m > 0.0 ? glm::length(g.camera + g.view * q.distance_m) - a.bottom_radius_m : q.altitude_m;
+    if (!ranges.contains(std::min(q.altitude_m, thickness_m), q.sun_zenith_deg) ||
+        !ranges.containsAltitude(std::min(point_altitude_m, thickness_m))) {
+      ++outside;
+      continue;
+    }
     if (q.distance_m <= 0.0 && !outputs.ground_irradiance &&
         atmosphereRay(a.bottom_radius_m, a.top_radius_m, g.camera, g.view, 0.0).ends_on_ground) {
       ++to_ground;
@@ -161,6 +171,12 @@ QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string&
   left_out.clear();
   for (size_t i = 0; i < parts.size(); ++i) left_out += (i > 0 ? ", " : "") + parts[i];
   if (!left_out.empty()) left_out = "not validated, left out of the bake by its scene.outputs: " + left_out;
+  if (outside > 0) {
+    left_out += fmt::format("{}not validated, outside the bake's scene ranges (altitude {:g} to {:g} m, sun zenith "
+                            "{:g} to {:g} deg; for a point, both ends): {} radiance queries",
+                            left_out.empty() ? "" : "\n", ranges.altitude_min_m, ranges.altitude_max_m,
+                            ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg, outside);
+  }
   return out;
 }
 

@@ -65,6 +65,8 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries);
 // The queries a bake answers: without radiance to points (scene.outputs) no
 // query with a distance; without ground irradiance no ray that ends on the
 // ground (its lit ground needs the irradiance) and no irradiance query.
+// Also drops the queries outside the bake's scene ranges (camera, sun and,
+// for radiance to a point, the point): Sky::bakedRanges.
 // `left_out` gets a sentence saying what was dropped, or stays empty.
 QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string& left_out);
 

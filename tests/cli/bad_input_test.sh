@@ -83,6 +83,11 @@ for v in 0 nan -inf 1e-12; do
 done
 refused "--outputs = ground_irradiance: must include sky_radiance" -- "${bake[@]}" --outputs ground_irradiance
 refused "--outputs: clouds not in {sky_radiance,radiance_to_points,ground_irradiance}" -- "${bake[@]}" --outputs sky_radiance,clouds
+for v in 0-2000 2000 :5 nan:1 0:inf; do
+  refused "--altitude-range = $v: must be LOW:HIGH, two finite numbers" -- "${bake[@]}" --altitude-range "$v"
+done
+refused "scene.altitude_range_m = [2000, 0]: the low end must be below the high end" -- "${bake[@]}" --altitude-range 2000:0
+refused "scene.sun_zenith_range_deg[1] = 150: must be <= sun.max_zenith_deg (102)" -- "${bake[@]}" --sun-zenith-range 0:150
 [ -e "$work/never.exr" ] && fail "a refused bake wrote its output"
 
 render=(render "$work/none.exr" -o "$work/never.png")
@@ -155,6 +160,17 @@ radiance "q.csv:2: line longer than 65536 bytes: not a query CSV"
 radiance_missing() { kept "$work/existing.csv" "$1" -- lookup radiance "$work/good.exr" --queries "$2" -o "$work/existing.csv"; }
 radiance_missing "no_such.csv: cannot open query file: No such file or directory" "$work/no_such.csv"
 radiance_missing "is a directory, not a query file" "$work"
+# A bake narrowed to a scene's ranges refuses lookups outside them (they
+# would be clamped), naming the cell, the bake and the range.
+"$skybake" bake "$small" -o "$work/narrow.exr" --threads 2 --altitude-range 0:2000 --sun-zenith-range 0:90 \
+  2>"$work/stderr" || fail "the narrowed bake failed: $(cat "$work/stderr")"
+narrow() { kept "$work/existing.csv" "$1" -- lookup radiance "$work/narrow.exr" --queries "$work/q.csv" -o "$work/existing.csv"; }
+printf '%s\n1000,30,0,0\n5000,30,0,0\n' "$header" >"$work/q.csv"
+narrow "q.csv:3:1 (altitude_m): 5000 m is outside the altitudes $work/narrow.exr covers (0 to 2000 m, its scene.altitude_range_m)"
+printf '%s\n1000,100,0,0\n' "$header" >"$work/q.csv"
+narrow "q.csv:2:2 (sun_zenith_deg): 100 deg is outside the sun angles $work/narrow.exr covers (0 to"
+printf '%s,distance_m\n0,30,80,0,50000\n' "$header" >"$work/q.csv"
+narrow "q.csv:2:5 (distance_m): 50000 m away puts the point at altitude 8873 m, outside the altitudes"
 printf 'altitude_m,sun_zenith_deg\n0,190\n' >"$work/e.csv"
 kept "$work/existing.csv" "e.csv:2:2 (sun_zenith_deg): 190 is out of range [0, 180]" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/existing.csv"
 

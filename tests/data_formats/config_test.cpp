@@ -120,6 +120,42 @@ TEST(Config, RejectsBadSceneOutputs) {
   expectRejected(kMinimal + "[scene]\naltitude = 3\n", {"scene.altitude", "unknown key"});
 }
 
+TEST(Config, SceneRangesParseAndRoundTrip) {
+  const BakeConfig whole = parseConfig(kMinimal, "minimal");
+  EXPECT_FALSE(whole.scene_ranges.narrows());
+  const BakeConfig c = parseConfig(kMinimal + "[scene]\naltitude_range_m = [0, 2000.5]\nsun_zenith_range_deg = [10, 90]\n"
+                                              "[resolution.iteration]\nr = 16\nmu_s = 24\n",
+                                   "ranges");
+  ASSERT_TRUE(c.scene_ranges.altitude_m && c.scene_ranges.sun_zenith_deg && c.sizes.iteration);
+  EXPECT_EQ((*c.scene_ranges.altitude_m)[1], 2000.5);
+  EXPECT_EQ((*c.scene_ranges.sun_zenith_deg)[0], 10.0);
+  // Unnamed iteration sizes take the default tables' sizes.
+  EXPECT_EQ(*c.sizes.iteration, (std::array<int, 4>{16, 128, 24, 8}));
+  const std::string text = configToToml(c);
+  const BakeConfig again = parseConfig(text, "round trip");
+  EXPECT_EQ(again.scene_ranges.altitude_m, c.scene_ranges.altitude_m);
+  EXPECT_EQ(again.scene_ranges.sun_zenith_deg, c.scene_ranges.sun_zenith_deg);
+  EXPECT_EQ(again.sizes.iteration, c.sizes.iteration);
+  EXPECT_EQ(configToToml(again), text);
+}
+
+TEST(Config, RejectsBadSceneRanges) {
+  expectRejected(kMinimal + "[scene]\naltitude_range_m = [0, 2000, 3000]\n",
+                 {"scene.altitude_range_m", "must be [low, high]"});
+  expectRejected(kMinimal + "[scene]\naltitude_range_m = [2000, 2000]\n",
+                 {"scene.altitude_range_m", "low end must be below"});
+  expectRejected(kMinimal + "[scene]\naltitude_range_m = [-5, 2000]\n", {"scene.altitude_range_m[0]", "-5"});
+  expectRejected(kMinimal + "[scene]\naltitude_range_m = [1e9, 2e9]\n",
+                 {"scene.altitude_range_m[0]", "below the top of the atmosphere"});
+  expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [0, 150]\n",
+                 {"scene.sun_zenith_range_deg[1]", "150", "sun.max_zenith_deg"});
+  expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [\"low\", 90]\n",
+                 {"scene.sun_zenith_range_deg[0]", "must be a number"});
+  expectRejected(kMinimal + "[resolution.iteration]\nr = 16\n", {"resolution.iteration", "only with scene."});
+  expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [0, 90]\n[resolution.iteration]\nmu = 33\n",
+                 {"resolution.iteration.mu", "33", "must be even"});
+}
+
 TEST(Config, RejectsBadOrderSettings) {
   expectRejected(kMinimal + "[bake]\norders = \"many\"\n", {"bake.orders", "many", "\"auto\""});
   expectRejected(kMinimal + "[bake]\norders = \"auto\"\norder_tolerance = 0.0\n", {"bake.order_tolerance", "must be in"});
