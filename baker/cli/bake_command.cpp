@@ -1,6 +1,8 @@
 // skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float] [--outputs ...]
-//   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH]
+//   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH] [--target-error PERCENT]
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -16,6 +18,7 @@
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/report_sidecar.h"
+#include "baker/size_choice.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
@@ -33,6 +36,7 @@ struct BakeOptions {
   std::vector<std::string> outputs;  // empty: from the config
   std::string altitude_range;        // "LOW:HIGH" metres; empty: from the config
   std::string sun_zenith_range;      // "LOW:HIGH" degrees; empty: from the config
+  std::optional<std::string> target_error;  // "0.5%" or "0.5"; absent: the config's sizes
   bool reproducible = false;
 };
 
@@ -46,6 +50,26 @@ std::string stageSummary(const BakeReport& report) {
     text += fmt::format(", scene_tables {:.2f} s", scene);
   }
   return text;
+}
+
+// Refuses a target the sweep cannot meet or that is not a percentage.
+SizeChoice sizesForTargetError(const std::string& text) {
+  const std::string number = !text.empty() && text.back() == '%' ? text.substr(0, text.size() - 1) : text;
+  char* end = nullptr;
+  const double percent = std::strtod(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(percent) || percent <= 0.0 ||
+      percent >= 100.0) {
+    refuseOptionValue("--target-error", text, "must be a percentage in (0, 100), such as 0.5% or 0.5");
+  }
+  const std::optional<SizeChoice> choice = chooseSizesForError(percent);
+  if (!choice) {
+    const SweepPoint& best = earthSweep().back();
+    refuseOptionValue("--target-error", text,
+                      fmt::format("below what the sweep reached ({:g} % at {:g}x the default sizes, "
+                                  "docs/ERROR_VS_TIME.md); set resolution.scattering yourself and validate",
+                                  worstPercent(best), best.scale));
+  }
+  return *choice;
 }
 
 void runBake(const BakeOptions& o) {
@@ -76,6 +100,13 @@ void runBake(const BakeOptions& o) {
   if (!o.sun_zenith_range.empty()) {
     config.scene_ranges.sun_zenith_deg = parseRangeOption("--sun-zenith-range", o.sun_zenith_range);
   }
+  std::optional<SizeChoice> size_choice;
+  if (o.target_error) {
+    size_choice = sizesForTargetError(*o.target_error);
+    const std::optional<std::array<int, 4>> iteration = config.sizes.iteration;
+    config.sizes = size_choice->sizes;
+    config.sizes.iteration = iteration;
+  }
   validateConfig(config, source + " (with command-line overrides)");
 
   const std::filesystem::path output(o.output_path);
@@ -89,6 +120,15 @@ void runBake(const BakeOptions& o) {
                                      memory.tables_4d_at_peak, formatBytes(memory.table_4d_bytes)),
                          memory.peak_bytes);
 
+  if (size_choice) {
+    const TextureSizes& c = size_choice->sizes;
+    fmt::print(stderr,
+               "skybake: --target-error {}: {:g}x the default sizes (scattering {} x {} x {} x {}), where the sweep of "
+               "the built-in Earth measured {:.2f} % sky radiance RMS (worst channel, day and low sun) and {:.1f} s on "
+               "2 threads (docs/ERROR_VS_TIME.md); `skybake validate` measures this bake\n",
+               *o.target_error, size_choice->scale, c.scattering_r, c.scattering_mu, c.scattering_mu_s,
+               c.scattering_nu, size_choice->predicted_percent, size_choice->predicted_bake_seconds);
+  }
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
   setStoredReport(bake, !o.reproducible);
@@ -98,11 +138,21 @@ void runBake(const BakeOptions& o) {
   writeBakeFile(output, bake.file, [&](const std::filesystem::path& temp) {
     bytes = std::filesystem::file_size(temp);
     const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report.toJson(!o.reproducible));
-    writeReportSidecar(output, nlohmann::ordered_json{{"bake_file", o.output_path},
-                                                      {"atmosphere", config.name},
-                                                      {"file_size_bytes", bytes},
-                                                      {"orders", bake.file.orders_computed},
-                                                      {"bake", report}});
+    nlohmann::ordered_json sidecar{{"bake_file", o.output_path},
+                                   {"atmosphere", config.name},
+                                   {"file_size_bytes", bytes},
+                                   {"orders", bake.file.orders_computed},
+                                   {"bake", report}};
+    if (size_choice) {
+      sidecar["size_choice"] = {{"target_error_percent", *o.target_error},
+                                {"scale_of_default_sizes", size_choice->scale},
+                                {"predicted_error_percent", size_choice->predicted_percent},
+                                {"predicted_bake_seconds_2_threads", size_choice->predicted_bake_seconds},
+                                {"model", "sky radiance RMS, worst channel of the day and low-sun bands, "
+                                          "as measured in the sweep of the built-in Earth "
+                                          "(docs/ERROR_VS_TIME.md)"}};
+    }
+    writeReportSidecar(output, sidecar);
   });
   const OrdersDecision& decision = bake.report.orders_decision;
   const std::string orders_note =
@@ -159,6 +209,11 @@ Command addBakeCommand(CLI::App& app) {
   cmd->add_option("--sun-zenith-range", options->sun_zenith_range,
                   "LOW:HIGH, degrees: the scene's sun zenith angles; the 4D tables cover only these, plus "
                   "1 deg each side (overrides scene.sun_zenith_range_deg).");
+  cmd->add_option("--target-error", options->target_error,
+                  "A sky radiance error to aim for, e.g. 1%: every table size becomes the smallest multiple of "
+                  "the default sizes measured in the sweep of the built-in Earth (0.5x, 0.75x, 1x, 1.5x) whose error "
+                  "(docs/ERROR_VS_TIME.md) meets it; the choice is printed and written to the report. Overrides "
+                  "the config's [resolution] sizes.");
   cmd->add_flag("--reproducible", options->reproducible,
                 "Leave times, thread count and memory out of the file header, so the same config "
                 "always gives a byte-identical file.");
