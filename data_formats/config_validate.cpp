@@ -153,11 +153,6 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
   }
   if (s.iteration) {
     const std::array<int, 4>& it = *s.iteration;
-    if (!config.scene_ranges.narrows()) {
-      check.fail("resolution.iteration", fmt::format("{{ r = {}, mu = {}, mu_s = {}, nu = {} }}", it[0], it[1], it[2], it[3]),
-                 "only with scene.altitude_range_m or scene.sun_zenith_range_deg: without them the orders "
-                 "iterate on the stored tables (resolution.scattering)");
-    }
     size("resolution.iteration.r", it[0], 2, kMax4DAxis);
     size("resolution.iteration.mu", it[1], 4, kMax4DAxis);
     size("resolution.iteration.mu_s", it[2], 2, kMax4DAxis);

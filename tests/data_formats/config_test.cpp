@@ -151,7 +151,6 @@ TEST(Config, RejectsBadSceneRanges) {
                  {"scene.sun_zenith_range_deg[1]", "150", "sun.max_zenith_deg"});
   expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [\"low\", 90]\n",
                  {"scene.sun_zenith_range_deg[0]", "must be a number"});
-  expectRejected(kMinimal + "[resolution.iteration]\nr = 16\n", {"resolution.iteration", "only with scene."});
   expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [0, 90]\n[resolution.iteration]\nmu = 33\n",
                  {"resolution.iteration.mu", "33", "must be even"});
 }
