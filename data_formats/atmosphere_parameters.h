@@ -87,6 +87,13 @@ struct BakeSettings {
   StoragePrecision precision = StoragePrecision::Float;
   // Add the orders after the last as a geometric series (see BakeReport).
   bool tail_estimate = true;
+  // Store single Mie scattering as one channel (the first wavelength's) beside
+  // single Rayleigh scattering, and rebuild the other channels from the
+  // Rayleigh channels' spectral shape (approximateSingleMie in bake_file.h):
+  // the file loses all but one channel of the single_mie part, the sky gains
+  // an approximation error (docs/LEAVE_OUT.md). Needs a free channel (at
+  // most 3 wavelengths) and Rayleigh and Mie scattering in the first one.
+  bool combined_single_mie = false;
 };
 
 // What the scene uses of the bake ([scene] in CONFIG.md). The tables of an

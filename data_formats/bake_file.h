@@ -55,16 +55,38 @@ inline bool bakeStoresSingleMie(const AtmosphereParameters& a) {
   return false;
 }
 
+// Whether the file keeps single Mie scattering as one channel of the
+// `single_rayleigh` part (bake.combined_single_mie) instead of a part of its own.
+inline bool bakeStoresCombinedSingleMie(const BakeConfig& c) {
+  return c.bake.combined_single_mie && bakeStoresSingleMie(c.atmosphere);
+}
+
+// That channel's name: "mie_" and the first wavelength's channel name.
+std::string combinedSingleMieChannelName(const AtmosphereParameters& a);
+
+// Rebuilds single Mie scattering in every channel from its first channel,
+// assuming that Mie and Rayleigh single scattering (phase functions divided
+// out) share their spectral shape up to the ratio of the scattering
+// coefficients: mie[c] = rayleigh[c] * mie[0] / rayleigh[0] * (beta_R[0] /
+// beta_M[0]) * (beta_M[c] / beta_R[c]). Exact where the light reaching the
+// scattering points is attenuated alike at every wavelength; otherwise off
+// by the difference in attenuation along the Rayleigh and Mie paths (largest
+// near the sun at low elevations, docs/LEAVE_OUT.md). The first channel is
+// kept as it is; where rayleigh[0] is 0 (no light) the others are 0.
+void approximateSingleMie(const AtmosphereParameters& a, const Texture4D& rayleigh, Texture4D& mie);
+
 // A part that a bake leaves out of its file: the scene does not use it
 // ([scene] outputs) or it would hold only zeros.
 struct LeftOutPart {
   const char* part;    // its name (FORMAT.md)
   const char* reason;  // why, in words
-  uint64_t bytes;      // what it would take uncompressed
+  uint64_t bytes;      // what leaving it out saves, uncompressed
 };
 std::vector<LeftOutPart> leftOutParts(const BakeConfig& config);
 bool leavesOut(const BakeConfig& config, const char* part);
-// Empties the texels of the tables a bake leaves out (their sizes stay).
+// Empties the texels of the tables a bake leaves out (their sizes stay); a
+// single Mie table stored combined becomes what a reader rebuilds from the
+// file (approximateSingleMie), so in-memory and read-back bakes agree.
 void clearLeftOutTables(const BakeConfig& config, BakeTables& tables);
 
 struct BakeFile {

@@ -52,6 +52,7 @@ struct PartLayout {
   int width = 0;
   int height = 0;
   uint64_t stored_bytes = 0;  // its channels' pixel data, uncompressed
+  std::string extra_channel;  // read into the first lane of other texels (combined single Mie), or ""
 };
 
 class Reader {
@@ -79,8 +80,9 @@ class Reader {
 
   // Finds a part and checks its window and channels against the table size
   // the config gives it. Allocates nothing.
-  PartLayout checkPart(const char* name, int width, int height, const AtmosphereParameters& a) const {
-    PartLayout layout{name, findPart(name), width, height, 0};
+  PartLayout checkPart(const char* name, int width, int height, const AtmosphereParameters& a,
+                       const std::string& extra_channel = {}) const {
+    PartLayout layout{name, findPart(name), width, height, 0, extra_channel};
     const Imf::Header& h = file_.header(layout.index);
     const Imath::Box2i window = h.dataWindow();
     const long long w = 1LL * window.max.x - window.min.x + 1;
@@ -90,8 +92,10 @@ class Reader {
                        name, w, ht, window.min.x, window.min.y, width, height));
     }
     uint64_t bytes_per_texel = 0;
-    for (int c = 0; c < a.channelCount(); ++c) {
-      const std::string channel = channelName(a.wavelengths_nm[c]);
+    std::vector<std::string> channels;
+    for (int c = 0; c < a.channelCount(); ++c) channels.push_back(channelName(a.wavelengths_nm[c]));
+    if (!extra_channel.empty()) channels.push_back(extra_channel);
+    for (const std::string& channel : channels) {
       const Imf::Channel* found = h.channels().findChannel(channel);
       if (found == nullptr) fail(fmt::format("part '{}' has no channel {}", name, channel));
       if (found->xSampling != 1 || found->ySampling != 1) {
@@ -106,7 +110,10 @@ class Reader {
 
   // Reads a checked part into `texels` (width * height texels, channels in
   // the config's wavelength order, unused lanes 0).
-  void readPart(const PartLayout& part, const AtmosphereParameters& a, std::vector<Spectrum>& texels) {
+  // The extra channel, if the part has one, goes to the first lane of
+  // `extra_texels` (the others 0).
+  void readPart(const PartLayout& part, const AtmosphereParameters& a, std::vector<Spectrum>& texels,
+                std::vector<Spectrum>* extra_texels = nullptr) {
     texels.assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
     Imf::FrameBuffer frame;
     char* base = reinterpret_cast<char*>(texels.data());
@@ -115,14 +122,23 @@ class Reader {
                    Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum),
                               sizeof(Spectrum) * part.width));
     }
+    if (!part.extra_channel.empty()) {
+      extra_texels->assign(texels.size(), Spectrum(0.0f));
+      frame.insert(part.extra_channel, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(extra_texels->data()),
+                                                  sizeof(Spectrum), sizeof(Spectrum) * part.width));
+    }
     Imf::InputPart in(file_, part.index);
     in.setFrameBuffer(frame);
     in.readPixels(0, part.height - 1);
-    for (const Spectrum& s : texels) {
-      for (int c = 0; c < a.channelCount(); ++c) {
-        if (!std::isfinite(s[c])) fail(fmt::format("part '{}' holds a non-finite value", part.name));
+    auto checkFinite = [&](const std::vector<Spectrum>& values, int channels) {
+      for (const Spectrum& s : values) {
+        for (int c = 0; c < channels; ++c) {
+          if (!std::isfinite(s[c])) fail(fmt::format("part '{}' holds a non-finite value", part.name));
+        }
       }
-    }
+    };
+    checkFinite(texels, a.channelCount());
+    if (!part.extra_channel.empty()) checkFinite(*extra_texels, 1);
   }
 
  private:
@@ -190,10 +206,15 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
        &t.multiple_density.texels},
   };
   std::erase_if(tables, [&](const Table& table) { return leavesOut(bake.config, table.part); });
+  // Single Mie scattering combined into single_rayleigh: its first channel
+  // is read from there and the others rebuilt.
+  const bool combined_mie = bakeStoresCombinedSingleMie(bake.config);
   std::vector<PartLayout> layouts;
   uint64_t stored_bytes = 0;
   for (const Table& table : tables) {
-    layouts.push_back(in.checkPart(table.part, table.width, table.height, a));
+    const bool with_mie = combined_mie && std::string_view(table.part) == kPartSingleRayleigh;
+    layouts.push_back(in.checkPart(table.part, table.width, table.height, a,
+                                   with_mie ? combinedSingleMieChannelName(a) : std::string()));
     stored_bytes += layouts.back().stored_bytes;
   }
   if (stored_bytes / kMaxExrExpansion > file_bytes) {
@@ -201,7 +222,8 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
                         "bytes can hold: the header is corrupt",
                         stored_bytes, file_bytes));
   }
-  for (size_t i = 0; i < layouts.size(); ++i) in.readPart(layouts[i], a, *tables[i].texels);
+  for (size_t i = 0; i < layouts.size(); ++i) in.readPart(layouts[i], a, *tables[i].texels, &t.single_mie.texels);
+  if (combined_mie) approximateSingleMie(a, t.single_rayleigh, t.single_mie);
   return bake;
 }
 

@@ -45,6 +45,10 @@ struct PartToWrite {
   int width;
   int height;
   std::string size_text;
+  // One more channel, from the first lane of other texels of the same size
+  // (single Mie scattering combined into single_rayleigh), or none.
+  std::string extra_channel = {};
+  const std::vector<Spectrum>* extra_texels = nullptr;
 };
 
 // Parts of a multi-part file must share one display window; each part's data
@@ -61,6 +65,7 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
   for (double wavelength : a.wavelengths_nm) {
     header.channels().insert(channelName(wavelength), Imf::Channel(type));
   }
+  if (part.extra_texels != nullptr) header.channels().insert(part.extra_channel, Imf::Channel(type));
   std::string wavelengths;
   for (double w : a.wavelengths_nm) wavelengths += fmt::format("{}{}", wavelengths.empty() ? "" : " ", w);
   const AtmosphereDomain domain = AtmosphereDomain::fromConfig(bake.config);
@@ -99,21 +104,31 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
     Imf::OutputPart out(file, static_cast<int>(i));
     Imf::FrameBuffer frame;
     // Half storage: convert here, one half4 per texel, same layout as the floats.
-    std::vector<Imath::half> halves;
-    if (half) {
-      halves.resize(part.texels->size() * kMaxChannels);
-      for (size_t t = 0; t < part.texels->size(); ++t) {
-        for (int c = 0; c < kMaxChannels; ++c) halves[t * kMaxChannels + c] = (*part.texels)[t][c];
+    auto toHalves = [](const std::vector<Spectrum>& texels) {
+      std::vector<Imath::half> halves(texels.size() * kMaxChannels);
+      for (size_t t = 0; t < texels.size(); ++t) {
+        for (int c = 0; c < kMaxChannels; ++c) halves[t * kMaxChannels + c] = texels[t][c];
       }
-    }
-    char* base = half ? reinterpret_cast<char*>(halves.data())
-                      : const_cast<char*>(reinterpret_cast<const char*>(part.texels->data()));
+      return halves;
+    };
+    std::vector<Imath::half> halves, extra_halves;
+    if (half) halves = toHalves(*part.texels);
+    if (half && part.extra_texels != nullptr) extra_halves = toHalves(*part.extra_texels);
+    auto baseOf = [&](const std::vector<Spectrum>& texels, std::vector<Imath::half>& as_halves) {
+      return half ? reinterpret_cast<char*>(as_halves.data())
+                  : const_cast<char*>(reinterpret_cast<const char*>(texels.data()));
+    };
+    char* base = baseOf(*part.texels, halves);
     const size_t value_bytes = half ? sizeof(Imath::half) : sizeof(float);
     const size_t texel_bytes = value_bytes * kMaxChannels;
+    const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
     for (int c = 0; c < channels; ++c) {
       frame.insert(channelName(bake.config.atmosphere.wavelengths_nm[c]),
-                   Imf::Slice(half ? Imf::HALF : Imf::FLOAT, base + c * value_bytes, texel_bytes,
-                              texel_bytes * part.width));
+                   Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
+    }
+    if (part.extra_texels != nullptr) {
+      frame.insert(part.extra_channel, Imf::Slice(type, baseOf(*part.extra_texels, extra_halves), texel_bytes,
+                                                  texel_bytes * part.width));
     }
     out.setFrameBuffer(frame);
     out.writePixels(part.height);
@@ -153,9 +168,14 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
        "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_density.texels,
        t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
   };
+  if (bakeStoresCombinedSingleMie(bake.config)) {
+    parts[1].extra_channel = combinedSingleMieChannelName(bake.config.atmosphere);
+    parts[1].extra_texels = &t.single_mie.texels;
+  }
   std::erase_if(parts, [&](const PartToWrite& p) { return leavesOut(bake.config, p.name); });
   for (const PartToWrite& part : parts) {
-    if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0) {
+    if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0 ||
+        (part.extra_texels != nullptr && part.extra_texels->size() != part.texels->size())) {
       throw Error(ErrorKind::Internal, fmt::format("{}: part {} has no data of its size", path.string(), part.name));
     }
   }

@@ -261,12 +261,17 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
 
   if (const toml::table* t = in.table(root, "", "bake", false)) {
-    in.rejectUnknownKeys(*t, "bake.", {"orders", "order_tolerance", "max_orders", "precision", "tail_estimate"});
-    if (const toml::node* tail = t->get("tail_estimate")) {
-      auto b = tail->as_boolean();
-      if (!b) in.fail(tail, "bake.tail_estimate", ConfigReader::describe(*tail), "must be true or false");
-      config.bake.tail_estimate = b->get();
-    }
+    in.rejectUnknownKeys(*t, "bake.", {"orders", "order_tolerance", "max_orders", "precision", "tail_estimate",
+                                          "combined_single_mie"});
+    auto flag = [&](const char* key, bool& out) {
+      if (const toml::node* node = t->get(key)) {
+        auto b = node->as_boolean();
+        if (!b) in.fail(node, std::string("bake.") + key, ConfigReader::describe(*node), "must be true or false");
+        out = b->get();
+      }
+    };
+    flag("tail_estimate", config.bake.tail_estimate);
+    flag("combined_single_mie", config.bake.combined_single_mie);
     if (const toml::node* orders = t->get("orders")) {
       const auto text = orders->as_string();
       if (text && text->get() == "auto") {

@@ -168,6 +168,22 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
     }
   }
 
+  bool has_mie = false;
+  for (int c = 0; c < n; ++c) has_mie = has_mie || a.mie_scattering[c] > 0.0f;
+  if (config.bake.combined_single_mie && has_mie) {
+    if (n >= kMaxChannels) {
+      check.fail("bake.combined_single_mie", "true",
+                 fmt::format("needs a channel free beside the wavelengths for single Mie scattering: at most {} "
+                             "wavelengths (channels.wavelengths_nm has {})",
+                             kMaxChannels - 1, n));
+    } else if (!(a.rayleigh_scattering[0] > 0.0f && a.mie_scattering[0] > 0.0f)) {
+      check.fail("bake.combined_single_mie", "true",
+                 fmt::format("needs Rayleigh and Mie scattering at the first wavelength ({} nm), whose single Mie "
+                             "scattering is stored and from which the other channels are rebuilt",
+                             a.wavelengths_nm[0]));
+    }
+  }
+
   if (config.bake.orders < 1 || config.bake.orders > kMaxOrders) {
     check.fail("bake.orders", fmt::format("{}", config.bake.orders),
                fmt::format("must be in [1, {}]", kMaxOrders));

@@ -83,7 +83,7 @@ std::string configToToml(const BakeConfig& config) {
       "[absorption]\nextinction = {}\ndensity = {}\n\n"
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
       "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n{}\n"
-      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}",
+      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}{}",
       name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
       spectrumList(a.ground_albedo, n), spectrumList(a.sun_irradiance, n),
       numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
@@ -103,6 +103,7 @@ std::string configToToml(const BakeConfig& config) {
       config.bake.auto_orders ? fmt::format("order_tolerance = {}\nmax_orders = {}\n",
                                             numberText(config.bake.order_tolerance), config.bake.max_orders)
                               : std::string(),
+      config.bake.combined_single_mie ? std::string("combined_single_mie = true\n") : std::string(),
       // Written only when the scene leaves an output out or narrows the
       // domain, for the same reason.
       config.scene.all() && !config.scene_ranges.narrows() ? std::string()

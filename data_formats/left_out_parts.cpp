@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cstring>
+#include <limits>
 
 #include "bake_file.h"
 #include "bake_file_attributes.h"
@@ -13,6 +15,13 @@ std::vector<LeftOutPart> leftOutParts(const BakeConfig& c) {
   std::vector<LeftOutPart> out;
   if (!bakeStoresSingleMie(c.atmosphere)) {
     out.push_back({bake_file::kPartSingleMie, "no Mie scattering", table_4d});
+  } else if (bakeStoresCombinedSingleMie(c)) {
+    // One channel of it moves into single_rayleigh.
+    const int n = c.atmosphere.channelCount();
+    out.push_back({bake_file::kPartSingleMie,
+                   "bake.combined_single_mie: the first wavelength is a channel of single_rayleigh, the others "
+                   "are rebuilt from the Rayleigh channels",
+                   table_4d / n * (n - 1)});
   }
   if (!c.scene.radiance_to_points) {
     out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", table_4d});
@@ -25,10 +34,42 @@ std::vector<LeftOutPart> leftOutParts(const BakeConfig& c) {
 }
 
 void clearLeftOutTables(const BakeConfig& config, BakeTables& tables) {
+  if (bakeStoresCombinedSingleMie(config)) {
+    approximateSingleMie(config.atmosphere, tables.single_rayleigh, tables.single_mie);
+  }
   for (const LeftOutPart& p : leftOutParts(config)) {
-    if (std::strcmp(p.part, bake_file::kPartSingleMie) == 0) tables.single_mie.texels = {};
+    if (std::strcmp(p.part, bake_file::kPartSingleMie) == 0 && !bakeStoresCombinedSingleMie(config)) {
+      tables.single_mie.texels = {};
+    }
     if (std::strcmp(p.part, bake_file::kPartMultipleDensity) == 0) tables.multiple_density.texels = {};
     if (std::strcmp(p.part, bake_file::kPartIrradiance) == 0) tables.irradiance.texels = {};
+  }
+}
+
+std::string combinedSingleMieChannelName(const AtmosphereParameters& a) {
+  return "mie_" + channelName(a.wavelengths_nm[0]);
+}
+
+void approximateSingleMie(const AtmosphereParameters& a, const Texture4D& rayleigh, Texture4D& mie) {
+  const int n = a.channelCount();
+  // Per channel: (beta_R[0] / beta_M[0]) * (beta_M[c] / beta_R[c]); the
+  // config check guarantees beta_R[0] and beta_M[0] > 0 (and beta_R[c] = 0
+  // gives no Rayleigh light to take the shape from: 0).
+  SpectrumD ratio(0.0);
+  for (int c = 0; c < n; ++c) {
+    ratio[c] = a.rayleigh_scattering[c] > 0.0f ? (double(a.rayleigh_scattering[0]) / a.mie_scattering[0]) *
+                                                     (double(a.mie_scattering[c]) / a.rayleigh_scattering[c])
+                                               : 0.0;
+  }
+  for (size_t i = 0; i < mie.texels.size(); ++i) {
+    const Spectrum& ray = rayleigh.texels[i];
+    Spectrum& m = mie.texels[i];
+    // In double: with denormal Rayleigh values (dark, thick atmospheres) the
+    // float quotient overflows; the result is clamped to the float range.
+    const double per_rayleigh = ray[0] > 0.0f ? double(m[0]) / ray[0] : 0.0;
+    for (int c = 1; c < n; ++c) {
+      m[c] = static_cast<float>(std::min(ray[c] * per_rayleigh * ratio[c], double(std::numeric_limits<float>::max())));
+    }
   }
 }
 

@@ -1,5 +1,5 @@
 // skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float] [--outputs ...]
-//   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH] [--target-error PERCENT]
+//   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH] [--target-error PERCENT] [--combined-single-mie]
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -38,6 +38,7 @@ struct BakeOptions {
   std::string sun_zenith_range;      // "LOW:HIGH" degrees; empty: from the config
   std::optional<std::string> target_error;  // "0.5%" or "0.5"; absent: the config's sizes
   bool reproducible = false;
+  bool combined_single_mie = false;  // false: from the config
 };
 
 std::string stageSummary(const BakeReport& report) {
@@ -84,6 +85,7 @@ void runBake(const BakeOptions& o) {
   if (o.order_tolerance) config.bake.order_tolerance = *o.order_tolerance;
   if (o.precision == "half") config.bake.precision = StoragePrecision::Half;
   if (o.precision == "float") config.bake.precision = StoragePrecision::Float;
+  if (o.combined_single_mie) config.bake.combined_single_mie = true;
   if (!o.outputs.empty()) {
     if (std::find(o.outputs.begin(), o.outputs.end(), "sky_radiance") == o.outputs.end()) {
       refuseOptionValue("--outputs", fmt::format("{}", fmt::join(o.outputs, ",")),
@@ -214,6 +216,10 @@ Command addBakeCommand(CLI::App& app) {
                   "the default sizes measured in the sweep of the built-in Earth (0.5x, 0.75x, 1x, 1.5x) whose error "
                   "(docs/ERROR_VS_TIME.md) meets it; the choice is printed and written to the report. Overrides "
                   "the config's [resolution] sizes.");
+  cmd->add_flag("--combined-single-mie", options->combined_single_mie,
+                "Store single Mie scattering as one channel beside single Rayleigh scattering and rebuild the "
+                "others from the Rayleigh channels (sets bake.combined_single_mie): a smaller file, less "
+                "accurate near the sun (docs/LEAVE_OUT.md).");
   cmd->add_flag("--reproducible", options->reproducible,
                 "Leave times, thread count and memory out of the file header, so the same config "
                 "always gives a byte-identical file.");

@@ -35,7 +35,7 @@ BakeFile tinyBake() {
   BakeFile bake;
   bake.config = builtinEarthConfig();
   TextureSizes& s = bake.config.sizes;
-  s = {2, 2, 2, 2, 2, 4, 2, 2};
+  s = {2, 2, 2, 2, 2, 4, 2, 2, std::nullopt};
   bake.orders_computed = 1;
   bake.report_json = "{}";
   BakeTables& t = bake.tables;

@@ -19,7 +19,7 @@ BakeFile syntheticBake() {
   BakeFile bake;
   bake.config = builtinEarthConfig();
   TextureSizes& s = bake.config.sizes;
-  s = {8, 4, 6, 3, 3, 4, 5, 2};
+  s = {8, 4, 6, 3, 3, 4, 5, 2, std::nullopt};
   bake.orders_computed = 3;
   bake.report_json = R"({"threads": 2, "note": "synthetic"})";
   BakeTables& t = bake.tables;

@@ -111,6 +111,51 @@ TEST(Config, SceneOutputsParseAndRoundTrip) {
   }
 }
 
+TEST(Config, CombinedSingleMieParsesRoundTripsAndNeedsAFreeChannel) {
+  EXPECT_FALSE(parseConfig(kMinimal, "minimal").bake.combined_single_mie);
+  // Off by default and then not written, so canonical texts stay as they were.
+  EXPECT_EQ(configToToml(parseConfig(kMinimal, "minimal")).find("combined_single_mie"), std::string::npos);
+  const std::string density = "density = [{ exp_term = 1.0, exp_scale = -1.25e-4 }]\n";
+  const std::string mie =
+      "[mie]\nscattering = [4e-6]\nextinction = [4.4e-6]\nphase_g = 0.8\n" + density + "[rayleigh]\nscattering = [1.3e-5]\n" + density;
+  const BakeConfig combined = parseConfig(kMinimal + mie + "[bake]\ncombined_single_mie = true\n", "combined");
+  EXPECT_TRUE(combined.bake.combined_single_mie);
+  EXPECT_TRUE(parseConfig(configToToml(combined), "round trip").bake.combined_single_mie);
+
+  expectRejected(kMinimal + "[bake]\ncombined_single_mie = 1\n", {"bake.combined_single_mie", "true or false"});
+  // Four wavelengths fill every channel: no room for the Mie one.
+  const std::string four = R"(
+[channels]
+wavelengths_nm = [680.0, 550.0, 440.0, 400.0]
+[planet]
+bottom_radius_m = 6360000.0
+top_radius_m = 6420000.0
+[sun]
+irradiance = [1.5, 1.8, 1.9, 1.7]
+[rayleigh]
+scattering = [5.8e-6, 1.36e-5, 3.3e-5, 4.4e-5]
+density = [{ exp_term = 1.0, exp_scale = -1.25e-4 }]
+[mie]
+scattering = [4e-6, 4e-6, 4e-6, 4e-6]
+extinction = [4.4e-6, 4.4e-6, 4.4e-6, 4.4e-6]
+phase_g = 0.8
+density = [{ exp_term = 1.0, exp_scale = -8.3e-4 }]
+[bake]
+combined_single_mie = true
+)";
+  expectRejected(four, {"bake.combined_single_mie", "at most 3 wavelengths", "has 4"});
+  // The stored channel is the first: it needs Mie and Rayleigh scattering.
+  std::string no_first = four;
+  no_first.replace(no_first.find("[680.0, 550.0, 440.0, 400.0]"), 28, "[680.0, 550.0, 440.0]");
+  no_first.replace(no_first.find("[1.5, 1.8, 1.9, 1.7]"), 20, "[1.5, 1.8, 1.9]");
+  no_first.replace(no_first.find("[5.8e-6, 1.36e-5, 3.3e-5, 4.4e-5]"), 33, "[5.8e-6, 1.36e-5, 3.3e-5]");
+  no_first.replace(no_first.find("[4e-6, 4e-6, 4e-6, 4e-6]"), 24, "[0.0, 4e-6, 4e-6]");
+  no_first.replace(no_first.find("[4.4e-6, 4.4e-6, 4.4e-6, 4.4e-6]"), 32, "[4.4e-6, 4.4e-6, 4.4e-6]");
+  expectRejected(no_first, {"bake.combined_single_mie", "first wavelength (680 nm)"});
+  // Without Mie scattering there is nothing to combine: accepted.
+  EXPECT_NO_THROW(parseConfig(kMinimal + "[bake]\ncombined_single_mie = true\n", "no mie"));
+}
+
 TEST(Config, RejectsBadSceneOutputs) {
   expectRejected(kMinimal + "[scene]\noutputs = \"sky_radiance\"\n", {"scene.outputs", "must be a list"});
   expectRejected(kMinimal + "[scene]\noutputs = [\"sky_radiance\", \"clouds\"]\n",
