@@ -230,7 +230,9 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   if (scene_domain.narrowed()) {
     const TableSampler scene_sampler(scene_domain, config.sizes);
     const StageContext scene_ctx{a, scene_sampler, progress};
-    stage.run("scene_tables", 0, 2 * rows_4d, [&] {
+    const ScatteringSizes& scene_sizes = scene_sampler.scatteringSizes();
+    // Single and multiple scattering each advance once per (r, mu) row of the scene's tables.
+    stage.run("scene_tables", 0, 2 * static_cast<size_t>(scene_sizes.r) * scene_sizes.mu, [&] {
       narrowTablesToScene(scene_ctx, sampler, optical_depth, stored_shape, tables);
     });
   }

@@ -91,7 +91,8 @@ void collectPiecewiseNodes(const StageContext& ctx, const Texture2D& optical_dep
 SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth,
                                          double r, double mu, double mu_s, double nu,
                                          bool ray_intersects_ground) {
-  const double length = distanceToAtmosphereEnd(r, mu, ctx.atmosphere.bottom_radius_m, ctx.atmosphere.top_radius_m, ray_intersects_ground);
+  const AtmosphereParameters& a = ctx.atmosphere;
+  const double length = distanceToAtmosphereEnd(r, mu, a.bottom_radius_m, a.top_radius_m, ray_intersects_ground);
   std::vector<ViewNode> nodes;
   collectPiecewiseNodes(ctx, optical_depth, r, mu, ray_intersects_ground,
                         shadowCrossings(ctx.atmosphere, r, mu, mu_s, nu, length), length, nodes);
@@ -111,8 +112,8 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
         // The row's ray and its nodes, for every sun the shadow leaves alone.
         const ScatteringTexelConfig row = scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, 0, 0);
-        const double length = distanceToAtmosphereEnd(row.r, row.mu, ctx.atmosphere.bottom_radius_m, ctx.atmosphere.top_radius_m,
-                                                    row.ray_intersects_ground);
+        const double length = distanceToAtmosphereEnd(row.r, row.mu, ctx.atmosphere.bottom_radius_m,
+                                                      ctx.atmosphere.top_radius_m, row.ray_intersects_ground);
         whole_ray.clear();
         collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, 0.0, length, whole_ray);
         for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {

@@ -67,13 +67,11 @@ AtmosphereDomain AtmosphereDomain::fromConfig(const BakeConfig& config) {
 }
 
 double muSFromUnitCoord(const AtmosphereDomain& d, double x) {
-  const double H = d.horizonToTopDistance();
-  const double d_min = d.top_radius_m - d.bottom_radius_m;
-  const double d_max = H;
-  const double A = (distanceToOuterSphere(d.bottom_radius_m, d.mu_s_min, d.top_radius_m) - d_min) /
-                   (d_max - d_min);
+  const MuSDistanceRange range = MuSDistanceRange::of(d);
+  const double A = range.fraction(d, d.mu_s_min);
   const double a = (A - x * A) / (1.0 + x * A);
-  const double dist = d_min + std::min(a, A) * (d_max - d_min);
+  const double dist = range.d_min + std::min(a, A) * (range.d_max - range.d_min);
+  const double H = range.d_max;
   return dist == 0.0 ? 1.0 : clampCosine((H * H - dist * dist) / (2.0 * d.bottom_radius_m * dist));
 }
 

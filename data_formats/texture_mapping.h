@@ -126,18 +126,27 @@ struct ScatteringSizes {
   }
 };
 
+// The distance from the ground to the top toward a sun, as a fraction of its
+// range (a; d_min straight up, d_max = H along the horizon).
+struct MuSDistanceRange {
+  double d_min;
+  double d_max;
+  double fraction(const AtmosphereDomain& d, double mu_s) const {
+    return (distanceToOuterSphere(d.bottom_radius_m, mu_s, d.top_radius_m) - d_min) / (d_max - d_min);
+  }
+  static MuSDistanceRange of(const AtmosphereDomain& d) {
+    return {d.top_radius_m - d.bottom_radius_m, d.horizonToTopDistance()};
+  }
+};
+
 // The sun coordinate over the whole sun range: 1 at the zenith, 0 at
 // mu_s_min. a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) / (1 + a)
 // compresses the high sun and spreads the horizon, where the sky changes
 // fastest.
 inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) {
-  const double H = d.horizonToTopDistance();
-  const double d_min = d.top_radius_m - d.bottom_radius_m;
-  const double d_max = H;
-  const double a = (distanceToOuterSphere(d.bottom_radius_m, mu_s, d.top_radius_m) - d_min) /
-                   (d_max - d_min);
-  const double A = (distanceToOuterSphere(d.bottom_radius_m, d.mu_s_min, d.top_radius_m) - d_min) /
-                   (d_max - d_min);
+  const MuSDistanceRange range = MuSDistanceRange::of(d);
+  const double a = range.fraction(d, mu_s);
+  const double A = range.fraction(d, d.mu_s_min);
   return A > 0.0 ? std::max(1.0 - a / A, 0.0) / (1.0 + a) : 0.0;
 }
 

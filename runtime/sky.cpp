@@ -1,5 +1,6 @@
 #include "runtime/sky.h"
 
+#include <algorithm>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -72,12 +73,14 @@ BakedRanges bakedRangesOf(const AtmosphereDomain& d, double sun_max_zenith_deg) 
           high_m >= thickness_m - kRangeAltitudeTolerance_m ? std::numeric_limits<double>::infinity() : high_m,
           d.scattering_mu_s_coord_max >= 1.0 ? 0.0 : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_max)),
           d.scattering_mu_s_coord_min <= 0.0 ? sun_max_zenith_deg
-                                             : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_min))};
+                                             : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_min)),
+          thickness_m};
 }
 
 }  // namespace
 
 bool BakedRanges::containsAltitude(double altitude_m) const {
+  altitude_m = std::min(altitude_m, atmosphere_top_m);
   return altitude_m >= altitude_min_m - kRangeAltitudeTolerance_m &&
          altitude_m <= altitude_max_m + kRangeAltitudeTolerance_m;
 }

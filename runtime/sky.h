@@ -44,6 +44,9 @@ struct BakedRanges {
   double altitude_max_m;
   double sun_zenith_min_deg;
   double sun_zenith_max_deg;
+  double atmosphere_top_m;  // above the ground
+  // Altitudes above the atmosphere count as its top, where a camera in space
+  // is looked up (its rays enter there).
   bool containsAltitude(double altitude_m) const;
   bool containsSunZenith(double sun_zenith_deg) const;
   bool contains(double altitude_m, double sun_zenith_deg) const {

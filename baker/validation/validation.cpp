@@ -145,12 +145,9 @@ QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string&
       continue;
     }
     const QueryGeometry g = geometryOf(a, q);
-    // A camera in space is looked up where its ray enters, at the top.
-    const double thickness_m = a.top_radius_m - a.bottom_radius_m;
     const double point_altitude_m =
         q.distance_m > 0.0 ? glm::length(g.camera + g.view * q.distance_m) - a.bottom_radius_m : q.altitude_m;
-    if (!ranges.contains(std::min(q.altitude_m, thickness_m), q.sun_zenith_deg) ||
-        !ranges.containsAltitude(std::min(point_altitude_m, thickness_m))) {
+    if (!ranges.contains(q.altitude_m, q.sun_zenith_deg) || !ranges.containsAltitude(point_altitude_m)) {
       ++outside;
       continue;
     }
