@@ -1,5 +1,6 @@
 // Bake file writer. OpenEXR writes straight from the tables' float4 storage
 // (a stride of one Spectrum per texel), converting to half on request.
+#include <algorithm>
 #include <string_view>
 #include <vector>
 
@@ -169,8 +170,10 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
        t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
   };
   if (bakeStoresCombinedSingleMie(bake.config)) {
-    parts[1].extra_channel = combinedSingleMieChannelName(bake.config.atmosphere);
-    parts[1].extra_texels = &t.single_mie.texels;
+    auto is_rayleigh = [](const PartToWrite& p) { return p.name == std::string_view(kPartSingleRayleigh); };
+    PartToWrite& rayleigh = *std::find_if(parts.begin(), parts.end(), is_rayleigh);
+    rayleigh.extra_channel = combinedSingleMieChannelName(bake.config.atmosphere);
+    rayleigh.extra_texels = &t.single_mie.texels;
   }
   std::erase_if(parts, [&](const PartToWrite& p) { return leavesOut(bake.config, p.name); });
   for (const PartToWrite& part : parts) {
