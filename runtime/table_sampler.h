@@ -92,6 +92,20 @@ inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w, Blend
 // The blend for a radiance lookup with the sun at zenith cosine mu_s.
 inline Blend radianceBlend(double mu_s) { return mu_s < 0.0 ? Blend::GeometricWhereSteep : Blend::Linear; }
 
+// One nu slice of a quadrilinear lookup: trilinear in (mu_s, mu, r), mu_s
+// blended as `blend` says. Callers that look up many nu at one (r, mu, mu_s)
+// interpolate every slice once and blend across nu themselves.
+template <Blend blend = Blend::Linear>
+inline Spectrum sampleNuSlice(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu, const AxisLerp& mu_s,
+                              int i_nu) {
+  auto row = [&](int i_r, int i_mu) {
+    return blendAcross<blend>(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
+  };
+  const Spectrum r0 = row(r.i0, mu.i0) + (row(r.i0, mu.i1) - row(r.i0, mu.i0)) * mu.w1;
+  const Spectrum r1 = row(r.i1, mu.i0) + (row(r.i1, mu.i1) - row(r.i1, mu.i0)) * mu.w1;
+  return r0 + (r1 - r0) * r.w1;
+}
+
 // Quadrilinear lookup: trilinear in (mu_s, mu, r) within the two nearest nu
 // slices, then across nu; mu_s and nu blended as `blend` says (a template
 // argument, so the bake's linear lookups carry no branch).
@@ -100,15 +114,8 @@ inline Blend radianceBlend(double mu_s) { return mu_s < 0.0 ? Blend::GeometricWh
 template <Blend blend = Blend::Linear>
 inline Spectrum sample4D(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu, const AxisLerp& mu_s,
                          const AxisLerp& nu) {
-  auto slice = [&](int i_nu) {
-    auto row = [&](int i_r, int i_mu) {
-      return blendAcross<blend>(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
-    };
-    const Spectrum r0 = row(r.i0, mu.i0) + (row(r.i0, mu.i1) - row(r.i0, mu.i0)) * mu.w1;
-    const Spectrum r1 = row(r.i1, mu.i0) + (row(r.i1, mu.i1) - row(r.i1, mu.i0)) * mu.w1;
-    return r0 + (r1 - r0) * r.w1;
-  };
-  return blendAcross<blend>(slice(nu.i0), slice(nu.i1), nu.w1);
+  return blendAcross<blend>(sampleNuSlice<blend>(t, r, mu, mu_s, nu.i0), sampleNuSlice<blend>(t, r, mu, mu_s, nu.i1),
+                            nu.w1);
 }
 
 template <Blend blend = Blend::Linear>
