@@ -9,6 +9,7 @@
 
 #include "baker/order_shapes.h"
 #include "baker/scene_tables.h"
+#include "baker/scattering_density_kernel.h"
 #include "baker/stages.h"
 
 #include <fmt/format.h>
@@ -187,12 +188,16 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   report.orders_decision.automatic = settings.auto_orders;
   report.orders_decision.tolerance = settings.auto_orders ? settings.order_tolerance : 0.0;
   report.orders_decision.cap = settings.auto_orders ? settings.max_orders : 0;
+  std::optional<ScatteringDensityKernel> density_kernel;
+  if (last_order >= 2) {
+    density_kernel = stage.run("density_kernel", 0, s.r, [&] { return makeScatteringDensityKernel(ctx, optical_depth); });
+  }
   for (int order = 2; order <= last_order; ++order) {
     const MultipleScatteringPhase order_shape(a, order);
     const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple,
                                  previous_shape ? *previous_shape : stored_shape};
     const Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
-      return computeScatteringDensityTable(ctx, optical_depth, previous, order_shape, delta_irradiance);
+      return computeScatteringDensityTable(ctx, *density_kernel, previous, order_shape, delta_irradiance);
     });
     addReshaped(sampler, TexelLayout::Density, density, order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_density);

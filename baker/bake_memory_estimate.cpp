@@ -4,6 +4,7 @@
 #include <initializer_list>
 #include <limits>
 
+#include "baker/scattering_density_kernel.h"
 #include "data_formats/spectrum.h"
 #include "data_formats/texture_mapping.h"
 
@@ -57,16 +58,21 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   };
   // The orders iterate on the whole domain's tables; a narrowing scene then
   // builds its 4 stored tables beside them.
-  const uint64_t iteration_bytes = table4DBytes(iterationTextureSizes(config));
+  const TextureSizes iteration = iterationTextureSizes(config);
+  const uint64_t iteration_bytes = table4DBytes(iteration);
   const uint64_t stored_bytes = table4DBytes(s);
   const bool narrowed = AtmosphereDomain::fromConfig(config).narrowed();
   e.table_4d_bytes = std::max(iteration_bytes, stored_bytes);
-  e.tables_4d_at_peak = tables4DAtPeak(config.bake.auto_orders ? config.bake.max_orders : config.bake.orders) +
-                        (narrowed ? 4 : 0);
+  const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
+  e.tables_4d_at_peak = tables4DAtPeak(orders) + (narrowed ? 4 : 0);
+  // Alive from before order 2 to the end of the order loop.
+  e.density_kernel_bytes =
+      orders >= 2 ? product({axis(iteration.scattering_r), axis(iteration.scattering_mu), kDensityKernelBytesPerRMu})
+                  : 0;
   // 2D: the transmittance table, the summed sky irradiance, and the last
   // order's irradiance beside the one being computed.
   e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), transmittance,
-                      product({3, irradiance})});
+                      product({3, irradiance}), e.density_kernel_bytes});
   // The file's tables: single Rayleigh, single Mie, multiple scattering,
   // multiple-scattering density, transmittance and irradiance.
   e.kept_bytes = sum({product({4, stored_bytes}), transmittance, irradiance});

@@ -80,9 +80,10 @@ class OrderRadianceAlongNu {
 // density depends on the direction only and has no horizon split, and a
 // second evaluation on the scattering table's texels (Bruneton's mu) changed
 // no validated figure by more than 0.11 point while doubling this stage.
-Texture4D computeScatteringDensityTable(const StageContext& ctx, const Texture2D& optical_depth,
-                                                const OrderRadiance& previous, const MultipleScatteringPhase& shape,
-                                                const Texture2D& ground_irradiance);
+struct ScatteringDensityKernel;  // baker/scattering_density_kernel.h: built once per bake
+Texture4D computeScatteringDensityTable(const StageContext& ctx, const ScatteringDensityKernel& kernel,
+                                        const OrderRadiance& previous, const MultipleScatteringPhase& shape,
+                                        const Texture2D& ground_irradiance);
 
 // Irradiance on a horizontal surface from the sky radiance of one order.
 Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const OrderRadiance& order);

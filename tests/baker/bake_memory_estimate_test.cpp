@@ -27,10 +27,14 @@ TEST(BakeMemoryEstimate, CountsEveryTableAliveAtThePeak) {
   const BakeMemoryEstimate three = estimateBakeMemory(config);
   EXPECT_EQ(three.table_4d_bytes, table_4d);
   EXPECT_EQ(three.tables_4d_at_peak, 8);
-  EXPECT_EQ(three.peak_bytes, 8 * table_4d + 64 * 16 * texel + 3 * 16 * 8 * texel);
+  // The density stage's kernel: 32 zenith nodes x 35 azimuthal modes of 4 bytes per (r, mu).
+  const uint64_t kernel = 8 * 32 * 32 * 35 * 4;
+  EXPECT_EQ(three.density_kernel_bytes, kernel);
+  EXPECT_EQ(three.peak_bytes, 8 * table_4d + 64 * 16 * texel + 3 * 16 * 8 * texel + kernel);
   EXPECT_EQ(three.kept_bytes, 4 * table_4d + 64 * 16 * texel + 16 * 8 * texel);
   config.bake.orders = 1;
   EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 4);
+  EXPECT_EQ(estimateBakeMemory(config).density_kernel_bytes, 0u);  // one order needs no density
   config.bake.orders = 2;
   EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 7);
   // Automatic orders may run to the cap.
@@ -53,7 +57,8 @@ TEST(BakeMemoryEstimate, SaturatesInsteadOfWrappingRound) {
 // large was freed in between, so that is about the resident memory then).
 // The estimate counts table texels only. The growth also holds the 2 worker
 // threads' stacks, OpenMP's pool and the allocator's rounding of each table
-// to whole pages: about 0.5 MiB, 6 % of the 9 MiB of tables here. A factor
+// to whole pages: about 0.5 MiB, 5 % of the 11 MiB of tables and density
+// kernel here. A factor
 // of 1.15 allows that, and fails when the bake keeps one table more alive at
 // its peak than the estimate counts (+11 % on top): an estimate that is too
 // low would let through bakes that do not fit.

@@ -1,0 +1,121 @@
+#include "baker/scattering_density_kernel.h"
+
+#include <omp.h>
+
+#include <array>
+#include <cmath>
+
+#include "baker/gauss_legendre.h"
+
+namespace skybake {
+namespace {
+
+// Azimuths at which each phase function is sampled for its Fourier modes:
+// 4 per mode kept, so modes up to kAzimuthModes alias only with modes above
+// 3 kAzimuthModes (Earth's Mie peak: 0.8^96 ~ 5e-10 of the mean).
+constexpr int kPhaseTransformAzimuths = 4 * kAzimuthModes;
+
+// Gauss-Legendre nodes in theta on the sky side [0, horizon] and on the
+// ground side [horizon, pi], half on each. The incident radiance jumps at
+// the horizon (sky to lit ground) and peaks on both sides of it, where
+// paths through the air are longest; a grid that straddles the horizon
+// smears that peak, and in twilight, when the light reaching a point comes
+// mostly from the horizon toward the sun, that was the largest error of the
+// bake (twilight sky 7.7 % RMS at 440 nm with a 32-cell uniform grid, 5.2 %
+// with these nodes; day sky 0.61 to 0.54 %; 48 nodes change neither by more
+// than 0.2 points).
+std::vector<IncidentZenithNode> zenithNodes(const StageContext& ctx, const Texture2D& optical_depth, double r) {
+  static const GaussLegendreRule rule = gaussLegendreRule(kDensityZenithNodes / 2);
+  const AtmosphereParameters& a = ctx.atmosphere;
+  const double horizon_theta = std::acos(tangentZenithCosine(r, a.bottom_radius_m));
+  const double d_phi = 2.0 * kPi / kDensityAzimuths;
+  std::vector<IncidentZenithNode> nodes;
+  for (const auto& [from, to] : {std::pair{0.0, horizon_theta}, std::pair{horizon_theta, kPi}}) {
+    forEachGaussLegendreNode(rule, from, to, [&](double theta, double weight) {
+      IncidentZenithNode n;
+      n.cos_theta = std::cos(theta);
+      n.sin_theta = std::sin(theta);
+      n.solid_angle_sr = n.sin_theta * weight * d_phi;
+      n.hits_ground = rayIntersectsSphere(r, n.cos_theta, a.bottom_radius_m);
+      if (n.hits_ground) {
+        const double d = distanceToInnerSphere(r, n.cos_theta, a.bottom_radius_m);
+        n.ground_transmittance =
+            glm::exp(-ctx.sampler.opticalDepthAlongRay(optical_depth, r, n.cos_theta, d, true));
+        const double horizontal = n.sin_theta * d, vertical = r + n.cos_theta * d;
+        const double length = std::sqrt(horizontal * horizontal + vertical * vertical);
+        n.ground_up_horizontal = horizontal / length;
+        n.ground_up_vertical = vertical / length;
+      }
+      nodes.push_back(n);
+    });
+  }
+  return nodes;
+}
+
+// cos(m * 2 pi k / kPhaseTransformAzimuths) for k = 0 .. half the circle.
+struct TransformCosines {
+  std::array<std::array<double, kAzimuthModes>, kPhaseTransformAzimuths / 2 + 1> value;
+  TransformCosines() {
+    for (size_t k = 0; k < value.size(); ++k) {
+      for (int m = 0; m < kAzimuthModes; ++m) value[k][m] = std::cos(m * 2.0 * kPi * k / kPhaseTransformAzimuths);
+    }
+  }
+};
+
+// Cosine modes c_m of an even function of azimuth f(phi) = sum_m c_m cos(m phi),
+// from its samples at k 2 pi / N, k = 0 .. N / 2 (the other half mirrors).
+void cosineModes(const std::array<double, kPhaseTransformAzimuths / 2 + 1>& samples, const TransformCosines& cosines,
+                 float* modes) {
+  std::array<double, kAzimuthModes> sum{};
+  for (size_t k = 0; k < samples.size(); ++k) {
+    const double weight = (k == 0 || k + 1 == samples.size()) ? samples[k] : 2.0 * samples[k];
+    for (int m = 0; m < kAzimuthModes; ++m) sum[m] += weight * cosines.value[k][m];
+  }
+  for (int m = 0; m < kAzimuthModes; ++m) {
+    modes[m] = static_cast<float>(sum[m] * (m == 0 ? 1.0 : 2.0) / kPhaseTransformAzimuths);
+  }
+}
+
+}  // namespace
+
+ScatteringDensityKernel makeScatteringDensityKernel(const StageContext& ctx, const Texture2D& optical_depth) {
+  const ScatteringSizes& s = ctx.sampler.scatteringSizes();
+  const double g = ctx.atmosphere.mie_phase_g;
+  static const TransformCosines cosines;
+  ScatteringDensityKernel kernel;
+  kernel.altitudes.resize(s.r);
+#pragma omp parallel for schedule(dynamic)
+  for (int i_r = 0; i_r < s.r; ++i_r) {
+    DensityKernelAltitude& k = kernel.altitudes[i_r];
+    k.nodes = zenithNodes(ctx, optical_depth, rFromScatteringTexel(ctx.sampler.domain(), s, i_r));
+    k.rayleigh_modes.resize(static_cast<size_t>(s.mu) * kDensityZenithNodes * kRayleighAzimuthModes);
+    k.mie_modes.resize(static_cast<size_t>(s.mu) * kDensityZenithNodes * kAzimuthModes);
+    std::array<double, kPhaseTransformAzimuths / 2 + 1> mie_shape{};
+    for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
+      const double view_cos = muFromDensityTexel(i_mu, s.mu);
+      const double view_sin = safeSqrt(1.0 - view_cos * view_cos);
+      for (int i = 0; i < kDensityZenithNodes; ++i) {
+        // cos(angle) = a + b cos(azimuth difference).
+        const double a = view_cos * k.nodes[i].cos_theta;
+        const double b = view_sin * k.nodes[i].sin_theta;
+        const size_t pair = static_cast<size_t>(i_mu) * kDensityZenithNodes + i;
+        // Rayleigh: 1 + (a + b cos)^2 = 1 + a^2 + b^2 / 2 + 2 a b cos + b^2 / 2 cos 2.
+        float* rayleigh = &k.rayleigh_modes[pair * kRayleighAzimuthModes];
+        rayleigh[0] = static_cast<float>(1.0 + a * a + 0.5 * b * b);
+        rayleigh[1] = static_cast<float>(2.0 * a * b);
+        rayleigh[2] = static_cast<float>(0.5 * b * b);
+        // Cornette-Shanks without its normalisation: (1 + x^2) / (1 + g^2 - 2 g x)^1.5.
+        for (size_t j = 0; j < mie_shape.size(); ++j) {
+          const double x = a + b * cosines.value[j][1];
+          const double base = 1.0 + g * g - 2.0 * g * x;
+          mie_shape[j] = (1.0 + x * x) / (base * std::sqrt(base));
+        }
+        cosineModes(mie_shape, cosines, &k.mie_modes[pair * kAzimuthModes]);
+      }
+    }
+    ctx.progress.advance(1);
+  }
+  return kernel;
+}
+
+}  // namespace skybake
