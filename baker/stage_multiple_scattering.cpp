@@ -11,7 +11,7 @@ namespace {
 
 // Same ray rule as single scattering: the density falls off with the
 // constituents' scale heights, like the single-scattering integrand.
-constexpr int kMultipleScatteringSegments = 16;
+constexpr int kMultipleScatteringSegments = 8;
 
 // A quadrature node on a view ray and what along the ray does not depend on
 // the sun: shared by every (mu_s, nu) texel of the ray's (r, mu).
@@ -80,6 +80,32 @@ Spectrum samplePlane(const std::vector<Spectrum>& plane, int nu_size, const Axis
   return a + (b - a) * nu.w1;
 }
 
+// A sun texel of an (r, mu) row. Slices whose nu, clamped to what the row's
+// mu and the texel's mu_s allow, equals the slice before's are the same
+// texel: integrated once, stored into slices first_nu .. last_nu.
+struct RowTexel {
+  int i_mu_s, first_nu, last_nu;
+  double mu_s, nu;
+  AxisLerp density_nu;  // nu is constant along a straight ray: so is its interpolation
+  double peak;          // of the order's multiple-scattering shape at nu
+};
+
+void collectRowTexels(const ScatteringSizes& s, const std::vector<double>& texel_mu_s, int density_nu_size,
+                      const MultipleScatteringPhase& shape, double mu, std::vector<RowTexel>& texels) {
+  texels.clear();
+  for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+    const double mu_s = texel_mu_s[i_mu_s];
+    for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
+      const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), mu, mu_s);
+      if (i_nu > 0 && nu == texels.back().nu) {
+        texels.back().last_nu = i_nu;
+        continue;
+      }
+      texels.push_back({i_mu_s, i_nu, i_nu, mu_s, nu, axisLerpNu((nu + 1.0) * 0.5, density_nu_size), shape.peakAt(nu)});
+    }
+  }
+}
+
 }  // namespace
 
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
@@ -93,11 +119,22 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
   const TableSampler& sampler = ctx.sampler;
   const ScatteringSizes& s = sampler.scatteringSizes();
   const ScatteringSizes& density_sizes = density_sampler.scatteringSizes();
+  const ScatteringMuSCoordMap density_mu_s_coord =
+      ScatteringMuSCoordMap::of(density_sampler.domain(), density_sizes.mu_s);
+  std::vector<double> texel_mu_s(s.mu_s);
+  for (int i = 0; i < s.mu_s; ++i) texel_mu_s[i] = muSFromScatteringTexel(sampler.domain(), s, i);
+  constexpr double kBroad = MultipleScatteringPhase::kBroad;
   Texture4D table(s.r, s.mu, s.mu_s, s.nu);
 #pragma omp parallel
   {
     std::vector<RayNode> nodes;
     std::vector<std::vector<Spectrum>> planes;  // one per node
+    std::vector<RowTexel> texels;
+    // Per texel, the density integrated along the ray times the broad and
+    // the peaked part of the shape at each node: the shape at the node is
+    // kBroad + w (peak - kBroad), so the integral with it is
+    // kBroad * broad + (peak - kBroad) * peaked.
+    std::vector<Spectrum> broad, peaked;
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
@@ -105,36 +142,33 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
         collectRayNodes(ctx, optical_depth, density_sampler, shape, row, nodes);
         if (planes.size() < nodes.size()) planes.resize(nodes.size());
         for (size_t k = 0; k < nodes.size(); ++k) interpolateAtNode(density, nodes[k], planes[k]);
-        const SpectrumD texel_peak_weight = shape.peakWeightAt(row.r - ctx.atmosphere.bottom_radius_m);
-        for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
-          // Slices clamped to the same end of the nu range are the same
-          // texel: integrated once.
-          double last_nu = 2.0;  // no nu
-          for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-            const ScatteringTexelConfig c = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
-            if (c.nu == last_nu) {
-              table.at(i_r, i_mu, i_mu_s, i_nu) = table.at(i_r, i_mu, i_mu_s, i_nu - 1);
-              continue;
-            }
-            last_nu = c.nu;
-            // nu is constant along a straight ray: its interpolation is too.
-            const AxisLerp nu_lerp = axisLerpNu((c.nu + 1.0) * 0.5, density_sizes.nu);
-            // The density is stored divided by the shape at its texels: the
-            // shape at each node gives it back, the shape at this texel
-            // divides the result for storage.
-            const double peak = shape.peakAt(c.nu);
-            Spectrum sum(0.0f);
-            for (size_t k = 0; k < nodes.size(); ++k) {
-              const RayNode& n = nodes[k];
-              const double mu_s_t = clampCosine((c.r * c.mu_s + n.t * c.nu) / n.r);
-              const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(
-                  scatteringCoordMuS(density_sampler.domain(), density_sizes.mu_s, mu_s_t), density_sizes.mu_s);
-              sum += samplePlane(planes[k], density_sizes.nu, mu_s_lerp, nu_lerp) *
-                     MultipleScatteringPhase::withPeak(n.peak_weight, peak) *
-                     n.transmittance * static_cast<float>(n.weight);
-            }
-            table.at(i_r, i_mu, i_mu_s, i_nu) = sum / MultipleScatteringPhase::withPeak(texel_peak_weight, peak);
+        collectRowTexels(s, texel_mu_s, density_sizes.nu, shape, row.mu, texels);
+        broad.assign(texels.size(), Spectrum(0.0f));
+        peaked.assign(texels.size(), Spectrum(0.0f));
+        for (size_t k = 0; k < nodes.size(); ++k) {
+          const RayNode& n = nodes[k];
+          const Spectrum light = n.transmittance * static_cast<float>(n.weight);
+          const Spectrum light_peaked = light * Spectrum(n.peak_weight);
+          const std::vector<Spectrum>& plane = planes[k];
+          for (size_t i = 0; i < texels.size(); ++i) {
+            const RowTexel& texel = texels[i];
+            const double mu_s_at_node = clampCosine((row.r * texel.mu_s + n.t * texel.nu) / n.r);
+            const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(density_mu_s_coord(mu_s_at_node), density_sizes.mu_s);
+            const Spectrum value = samplePlane(plane, density_sizes.nu, mu_s_lerp, texel.density_nu);
+            broad[i] += value * light;
+            peaked[i] += value * light_peaked;
           }
+        }
+        // The density is stored divided by the shape at its texels: the
+        // shape at each node gave it back, the shape at this texel divides
+        // the result for storage.
+        const SpectrumD texel_peak_weight = shape.peakWeightAt(row.r - ctx.atmosphere.bottom_radius_m);
+        for (size_t i = 0; i < texels.size(); ++i) {
+          const RowTexel& texel = texels[i];
+          const Spectrum value =
+              (broad[i] * static_cast<float>(kBroad) + peaked[i] * static_cast<float>(texel.peak - kBroad)) /
+              MultipleScatteringPhase::withPeak(texel_peak_weight, texel.peak);
+          for (int i_nu = texel.first_nu; i_nu <= texel.last_nu; ++i_nu) table.at(i_r, i_mu, texel.i_mu_s, i_nu) = value;
         }
         ctx.progress.advance(1);
       }

@@ -143,21 +143,43 @@ struct MuSDistanceRange {
 // mu_s_min. a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) / (1 + a)
 // compresses the high sun and spreads the horizon, where the sky changes
 // fastest.
-inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) {
-  const MuSDistanceRange range = MuSDistanceRange::of(d);
-  const double a = range.fraction(d, mu_s);
-  const double A = range.fraction(d, d.mu_s_min);
-  return A > 0.0 ? std::max(1.0 - a / A, 0.0) / (1.0 + a) : 0.0;
-}
+// The same with the domain's constants worked out once, for loops over many
+// suns (the same value as muSUnitCoord).
+struct MuSUnitCoordMap {
+  const AtmosphereDomain* domain;
+  MuSDistanceRange range;
+  double A;
+  static MuSUnitCoordMap of(const AtmosphereDomain& d) {
+    const MuSDistanceRange range = MuSDistanceRange::of(d);
+    return {&d, range, range.fraction(d, d.mu_s_min)};
+  }
+  double operator()(double mu_s) const {
+    const double a = range.fraction(*domain, mu_s);
+    return A > 0.0 ? std::max(1.0 - a / A, 0.0) / (1.0 + a) : 0.0;
+  }
+};
+inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) { return MuSUnitCoordMap::of(d)(mu_s); }
 
 // The sun at unit coordinate x (the inverse of muSUnitCoord).
 double muSFromUnitCoord(const AtmosphereDomain& d, double x);
 
 // The 4D tables' mu_s texture coordinate: the unit coordinate over the
 // tables' sun range (outside it the lookup clamps to the range's ends).
+// The same with the domain's constants worked out once (see MuSUnitCoordMap).
+struct ScatteringMuSCoordMap {
+  MuSUnitCoordMap unit;
+  int size_mu_s;
+  static ScatteringMuSCoordMap of(const AtmosphereDomain& d, int size_mu_s) {
+    return {MuSUnitCoordMap::of(d), size_mu_s};
+  }
+  double operator()(double mu_s) const {
+    const AtmosphereDomain& d = *unit.domain;
+    return textureCoordFromUnitRange(
+        fractionOfRange(unit(mu_s), d.scattering_mu_s_coord_min, d.scattering_mu_s_coord_max), size_mu_s);
+  }
+};
 inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, double mu_s) {
-  return textureCoordFromUnitRange(
-      fractionOfRange(muSUnitCoord(d, mu_s), d.scattering_mu_s_coord_min, d.scattering_mu_s_coord_max), size_mu_s);
+  return ScatteringMuSCoordMap::of(d, size_mu_s)(mu_s);
 }
 
 // The 4D tables' r texture coordinate: rho over the tables' altitude range.

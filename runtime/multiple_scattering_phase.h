@@ -121,9 +121,10 @@ class MultipleScatteringPhase {
   // The same in two steps, for loops where nu is fixed and the weight varies.
   double peakAt(double nu) const { return cornetteShanksPhase(g_, nu); }
   static Spectrum withPeak(const SpectrumD& peak_weight, double peak) {
-    constexpr double kBroad = 1.0 / (4.0 * kPi);
     return Spectrum(kBroad + peak_weight * (peak - kBroad));
   }
+  // The broad part: isotropic, sr^-1.
+  static constexpr double kBroad = 1.0 / (4.0 * kPi);
 
   Spectrum operator()(double altitude_m, double nu) const { return (*this)(peakWeightAt(altitude_m), nu); }
 
