@@ -135,6 +135,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
     // kBroad + w (peak - kBroad), so the integral with it is
     // kBroad * broad + (peak - kBroad) * peaked.
     std::vector<Spectrum> broad, peaked;
+    std::vector<double> texel_mu_s_cos, texel_nu, mu_s_position;  // per texel: the sun, and its coordinate at a node
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
@@ -143,17 +144,31 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
         if (planes.size() < nodes.size()) planes.resize(nodes.size());
         for (size_t k = 0; k < nodes.size(); ++k) interpolateAtNode(density, nodes[k], planes[k]);
         collectRowTexels(s, texel_mu_s, density_sizes.nu, shape, row.mu, texels);
-        broad.assign(texels.size(), Spectrum(0.0f));
-        peaked.assign(texels.size(), Spectrum(0.0f));
+        const size_t texel_count = texels.size();
+        broad.assign(texel_count, Spectrum(0.0f));
+        peaked.assign(texel_count, Spectrum(0.0f));
+        texel_mu_s_cos.resize(texel_count);
+        texel_nu.resize(texel_count);
+        mu_s_position.resize(texel_count);
+        for (size_t i = 0; i < texel_count; ++i) {
+          texel_mu_s_cos[i] = texels[i].mu_s;
+          texel_nu[i] = texels[i].nu;
+        }
         for (size_t k = 0; k < nodes.size(); ++k) {
           const RayNode& n = nodes[k];
           const Spectrum light = n.transmittance * static_cast<float>(n.weight);
           const Spectrum light_peaked = light * Spectrum(n.peak_weight);
           const std::vector<Spectrum>& plane = planes[k];
-          for (size_t i = 0; i < texels.size(); ++i) {
+          // The sun's coordinate at the node for every texel first: a loop
+          // without table reads, which vectorizes.
+#pragma omp simd
+          for (size_t i = 0; i < texel_count; ++i) {
+            const double mu_s_at_node = clampCosine((row.r * texel_mu_s_cos[i] + n.t * texel_nu[i]) / n.r);
+            mu_s_position[i] = density_mu_s_coord(mu_s_at_node);
+          }
+          for (size_t i = 0; i < texel_count; ++i) {
             const RowTexel& texel = texels[i];
-            const double mu_s_at_node = clampCosine((row.r * texel.mu_s + n.t * texel.nu) / n.r);
-            const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(density_mu_s_coord(mu_s_at_node), density_sizes.mu_s);
+            const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(mu_s_position[i], density_sizes.mu_s);
             const Spectrum value = samplePlane(plane, density_sizes.nu, mu_s_lerp, texel.density_nu);
             broad[i] += value * light;
             peaked[i] += value * light_peaked;

@@ -143,19 +143,22 @@ struct MuSDistanceRange {
 // mu_s_min. a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) / (1 + a)
 // compresses the high sun and spreads the horizon, where the sky changes
 // fastest.
-// The same with the domain's constants worked out once, for loops over many
-// suns (the same value as muSUnitCoord).
+// muSUnitCoord with the domain's constants worked out once and no branch, so
+// that loops over many suns vectorize.
 struct MuSUnitCoordMap {
-  const AtmosphereDomain* domain;
-  MuSDistanceRange range;
-  double A;
+  double bottom_radius_m, top_radius_m;
+  double d_min, inverse_d_span;
+  double inverse_A;
+  double defined;  // 1, or 0 where the sun range is empty (A = 0): every coordinate is 0 then
   static MuSUnitCoordMap of(const AtmosphereDomain& d) {
     const MuSDistanceRange range = MuSDistanceRange::of(d);
-    return {&d, range, range.fraction(d, d.mu_s_min)};
+    const double A = range.fraction(d, d.mu_s_min);
+    return {d.bottom_radius_m, d.top_radius_m, range.d_min, 1.0 / (range.d_max - range.d_min),
+            A > 0.0 ? 1.0 / A : 0.0, A > 0.0 ? 1.0 : 0.0};
   }
   double operator()(double mu_s) const {
-    const double a = range.fraction(*domain, mu_s);
-    return A > 0.0 ? std::max(1.0 - a / A, 0.0) / (1.0 + a) : 0.0;
+    const double a = (distanceToOuterSphere(bottom_radius_m, mu_s, top_radius_m) - d_min) * inverse_d_span;
+    return defined * std::max(1.0 - a * inverse_A, 0.0) / (1.0 + a);
   }
 };
 inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) { return MuSUnitCoordMap::of(d)(mu_s); }
@@ -165,17 +168,18 @@ double muSFromUnitCoord(const AtmosphereDomain& d, double x);
 
 // The 4D tables' mu_s texture coordinate: the unit coordinate over the
 // tables' sun range (outside it the lookup clamps to the range's ends).
-// The same with the domain's constants worked out once (see MuSUnitCoordMap).
+// scatteringCoordMuS with the domain's constants worked out once (see
+// MuSUnitCoordMap).
 struct ScatteringMuSCoordMap {
   MuSUnitCoordMap unit;
+  double coord_min, inverse_coord_span;  // 0 where the range is a point (see fractionOfRange)
   int size_mu_s;
   static ScatteringMuSCoordMap of(const AtmosphereDomain& d, int size_mu_s) {
-    return {MuSUnitCoordMap::of(d), size_mu_s};
+    const double span = d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min;
+    return {MuSUnitCoordMap::of(d), d.scattering_mu_s_coord_min, span > 0.0 ? 1.0 / span : 0.0, size_mu_s};
   }
   double operator()(double mu_s) const {
-    const AtmosphereDomain& d = *unit.domain;
-    return textureCoordFromUnitRange(
-        fractionOfRange(unit(mu_s), d.scattering_mu_s_coord_min, d.scattering_mu_s_coord_max), size_mu_s);
+    return textureCoordFromUnitRange((unit(mu_s) - coord_min) * inverse_coord_span, size_mu_s);
   }
 };
 inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, double mu_s) {
