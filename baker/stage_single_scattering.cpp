@@ -6,6 +6,7 @@
 #include "runtime/atmosphere_media.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
+#include "baker/vector_exp.h"
 #include "baker/stages.h"
 
 namespace skybake {
@@ -51,20 +52,61 @@ void collectViewNodes(const StageContext& ctx, const Texture2D& optical_depth, d
       });
 }
 
-// Single scattering from the nodes of one view ray, the sun at (mu_s, nu).
-SingleScattering sumOverNodes(const StageContext& ctx, const Texture2D& optical_depth,
-                              const std::vector<ViewNode>& nodes, double r, double mu_s, double nu) {
-  const AtmosphereParameters& a = ctx.atmosphere;
-  Spectrum rayleigh(0.0f);
-  Spectrum mie(0.0f);
-  for (const ViewNode& n : nodes) {
-    const double mu_s_t = clampCosine((r * mu_s + n.t * nu) / n.r_t);
-    const Spectrum transmittance =
-        n.view_transmittance * ctx.sampler.transmittanceToSun(optical_depth, n.r_t, mu_s_t, a.sun_angular_radius_rad);
-    rayleigh += transmittance * static_cast<float>(n.rayleigh_weight);
-    mie += transmittance * static_cast<float>(n.mie_weight);
+// The suns of one view ray that share its nodes: their cosines in arrays the
+// node loop vectorizes over, and the single scattering they accumulate.
+struct SunBatch {
+  std::vector<double> mu_s, nu;
+  std::vector<double> mu_coord, visible;  // at the current node
+  std::vector<Spectrum> rayleigh, mie;
+  void clear() {
+    mu_s.clear();
+    nu.clear();
   }
-  return {rayleigh * a.sun_irradiance * a.rayleigh_scattering, mie * a.sun_irradiance * a.mie_scattering};
+  void add(double sun_mu_s, double sun_nu) {
+    mu_s.push_back(sun_mu_s);
+    nu.push_back(sun_nu);
+  }
+};
+
+// Single scattering from the nodes of one view ray from r for every sun of
+// the batch: per node, first where each sun falls on the transmittance
+// table and how much of its disk is up (a loop without table reads, which
+// vectorizes), then the reads and the sums.
+void sumOverNodes(const StageContext& ctx, const Texture2D& optical_depth, const std::vector<ViewNode>& nodes,
+                  double r, SunBatch& suns) {
+  const AtmosphereParameters& a = ctx.atmosphere;
+  const size_t count = suns.mu_s.size();
+  suns.rayleigh.assign(count, Spectrum(0.0f));
+  suns.mie.assign(count, Spectrum(0.0f));
+  suns.mu_coord.resize(count);
+  suns.visible.resize(count);
+  const double* sun_mu_s = suns.mu_s.data();
+  const double* sun_nu = suns.nu.data();
+  double* mu_coord = suns.mu_coord.data();
+  double* visible = suns.visible.data();
+  for (const ViewNode& n : nodes) {
+    const TableSampler::SunFromR sun(ctx.sampler, n.r_t, a.sun_angular_radius_rad);
+    const double t = n.t, r_t = n.r_t;  // locals: GCC does not vectorize the loop reading them through n
+#pragma omp simd
+    for (size_t i = 0; i < count; ++i) {
+      const double mu_s_t = clampCosine((r * sun_mu_s[i] + t * sun_nu[i]) / r_t);
+      mu_coord[i] = sun.muCoord(mu_s_t);
+      visible[i] = sun.visibleFraction(mu_s_t);
+    }
+    const Spectrum rayleigh_light = n.view_transmittance * static_cast<float>(n.rayleigh_weight);
+    const Spectrum mie_light = n.view_transmittance * static_cast<float>(n.mie_weight);
+    for (size_t i = 0; i < count; ++i) {
+      if (visible[i] <= 0.0) continue;
+      const Spectrum to_sun =
+          expOfNegated(sun.opticalDepth(optical_depth, mu_coord[i])) * static_cast<float>(visible[i]);
+      suns.rayleigh[i] += to_sun * rayleigh_light;
+      suns.mie[i] += to_sun * mie_light;
+    }
+  }
+  for (size_t i = 0; i < count; ++i) {
+    suns.rayleigh[i] *= a.sun_irradiance * a.rayleigh_scattering;
+    suns.mie[i] *= a.sun_irradiance * a.mie_scattering;
+  }
 }
 
 // Where the planet's shadow cuts the ray (r, mu) with the sun at (mu_s, nu).
@@ -104,7 +146,10 @@ SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2
   std::vector<ViewNode> nodes;
   collectPiecewiseNodes(ctx, optical_depth, r, mu, ray_intersects_ground,
                         shadowCrossings(ctx.atmosphere, r, mu, mu_s, nu, length), length, nodes);
-  return sumOverNodes(ctx, optical_depth, nodes, r, mu_s, nu);
+  SunBatch sun;
+  sun.add(mu_s, nu);
+  sumOverNodes(ctx, optical_depth, nodes, r, sun);
+  return {sun.rayleigh[0], sun.mie[0]};
 }
 
 void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& optical_depth,
@@ -112,9 +157,16 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
   rayleigh = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   mie = Texture4D(s.r, s.mu, s.mu_s, s.nu);
+  std::vector<double> texel_mu_s(s.mu_s);
+  for (int i = 0; i < s.mu_s; ++i) texel_mu_s[i] = muSFromScatteringTexel(ctx.sampler.domain(), s, i);
 #pragma omp parallel
   {
     std::vector<ViewNode> whole_ray, pieces;
+    SunBatch shared, alone;
+    struct Slot {
+      int i_mu_s, first_nu, last_nu;
+    };
+    std::vector<Slot> shared_slots;
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
@@ -125,31 +177,42 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
         whole_ray.clear();
         collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, 0.0, length,
                          kSingleScatteringSegments, whole_ray);
+        auto store = [&](const Slot& slot, const Spectrum& rayleigh_value, const Spectrum& mie_value) {
+          for (int i_nu = slot.first_nu; i_nu <= slot.last_nu; ++i_nu) {
+            rayleigh.at(i_r, i_mu, slot.i_mu_s, i_nu) = rayleigh_value;
+            mie.at(i_r, i_mu, slot.i_mu_s, i_nu) = mie_value;
+          }
+        };
+        shared.clear();
+        shared_slots.clear();
         for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
-          // Slices clamped to the same end of the nu range are the same
-          // texel: integrated once.
-          double last_nu = 2.0;  // no nu
-          for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-            const ScatteringTexelConfig c =
-                scatteringTexelConfig(ctx.sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu);
-            if (c.nu == last_nu) {
-              rayleigh.at(i_r, i_mu, i_mu_s, i_nu) = rayleigh.at(i_r, i_mu, i_mu_s, i_nu - 1);
-              mie.at(i_r, i_mu, i_mu_s, i_nu) = mie.at(i_r, i_mu, i_mu_s, i_nu - 1);
+          const double mu_s = texel_mu_s[i_mu_s];
+          for (int i_nu = 0; i_nu < s.nu;) {
+            // Slices clamped to the same end of the nu range are the same
+            // texel: integrated once.
+            const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), row.mu, mu_s);
+            Slot slot{i_mu_s, i_nu, i_nu};
+            while (slot.last_nu + 1 < s.nu &&
+                   clampNu(nuOfScatteringSlice(slot.last_nu + 1, s.nu), row.mu, mu_s) == nu) {
+              ++slot.last_nu;
+            }
+            i_nu = slot.last_nu + 1;
+            const ShadowCrossings crossings = shadowCrossings(ctx.atmosphere, row.r, row.mu, mu_s, nu, length);
+            if (crossings.count == 0) {
+              shared.add(mu_s, nu);
+              shared_slots.push_back(slot);
               continue;
             }
-            last_nu = c.nu;
-            const ShadowCrossings crossings = shadowCrossings(ctx.atmosphere, c.r, c.mu, c.mu_s, c.nu, length);
-            const std::vector<ViewNode>* nodes = &whole_ray;
-            if (crossings.count > 0) {
-              collectPiecewiseNodes(ctx, optical_depth, c.r, c.mu, c.ray_intersects_ground, crossings, length,
-                                    pieces);
-              nodes = &pieces;
-            }
-            const SingleScattering single = sumOverNodes(ctx, optical_depth, *nodes, c.r, c.mu_s, c.nu);
-            rayleigh.at(i_r, i_mu, i_mu_s, i_nu) = single.rayleigh;
-            mie.at(i_r, i_mu, i_mu_s, i_nu) = single.mie;
+            collectPiecewiseNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, crossings, length,
+                                  pieces);
+            alone.clear();
+            alone.add(mu_s, nu);
+            sumOverNodes(ctx, optical_depth, pieces, row.r, alone);
+            store(slot, alone.rayleigh[0], alone.mie[0]);
           }
         }
+        sumOverNodes(ctx, optical_depth, whole_ray, row.r, shared);
+        for (size_t i = 0; i < shared_slots.size(); ++i) store(shared_slots[i], shared.rayleigh[i], shared.mie[i]);
         ctx.progress.advance(1);
       }
     }

@@ -106,6 +106,22 @@ inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int s
   return {transmittanceCoordMu(d, size_mu, r, rho, H, mu), textureCoordFromUnitRange(rho / H, size_r)};
 }
 
+// transmittanceCoordMu at one r with its constants worked out once and no
+// branch, for loops over many directions from one point (they vectorize).
+struct TransmittanceMuCoordAtR {
+  double r, top_radius_m;
+  double dist_min, inverse_dist_span;  // 0 where the range is a point (see fractionOfRange)
+  int size_mu;
+  static TransmittanceMuCoordAtR of(const AtmosphereDomain& d, int size_mu, double r) {
+    const double dist_min = d.top_radius_m - r, dist_max = d.distanceToHorizon(r) + d.horizonToTopDistance();
+    return {r, d.top_radius_m, dist_min, dist_max > dist_min ? 1.0 / (dist_max - dist_min) : 0.0, size_mu};
+  }
+  double operator()(double mu) const {
+    return textureCoordFromUnitRange((distanceToOuterSphere(r, mu, top_radius_m) - dist_min) * inverse_dist_span,
+                                     size_mu);
+  }
+};
+
 
 // ---- scattering (4D) ----
 

@@ -168,11 +168,45 @@ class TableSampler {
     return glm::exp(-opticalDepthToTop(optical_depth, r, mu_s)) * static_cast<float>(visible);
   }
 
+  // transmittanceToSun for many suns seen from one r, in two steps: the
+  // branch-free part (where on the table's mu axis, how much of the disk is
+  // up) for all suns in a vectorizable loop, then the table reads.
+  class SunFromR {
+   public:
+    SunFromR(const TableSampler& sampler, double r, double sun_angular_radius)
+        : mu_coord_(TransmittanceMuCoordAtR::of(sampler.domain_, sampler.sizes_.transmittance_mu, r)),
+          r_lerp_(axisLerpFromTextureCoord(
+              transmittanceCoordFromRMu(sampler.domain_, sampler.sizes_.transmittance_mu,
+                                        sampler.sizes_.transmittance_r, r, 1.0).v,
+              sampler.sizes_.transmittance_r)),
+          tangent_mu_(tangentZenithCosine(r, sampler.domain_.bottom_radius_m)),
+          disk_half_size_(sampler.domain_.bottom_radius_m / r * sun_angular_radius) {}
+    double muCoord(double mu_s) const { return mu_coord_(mu_s); }
+    double visibleFraction(double mu_s) const { return sunDiskVisibleFraction(mu_s - tangent_mu_, disk_half_size_); }
+    // Optical depth to the top at the mu coordinate `u_mu`.
+    Spectrum opticalDepth(const Texture2D& optical_depth, double u_mu) const {
+      const AxisLerp x = axisLerpFromTextureCoord(u_mu, optical_depth.width);
+      const Spectrum a = optical_depth.at(x.i0, r_lerp_.i0) +
+                         (optical_depth.at(x.i1, r_lerp_.i0) - optical_depth.at(x.i0, r_lerp_.i0)) * x.w1;
+      const Spectrum b = optical_depth.at(x.i0, r_lerp_.i1) +
+                         (optical_depth.at(x.i1, r_lerp_.i1) - optical_depth.at(x.i0, r_lerp_.i1)) * x.w1;
+      return a + (b - a) * r_lerp_.w1;
+    }
+
+   private:
+    TransmittanceMuCoordAtR mu_coord_;
+    AxisLerp r_lerp_;
+    double tangent_mu_, disk_half_size_;
+  };
+
   // Fraction of the sun disk above the horizon given how far (in cosine) its
   // centre is above it and the disk's half-size in the same units.
+  // A point sun (half_size 0) is all up or all down. Written with selects
+  // rather than an early return, so loops over many suns vectorize.
   static double sunDiskVisibleFraction(double height, double half_size) {
-    if (half_size <= 0.0) return height > 0.0 ? 1.0 : 0.0;
-    const double t = std::clamp((height + half_size) / (2.0 * half_size), 0.0, 1.0);
+    const double ramp = std::clamp((height + half_size) / (2.0 * half_size), 0.0, 1.0);
+    const double point = height > 0.0 ? 1.0 : 0.0;
+    const double t = half_size > 0.0 ? ramp : point;
     return t * t * (3.0 - 2.0 * t);  // smooth ramp: no kink in the sky's derivative
   }
 
