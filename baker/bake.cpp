@@ -190,7 +190,8 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
   report.orders_decision.cap = settings.auto_orders ? settings.max_orders : 0;
   std::optional<ScatteringDensityKernel> density_kernel;
   if (last_order >= 2) {
-    density_kernel = stage.run("density_kernel", 0, s.r, [&] { return makeScatteringDensityKernel(ctx, optical_depth); });
+    density_kernel =
+        stage.run("density_kernel", 0, s.r, [&] { return makeScatteringDensityKernel(ctx, optical_depth); });
   }
   for (int order = 2; order <= last_order; ++order) {
     const MultipleScatteringPhase order_shape(a, order);

@@ -91,36 +91,43 @@ struct TextureCoord2D {
   double v;
 };
 
+// The mu coordinate at one r, its constants worked out once: for loops over
+// many directions from one point (selects only, so they vectorize).
+struct TransmittanceMuCoordAtR {
+  double r, top_radius_m;
+  double dist_min, dist_max;  // straight up, and toward the horizon
+  int size_mu;
+  // rho = distanceToHorizon(r) and H = horizonToTopDistance().
+  static TransmittanceMuCoordAtR of(const AtmosphereDomain& d, int size_mu, double r, double rho, double H) {
+    return {r, d.top_radius_m, d.top_radius_m - r, rho + H, size_mu};
+  }
+  static TransmittanceMuCoordAtR of(const AtmosphereDomain& d, int size_mu, double r) {
+    return of(d, size_mu, r, d.distanceToHorizon(r), d.horizonToTopDistance());
+  }
+  double operator()(double mu) const {
+    return textureCoordFromUnitRange(fractionOfRange(distanceToOuterSphere(r, mu, top_radius_m), dist_min, dist_max),
+                                     size_mu);
+  }
+};
+
 // The mu coordinate alone, for callers that hold rho = distanceToHorizon(r)
 // and H = horizonToTopDistance() for many directions from one r.
 inline double transmittanceCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho,
                                    double H, double mu) {
-  const double dist = distanceToOuterSphere(r, mu, d.top_radius_m);
-  return textureCoordFromUnitRange(fractionOfRange(dist, d.top_radius_m - r, rho + H), size_mu);
+  return TransmittanceMuCoordAtR::of(d, size_mu, r, rho, H)(mu);
+}
+
+// The r coordinate alone, from rho = distanceToHorizon(r).
+inline double transmittanceCoordR(const AtmosphereDomain& d, int size_r, double rho) {
+  return textureCoordFromUnitRange(rho / d.horizonToTopDistance(), size_r);
 }
 
 inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int size_mu, int size_r,
                                                 double r, double mu) {
   const double H = d.horizonToTopDistance();
   const double rho = d.distanceToHorizon(r);
-  return {transmittanceCoordMu(d, size_mu, r, rho, H, mu), textureCoordFromUnitRange(rho / H, size_r)};
+  return {transmittanceCoordMu(d, size_mu, r, rho, H, mu), transmittanceCoordR(d, size_r, rho)};
 }
-
-// transmittanceCoordMu at one r with its constants worked out once and no
-// branch, for loops over many directions from one point (they vectorize).
-struct TransmittanceMuCoordAtR {
-  double r, top_radius_m;
-  double dist_min, inverse_dist_span;  // 0 where the range is a point (see fractionOfRange)
-  int size_mu;
-  static TransmittanceMuCoordAtR of(const AtmosphereDomain& d, int size_mu, double r) {
-    const double dist_min = d.top_radius_m - r, dist_max = d.distanceToHorizon(r) + d.horizonToTopDistance();
-    return {r, d.top_radius_m, dist_min, dist_max > dist_min ? 1.0 / (dist_max - dist_min) : 0.0, size_mu};
-  }
-  double operator()(double mu) const {
-    return textureCoordFromUnitRange((distanceToOuterSphere(r, mu, top_radius_m) - dist_min) * inverse_dist_span,
-                                     size_mu);
-  }
-};
 
 
 // ---- scattering (4D) ----

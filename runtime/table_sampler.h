@@ -161,41 +161,33 @@ class TableSampler {
   // disk's angular diameter).
   Spectrum transmittanceToSun(const Texture2D& optical_depth, double r, double mu_s,
                               double sun_angular_radius) const {
-    const double sin_horizon = domain_.bottom_radius_m / r;
-    const double visible = sunDiskVisibleFraction(mu_s - tangentZenithCosine(r, domain_.bottom_radius_m),
-                                                  sin_horizon * sun_angular_radius);
+    const SunFromR sun(*this, r, sun_angular_radius);
+    const double visible = sun.visibleFraction(mu_s);
     if (visible <= 0.0) return Spectrum(0.0f);
-    return glm::exp(-opticalDepthToTop(optical_depth, r, mu_s)) * static_cast<float>(visible);
+    return glm::exp(-sun.opticalDepth(optical_depth, sun.muCoord(mu_s))) * static_cast<float>(visible);
   }
 
-  // transmittanceToSun for many suns seen from one r, in two steps: the
+  // transmittanceToSun's steps for many suns seen from one r: the
   // branch-free part (where on the table's mu axis, how much of the disk is
-  // up) for all suns in a vectorizable loop, then the table reads.
+  // up) for all suns in a loop that vectorizes, then the table reads.
   class SunFromR {
    public:
     SunFromR(const TableSampler& sampler, double r, double sun_angular_radius)
         : mu_coord_(TransmittanceMuCoordAtR::of(sampler.domain_, sampler.sizes_.transmittance_mu, r)),
-          r_lerp_(axisLerpFromTextureCoord(
-              transmittanceCoordFromRMu(sampler.domain_, sampler.sizes_.transmittance_mu,
-                                        sampler.sizes_.transmittance_r, r, 1.0).v,
-              sampler.sizes_.transmittance_r)),
+          r_coord_(transmittanceCoordR(sampler.domain_, sampler.sizes_.transmittance_r,
+                                       sampler.domain_.distanceToHorizon(r))),
           tangent_mu_(tangentZenithCosine(r, sampler.domain_.bottom_radius_m)),
           disk_half_size_(sampler.domain_.bottom_radius_m / r * sun_angular_radius) {}
     double muCoord(double mu_s) const { return mu_coord_(mu_s); }
     double visibleFraction(double mu_s) const { return sunDiskVisibleFraction(mu_s - tangent_mu_, disk_half_size_); }
     // Optical depth to the top at the mu coordinate `u_mu`.
     Spectrum opticalDepth(const Texture2D& optical_depth, double u_mu) const {
-      const AxisLerp x = axisLerpFromTextureCoord(u_mu, optical_depth.width);
-      const Spectrum a = optical_depth.at(x.i0, r_lerp_.i0) +
-                         (optical_depth.at(x.i1, r_lerp_.i0) - optical_depth.at(x.i0, r_lerp_.i0)) * x.w1;
-      const Spectrum b = optical_depth.at(x.i0, r_lerp_.i1) +
-                         (optical_depth.at(x.i1, r_lerp_.i1) - optical_depth.at(x.i0, r_lerp_.i1)) * x.w1;
-      return a + (b - a) * r_lerp_.w1;
+      return sampleBilinear(optical_depth, {u_mu, r_coord_});
     }
 
    private:
     TransmittanceMuCoordAtR mu_coord_;
-    AxisLerp r_lerp_;
+    double r_coord_;
     double tangent_mu_, disk_half_size_;
   };
 
