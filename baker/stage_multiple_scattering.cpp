@@ -4,6 +4,7 @@
 
 #include "runtime/atmosphere_media.h"
 #include "runtime/ray_quadrature.h"
+#include "baker/row_sun_texels.h"
 #include "baker/stages.h"
 
 namespace skybake {
@@ -80,32 +81,6 @@ Spectrum samplePlane(const std::vector<Spectrum>& plane, int nu_size, const Axis
   return a + (b - a) * nu.w1;
 }
 
-// A sun texel of an (r, mu) row. Slices whose nu, clamped to what the row's
-// mu and the texel's mu_s allow, equals the slice before's are the same
-// texel: integrated once, stored into slices first_nu .. last_nu.
-struct RowTexel {
-  int i_mu_s, first_nu, last_nu;
-  double mu_s, nu;
-  AxisLerp density_nu;  // nu is constant along a straight ray: so is its interpolation
-  double peak;          // of the order's multiple-scattering shape at nu
-};
-
-void collectRowTexels(const ScatteringSizes& s, const std::vector<double>& texel_mu_s, int density_nu_size,
-                      const MultipleScatteringPhase& shape, double mu, std::vector<RowTexel>& texels) {
-  texels.clear();
-  for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
-    const double mu_s = texel_mu_s[i_mu_s];
-    for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-      const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), mu, mu_s);
-      if (i_nu > 0 && nu == texels.back().nu) {
-        texels.back().last_nu = i_nu;
-        continue;
-      }
-      texels.push_back({i_mu_s, i_nu, i_nu, mu_s, nu, axisLerpNu((nu + 1.0) * 0.5, density_nu_size), shape.peakAt(nu)});
-    }
-  }
-}
-
 }  // namespace
 
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
@@ -121,21 +96,21 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
   const ScatteringSizes& density_sizes = density_sampler.scatteringSizes();
   const ScatteringMuSCoordMap density_mu_s_coord =
       ScatteringMuSCoordMap::of(density_sampler.domain(), density_sizes.mu_s);
-  std::vector<double> texel_mu_s(s.mu_s);
-  for (int i = 0; i < s.mu_s; ++i) texel_mu_s[i] = muSFromScatteringTexel(sampler.domain(), s, i);
+  const std::vector<double> texel_mu_s = scatteringTexelMuS(sampler.domain(), s);
   constexpr double kBroad = MultipleScatteringPhase::kBroad;
   Texture4D table(s.r, s.mu, s.mu_s, s.nu);
 #pragma omp parallel
   {
     std::vector<RayNode> nodes;
     std::vector<std::vector<Spectrum>> planes;  // one per node
-    std::vector<RowTexel> texels;
-    // Per texel, the density integrated along the ray times the broad and
-    // the peaked part of the shape at each node: the shape at the node is
+    RowSunTexels suns;
+    std::vector<AxisLerp> density_nu;  // per sun: nu is constant along a straight ray, so is its interpolation
+    std::vector<double> mu_s_position;  // per sun: its coordinate on the density table at the current node
+    // Per sun, the density integrated along the ray times the broad and the
+    // peaked part of the shape at each node: the shape at the node is
     // kBroad + w (peak - kBroad), so the integral with it is
     // kBroad * broad + (peak - kBroad) * peaked.
     std::vector<Spectrum> broad, peaked;
-    std::vector<double> texel_mu_s_cos, texel_nu, mu_s_position;  // per texel: the sun, and its coordinate at a node
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
@@ -143,33 +118,30 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
         collectRayNodes(ctx, optical_depth, density_sampler, shape, row, nodes);
         if (planes.size() < nodes.size()) planes.resize(nodes.size());
         for (size_t k = 0; k < nodes.size(); ++k) interpolateAtNode(density, nodes[k], planes[k]);
-        collectRowTexels(s, texel_mu_s, density_sizes.nu, shape, row.mu, texels);
-        const size_t texel_count = texels.size();
-        broad.assign(texel_count, Spectrum(0.0f));
-        peaked.assign(texel_count, Spectrum(0.0f));
-        texel_mu_s_cos.resize(texel_count);
-        texel_nu.resize(texel_count);
-        mu_s_position.resize(texel_count);
-        for (size_t i = 0; i < texel_count; ++i) {
-          texel_mu_s_cos[i] = texels[i].mu_s;
-          texel_nu[i] = texels[i].nu;
-        }
+        suns.collect(s, texel_mu_s, row.mu);
+        const size_t count = suns.size();
+        density_nu.resize(count);
+        for (size_t i = 0; i < count; ++i) density_nu[i] = axisLerpNu((suns.nu[i] + 1.0) * 0.5, density_sizes.nu);
+        broad.assign(count, Spectrum(0.0f));
+        peaked.assign(count, Spectrum(0.0f));
+        mu_s_position.resize(count);
+        const double* sun_mu_s = suns.mu_s.data();
+        const double* sun_nu = suns.nu.data();
         for (size_t k = 0; k < nodes.size(); ++k) {
           const RayNode& n = nodes[k];
           const Spectrum light = n.transmittance * static_cast<float>(n.weight);
           const Spectrum light_peaked = light * Spectrum(n.peak_weight);
           const std::vector<Spectrum>& plane = planes[k];
-          // The sun's coordinate at the node for every texel first: a loop
+          // The sun's coordinate at the node for every sun first: a loop
           // without table reads, which vectorizes.
 #pragma omp simd
-          for (size_t i = 0; i < texel_count; ++i) {
-            const double mu_s_at_node = clampCosine((row.r * texel_mu_s_cos[i] + n.t * texel_nu[i]) / n.r);
+          for (size_t i = 0; i < count; ++i) {
+            const double mu_s_at_node = clampCosine((row.r * sun_mu_s[i] + n.t * sun_nu[i]) / n.r);
             mu_s_position[i] = density_mu_s_coord(mu_s_at_node);
           }
-          for (size_t i = 0; i < texel_count; ++i) {
-            const RowTexel& texel = texels[i];
+          for (size_t i = 0; i < count; ++i) {
             const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(mu_s_position[i], density_sizes.mu_s);
-            const Spectrum value = samplePlane(plane, density_sizes.nu, mu_s_lerp, texel.density_nu);
+            const Spectrum value = samplePlane(plane, density_sizes.nu, mu_s_lerp, density_nu[i]);
             broad[i] += value * light;
             peaked[i] += value * light_peaked;
           }
@@ -178,12 +150,15 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
         // shape at each node gave it back, the shape at this texel divides
         // the result for storage.
         const SpectrumD texel_peak_weight = shape.peakWeightAt(row.r - ctx.atmosphere.bottom_radius_m);
-        for (size_t i = 0; i < texels.size(); ++i) {
-          const RowTexel& texel = texels[i];
+        for (size_t i = 0; i < count; ++i) {
+          const double peak = shape.peakAt(suns.nu[i]);
           const Spectrum value =
-              (broad[i] * static_cast<float>(kBroad) + peaked[i] * static_cast<float>(texel.peak - kBroad)) /
-              MultipleScatteringPhase::withPeak(texel_peak_weight, texel.peak);
-          for (int i_nu = texel.first_nu; i_nu <= texel.last_nu; ++i_nu) table.at(i_r, i_mu, texel.i_mu_s, i_nu) = value;
+              (broad[i] * static_cast<float>(kBroad) + peaked[i] * static_cast<float>(peak - kBroad)) /
+              MultipleScatteringPhase::withPeak(texel_peak_weight, peak);
+          const RowSunTexels::Slices& slices = suns.slices[i];
+          for (int i_nu = slices.first_nu; i_nu <= slices.last_nu; ++i_nu) {
+            table.at(i_r, i_mu, slices.i_mu_s, i_nu) = value;
+          }
         }
         ctx.progress.advance(1);
       }

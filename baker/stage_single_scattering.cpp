@@ -6,6 +6,7 @@
 #include "runtime/atmosphere_media.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
+#include "baker/row_sun_texels.h"
 #include "baker/vector_exp.h"
 #include "baker/stages.h"
 
@@ -157,16 +158,13 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
   rayleigh = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   mie = Texture4D(s.r, s.mu, s.mu_s, s.nu);
-  std::vector<double> texel_mu_s(s.mu_s);
-  for (int i = 0; i < s.mu_s; ++i) texel_mu_s[i] = muSFromScatteringTexel(ctx.sampler.domain(), s, i);
+  const std::vector<double> texel_mu_s = scatteringTexelMuS(ctx.sampler.domain(), s);
 #pragma omp parallel
   {
     std::vector<ViewNode> whole_ray, pieces;
+    RowSunTexels suns;
     SunBatch shared, alone;
-    struct Slot {
-      int i_mu_s, first_nu, last_nu;
-    };
-    std::vector<Slot> shared_slots;
+    std::vector<size_t> shared_suns;  // which of the row's suns the shared batch holds
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
@@ -177,42 +175,33 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
         whole_ray.clear();
         collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, 0.0, length,
                          kSingleScatteringSegments, whole_ray);
-        auto store = [&](const Slot& slot, const Spectrum& rayleigh_value, const Spectrum& mie_value) {
-          for (int i_nu = slot.first_nu; i_nu <= slot.last_nu; ++i_nu) {
-            rayleigh.at(i_r, i_mu, slot.i_mu_s, i_nu) = rayleigh_value;
-            mie.at(i_r, i_mu, slot.i_mu_s, i_nu) = mie_value;
+        auto store = [&](size_t sun, const Spectrum& rayleigh_value, const Spectrum& mie_value) {
+          const RowSunTexels::Slices& slices = suns.slices[sun];
+          for (int i_nu = slices.first_nu; i_nu <= slices.last_nu; ++i_nu) {
+            rayleigh.at(i_r, i_mu, slices.i_mu_s, i_nu) = rayleigh_value;
+            mie.at(i_r, i_mu, slices.i_mu_s, i_nu) = mie_value;
           }
         };
+        suns.collect(s, texel_mu_s, row.mu);
         shared.clear();
-        shared_slots.clear();
-        for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
-          const double mu_s = texel_mu_s[i_mu_s];
-          for (int i_nu = 0; i_nu < s.nu;) {
-            // Slices clamped to the same end of the nu range are the same
-            // texel: integrated once.
-            const double nu = clampNu(nuOfScatteringSlice(i_nu, s.nu), row.mu, mu_s);
-            Slot slot{i_mu_s, i_nu, i_nu};
-            while (slot.last_nu + 1 < s.nu &&
-                   clampNu(nuOfScatteringSlice(slot.last_nu + 1, s.nu), row.mu, mu_s) == nu) {
-              ++slot.last_nu;
-            }
-            i_nu = slot.last_nu + 1;
-            const ShadowCrossings crossings = shadowCrossings(ctx.atmosphere, row.r, row.mu, mu_s, nu, length);
-            if (crossings.count == 0) {
-              shared.add(mu_s, nu);
-              shared_slots.push_back(slot);
-              continue;
-            }
-            collectPiecewiseNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, crossings, length,
-                                  pieces);
-            alone.clear();
-            alone.add(mu_s, nu);
-            sumOverNodes(ctx, optical_depth, pieces, row.r, alone);
-            store(slot, alone.rayleigh[0], alone.mie[0]);
+        shared_suns.clear();
+        for (size_t i = 0; i < suns.size(); ++i) {
+          const ShadowCrossings crossings =
+              shadowCrossings(ctx.atmosphere, row.r, row.mu, suns.mu_s[i], suns.nu[i], length);
+          if (crossings.count == 0) {
+            shared.add(suns.mu_s[i], suns.nu[i]);
+            shared_suns.push_back(i);
+            continue;
           }
+          collectPiecewiseNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, crossings, length,
+                                pieces);
+          alone.clear();
+          alone.add(suns.mu_s[i], suns.nu[i]);
+          sumOverNodes(ctx, optical_depth, pieces, row.r, alone);
+          store(i, alone.rayleigh[0], alone.mie[0]);
         }
         sumOverNodes(ctx, optical_depth, whole_ray, row.r, shared);
-        for (size_t i = 0; i < shared_slots.size(); ++i) store(shared_slots[i], shared.rayleigh[i], shared.mie[i]);
+        for (size_t j = 0; j < shared_suns.size(); ++j) store(shared_suns[j], shared.rayleigh[j], shared.mie[j]);
         ctx.progress.advance(1);
       }
     }
