@@ -2,16 +2,13 @@
 
 namespace skybake {
 
-Spectrum OrderRadiance::radiance(const TableSampler& sampler, double r, double mu, double mu_s,
-                                 double nu, bool ray_intersects_ground, double mie_g) const {
+Spectrum OrderRadiance::withPhase(const Spectrum& rayleigh_or_multiple, const Spectrum& mie, double nu,
+                                  const SpectrumD& peak_weight, double mie_g) const {
   if (order == 1) {
-    return sampler.scattering(single_rayleigh, r, mu, mu_s, nu, ray_intersects_ground) *
-               static_cast<float>(rayleighPhase(nu)) +
-           sampler.scattering(single_mie, r, mu, mu_s, nu, ray_intersects_ground) *
-               static_cast<float>(cornetteShanksPhase(mie_g, nu));
+    return rayleigh_or_multiple * static_cast<float>(rayleighPhase(nu)) +
+           mie * static_cast<float>(cornetteShanksPhase(mie_g, nu));
   }
-  return sampler.scattering(multiple, r, mu, mu_s, nu, ray_intersects_ground) *
-         multiple_shape(r - sampler.domain().bottom_radius_m, nu);
+  return rayleigh_or_multiple * MultipleScatteringPhase::withPeak(peak_weight, multiple_shape.peakAt(nu));
 }
 
 namespace {
@@ -49,12 +46,8 @@ void OrderRadianceAlongNu::moveTo(double r, double mu, double mu_s, bool ray_int
 
 Spectrum OrderRadianceAlongNu::at(double nu) const {
   const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, static_cast<int>(rayleigh_or_multiple_.size()));
-  if (order_.order == 1) {
-    return blendSlices(rayleigh_or_multiple_, nu_lerp, blend_) * static_cast<float>(rayleighPhase(nu)) +
-           blendSlices(mie_, nu_lerp, blend_) * static_cast<float>(cornetteShanksPhase(mie_g_, nu));
-  }
-  return blendSlices(rayleigh_or_multiple_, nu_lerp, blend_) *
-         MultipleScatteringPhase::withPeak(peak_weight_, order_.multiple_shape.peakAt(nu));
+  const Spectrum mie = order_.order == 1 ? blendSlices(mie_, nu_lerp, blend_) : Spectrum(0.0f);
+  return order_.withPhase(blendSlices(rayleigh_or_multiple_, nu_lerp, blend_), mie, nu, peak_weight_, mie_g_);
 }
 
 }  // namespace skybake

@@ -46,14 +46,19 @@ struct OrderRadiance {
   const Texture4D& single_mie;
   const Texture4D& multiple;  // that order's table when order >= 2 (divided, as stored)
   const MultipleScatteringPhase& multiple_shape;
-  Spectrum radiance(const TableSampler& sampler, double r, double mu, double mu_s, double nu,
-                    bool ray_intersects_ground, double mie_g) const;
+  // The radiance from the tables' values at a lookup (OrderRadianceAlongNu): order 1 weights the
+  // single Rayleigh and Mie values by their phase functions at nu, later
+  // orders multiply the table's value (`rayleigh_or_multiple`; `mie` unused)
+  // by the shape with the lookup altitude's peak weight.
+  Spectrum withPhase(const Spectrum& rayleigh_or_multiple, const Spectrum& mie, double nu,
+                     const SpectrumD& peak_weight, double mie_g) const;
 };
 
 // The radiance of one order at a fixed (r, mu, mu_s), for any nu: the tables
 // are interpolated on each of their nu slices once (moveTo), so each nu then
 // costs one blend and the phase functions instead of a 16-texel lookup.
-// at(nu) equals OrderRadiance::radiance at the same arguments.
+// at(nu) equals TableSampler::scattering of the order's tables at
+// (r, mu, mu_s, nu) through OrderRadiance::withPhase.
 class OrderRadianceAlongNu {
  public:
   OrderRadianceAlongNu(const OrderRadiance& order, const TableSampler& sampler, double mie_g)
