@@ -2,7 +2,6 @@
 
 #include <vector>
 
-#include "baker/local_frame.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
@@ -110,13 +109,6 @@ void sumOverNodes(const StageContext& ctx, const Texture2D& optical_depth, const
   }
 }
 
-// Where the planet's shadow cuts the ray (r, mu) with the sun at (mu_s, nu).
-ShadowCrossings shadowCrossings(const AtmosphereParameters& a, double r, double mu, double mu_s, double nu,
-                                double length) {
-  return planetShadowCrossings(glm::dvec3(0.0, 0.0, r), directionFromZenithCosine(mu),
-                               sunDirectionInViewFrame(mu, mu_s, nu), a.bottom_radius_m, length);
-}
-
 // The nodes of the ray, each piece between the shadow's edges with its own
 // rule, so none spans the jump where the sun appears or disappears.
 void collectPiecewiseNodes(const StageContext& ctx, const Texture2D& optical_depth, double r, double mu,
@@ -144,13 +136,8 @@ SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2
                                          bool ray_intersects_ground) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const double length = distanceToAtmosphereEnd(r, mu, a.bottom_radius_m, a.top_radius_m, ray_intersects_ground);
-  std::vector<ViewNode> nodes;
-  collectPiecewiseNodes(ctx, optical_depth, r, mu, ray_intersects_ground,
-                        shadowCrossings(ctx.atmosphere, r, mu, mu_s, nu, length), length, nodes);
-  SunBatch sun;
-  sun.add(mu_s, nu);
-  sumOverNodes(ctx, optical_depth, nodes, r, sun);
-  return {sun.rayleigh[0], sun.mie[0]};
+  return integrateSingleScattering(ctx.sampler, optical_depth, a, {r, mu, mu_s, nu, ray_intersects_ground}, 0.0,
+                                   length, kSingleScatteringSegments);
 }
 
 void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& optical_depth,
@@ -187,7 +174,7 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
         shared_suns.clear();
         for (size_t i = 0; i < suns.size(); ++i) {
           const ShadowCrossings crossings =
-              shadowCrossings(ctx.atmosphere, row.r, row.mu, suns.mu_s[i], suns.nu[i], length);
+              planetShadowCrossings(row.r, row.mu, suns.mu_s[i], suns.nu[i], ctx.atmosphere.bottom_radius_m, length);
           if (crossings.count == 0) {
             shared.add(suns.mu_s[i], suns.nu[i]);
             shared_suns.push_back(i);

@@ -8,6 +8,7 @@
 #include "baker/progress.h"
 #include "data_formats/bake_file.h"
 #include "runtime/multiple_scattering_phase.h"
+#include "runtime/single_scattering_ray.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {
@@ -25,12 +26,9 @@ Texture2D computeTransmittanceTable(const StageContext& ctx);
 // included) on a horizontal surface at every (r, mu_s) texel.
 Texture2D computeDirectIrradianceTable(const StageContext& ctx, const Texture2D& optical_depth);
 
-// Single scattering of sunlight, one ray integral per texel. Rayleigh and Mie
-// are kept apart, each without its phase function.
-struct SingleScattering {
-  Spectrum rayleigh;
-  Spectrum mie;
-};
+// Single scattering of sunlight, one ray integral per texel
+// (integrateSingleScattering with the bake's rule). Rayleigh and Mie are kept
+// apart, each without its phase function.
 SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth,
                                          double r, double mu, double mu_s, double nu,
                                          bool ray_intersects_ground);

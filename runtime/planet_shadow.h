@@ -7,6 +7,7 @@
 // their rays at these distances.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -41,6 +42,19 @@ inline ShadowCrossings planetShadowCrossings(const glm::dvec3& origin, const glm
     if (t > 0.0 && t < length && behind_planet) out.distance[out.count++] = t;
   }
   return out;
+}
+
+// The same for the ray from radius r at zenith cosine mu, the sun at zenith
+// cosine mu_s making cosine nu with it (a nu the two zenith angles do not
+// allow is taken at its nearest possible value), over (0, length). The ray
+// is put in the x-z plane above the +z pole.
+inline ShadowCrossings planetShadowCrossings(double r, double mu, double mu_s, double nu, double bottom_radius,
+                                             double length) {
+  const double view_sin = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+  const double sun_sin = std::sqrt(std::max(0.0, 1.0 - mu_s * mu_s));
+  const double sun_x = view_sin > 0.0 ? std::clamp((nu - mu * mu_s) / view_sin, -sun_sin, sun_sin) : sun_sin;
+  const glm::dvec3 sun(sun_x, std::sqrt(std::max(0.0, sun_sin * sun_sin - sun_x * sun_x)), mu_s);
+  return planetShadowCrossings(glm::dvec3(0.0, 0.0, r), glm::dvec3(view_sin, 0.0, mu), sun, bottom_radius, length);
 }
 
 }  // namespace skybake

@@ -16,6 +16,12 @@
 //    in the same direction relative to its horizon, and a sun outside them at
 //    the nearest baked sun angle: close for small excursions, wrong for large
 //    ones. Check bakedRanges().contains(...) where that can happen.
+//
+// Where the values come from: the baked tables, except single scattering
+// with the sun below the horizon, which is integrated along each view ray
+// over the baked transmittance table (the tables cannot follow the edge of
+// the planet's shadow; see sky.cpp). Such twilight lookups cost about six
+// times a day lookup.
 #pragma once
 
 #include <cstddef>
@@ -25,6 +31,7 @@
 
 #include "data_formats/bake_file.h"
 #include "runtime/multiple_scattering_phase.h"
+#include "runtime/single_scattering_ray.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {
@@ -143,10 +150,31 @@ class Sky {
   Spectrum differenceSegmentRadiance(double r, double mu, double mu_s, double nu, double d, double shadow,
                                      bool ground, const Spectrum& transmittance) const;
 
+  // Single scattering (each part without its phase function) of the ray's
+  // part [t_start, t_end]: from the tables (`from_tables()`, not called where
+  // unused), or with the sun below the horizon integrated along the ray,
+  // blended with the tables' just above it (see sky.cpp).
+  template <typename FromTables>
+  SingleScattering singleScattering(const SunlitRay& ray, double t_start, double t_end,
+                                    FromTables&& from_tables) const {
+    const SunlitRay baked = withBakedSun(ray);
+    const double weight = integratedSingleScatteringWeight(baked.mu_s);
+    SingleScattering s = weight < 1.0 ? from_tables() : SingleScattering{Spectrum(0.0f), Spectrum(0.0f)};
+    if (weight > 0.0) blendInIntegratedSingleScattering(baked, t_start, t_end, weight, s);
+    return s;
+  }
+  // `ray` with a sun outside the baked sun angles moved to the nearest one,
+  // as the tables take it (see the geometry conventions above).
+  SunlitRay withBakedSun(const SunlitRay& ray) const;
+  static double integratedSingleScatteringWeight(double mu_s);
+  void blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, double weight,
+                                         SingleScattering& s) const;
+
   BakeFile bake_;
   TableSampler sampler_;
   MultipleScatteringPhase multiple_shape_;  // what multiple scattering is stored divided by
   BakedRanges ranges_;
+  double baked_mu_s_min_, baked_mu_s_max_;  // ranges_' sun angles as zenith cosines
 };
 
 }  // namespace skybake

@@ -122,8 +122,13 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
     const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, ss.nu);
     const double base = one_plus_g2 - 2.0 * g * nu;
     const double mie_phase = cs_norm * (1.0 + nu * nu) / (base * std::sqrt(base));
-    const Spectrum l = rayleigh.sample(mu_lerp, nu_lerp) * static_cast<float>(rayleighPhase(nu)) +
-                       mie.sample(mu_lerp, nu_lerp) * static_cast<float>(mie_phase) +
+    const SingleScattering single =
+        singleScattering({r, mu, mu_s, nu, ground}, 0.0,
+                         distanceToAtmosphereEnd(r, mu, d.bottom_radius_m, d.top_radius_m, ground), [&] {
+                           return SingleScattering{rayleigh.sample(mu_lerp, nu_lerp), mie.sample(mu_lerp, nu_lerp)};
+                         });
+    const Spectrum l = single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
+                       single.mie * static_cast<float>(mie_phase) +
                        multiple.sample(mu_lerp, nu_lerp) * multiple_shape_(multiple_peak_weight, nu);
     Spectrum tau;
     if (ground) {

@@ -143,16 +143,19 @@ class TableSampler {
   // difference of optical depths to the top rather than a ratio of
   // transmittances, so it stays exact where transmittances underflow. For a
   // ray that hits the ground both legs are taken reversed (pointing up),
-  // where the table is defined.
+  // where the table is defined. So is a segment of a downward ray that ends
+  // before the ray's lowest point: forward, both depths would run through
+  // the densest air at that point (thousands in a thick haze), and the
+  // table's relative error on them would swamp their small difference.
   Spectrum opticalDepthAlongRay(const Texture2D& optical_depth, double r, double mu, double d,
                                 bool ray_intersects_ground) const {
     const double r_d = std::clamp(radiusAlongRay(r, mu, d), domain_.bottom_radius_m, domain_.top_radius_m);
     const double mu_d = cosineAlongRay(r, mu, d, r_d);
-    const Spectrum tau = ray_intersects_ground
-                             ? opticalDepthToTop(optical_depth, r_d, -mu_d) -
-                                   opticalDepthToTop(optical_depth, r, -mu)
-                             : opticalDepthToTop(optical_depth, r, mu) -
-                                   opticalDepthToTop(optical_depth, r_d, mu_d);
+    const bool reversed = ray_intersects_ground || d <= -r * mu;
+    const Spectrum tau = reversed ? opticalDepthToTop(optical_depth, r_d, -mu_d) -
+                                        opticalDepthToTop(optical_depth, r, -mu)
+                                  : opticalDepthToTop(optical_depth, r, mu) -
+                                        opticalDepthToTop(optical_depth, r_d, mu_d);
     return glm::max(tau, Spectrum(0.0f));  // interpolation may leave a tiny negative
   }
 

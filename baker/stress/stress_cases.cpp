@@ -7,10 +7,14 @@ namespace {
 
 // Table sizes. Quick: those of the unit-test bakes, so the whole matrix bakes
 // in seconds on two cores; full: twice the resolution on the angular axes.
+// The transmittance table is the full one in both: lookups with the sun
+// below the horizon integrate single scattering over it (Sky), and at 64 x 16
+// a grazing ray from the top of the mie_g_0 case dimmed 5.2 % per 1e-4 rad of
+// view angle where the reference dims 3.5 %.
 TextureSizes stressSizes(bool quick) {
   TextureSizes s;
-  s.transmittance_mu = quick ? 64 : 128;
-  s.transmittance_r = quick ? 16 : 32;
+  s.transmittance_mu = 128;
+  s.transmittance_r = 32;
   s.irradiance_mu_s = quick ? 16 : 32;
   s.irradiance_r = 8;
   s.scattering_r = quick ? 8 : 16;

@@ -1,8 +1,11 @@
 // Sky-radiance lookups per second on one core: scalar calls and the batch
 // entry point, over view directions spread over the whole sphere from a
-// camera 1 km up. The bake comes from $SKYBAKE_BAKE (scripts/bench_lookup.sh).
+// camera 1 km up, with the sun 30 deg from the zenith (day: table lookups
+// only) and 95 deg (twilight: single scattering integrated along each ray).
+// The bake comes from $SKYBAKE_BAKE (scripts/bench_lookup.sh).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <random>
 
@@ -39,26 +42,32 @@ Directions randomDirections(size_t count) {
 }
 
 constexpr size_t kRays = 1 << 16;
-const glm::dvec3 kSun(0.5, 0.0, 0.8660254037844386);  // 30 deg from the zenith
+// The sun at the benchmark's argument, in degrees from the zenith.
+glm::dvec3 sunAt(const benchmark::State& state) {
+  const double zenith = static_cast<double>(state.range(0)) * (3.14159265358979323846 / 180.0);
+  return {std::sin(zenith), 0.0, std::cos(zenith)};
+}
 
 void BM_SkyRadianceScalar(benchmark::State& state) {
   const skybake::Sky& sky = benchSky();
   const Directions d = randomDirections(kRays);
   const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 1000.0);
+  const glm::dvec3 sun = sunAt(state);
   size_t i = 0;
   for (auto _ : state) {
-    const auto v = sky.skyRadiance(camera, glm::dvec3(d.x[i], d.y[i], d.z[i]), kSun);
+    const auto v = sky.skyRadiance(camera, glm::dvec3(d.x[i], d.y[i], d.z[i]), sun);
     benchmark::DoNotOptimize(v);
     i = (i + 1) % kRays;
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_SkyRadianceScalar);
+BENCHMARK(BM_SkyRadianceScalar)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95);
 
 void BM_SkyRadianceBatch(benchmark::State& state) {
   const skybake::Sky& sky = benchSky();
   const Directions d = randomDirections(kRays);
   const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 1000.0);
+  const glm::dvec3 sun = sunAt(state);
   std::vector<float> radiance[3], transmittance[3];
   skybake::SpectrumBatch r{}, t{};
   for (int c = 0; c < 3; ++c) {
@@ -68,12 +77,12 @@ void BM_SkyRadianceBatch(benchmark::State& state) {
     t.channel[c] = transmittance[c].data();
   }
   for (auto _ : state) {
-    sky.skyRadianceBatch(camera, kSun, {d.x.data(), d.y.data(), d.z.data(), kRays}, r, t);
+    sky.skyRadianceBatch(camera, sun, {d.x.data(), d.y.data(), d.z.data(), kRays}, r, t);
     benchmark::DoNotOptimize(radiance[0].data());
   }
   state.SetItemsProcessed(state.iterations() * kRays);
 }
-BENCHMARK(BM_SkyRadianceBatch)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SkyRadianceBatch)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

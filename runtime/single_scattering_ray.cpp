@@ -1,0 +1,55 @@
+#include "runtime/single_scattering_ray.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "runtime/atmosphere_media.h"
+#include "runtime/ray_quadrature.h"
+
+namespace skybake {
+
+SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
+                                           const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
+                                           double t_end, int segments) {
+  const AtmosphereMedia media(a);
+  const double r = ray.r, mu = ray.mu;
+  auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };
+  SpectrumD rayleigh(0.0), mie(0.0);
+  auto node = [&](double t, double w) {
+    const double r_t = radiusAt(t);
+    const double altitude = r_t - a.bottom_radius_m;
+    const double mu_s_t = clampCosine((r * ray.mu_s + t * ray.nu) / r_t);
+    // As TableSampler::transmittanceToSun, with one exponential for the
+    // sunlight's whole path, to the node and on to the ray's start.
+    const TableSampler::SunFromR sun(sampler, r_t, a.sun_angular_radius_rad);
+    const double visible = sun.visibleFraction(mu_s_t);
+    if (visible <= 0.0) return;  // in the planet's shadow
+    const Spectrum depth = sun.opticalDepth(optical_depth, sun.muCoord(mu_s_t)) +
+                           sampler.opticalDepthAlongRay(optical_depth, r, mu, t, ray.ray_intersects_ground);
+    const SpectrumD light(glm::exp(-depth) * static_cast<float>(visible));
+    rayleigh += light * (w * media.rayleighDensity(altitude));
+    mie += light * (w * media.mieDensity(altitude));
+  };
+  const ShadowCrossings crossings =
+      planetShadowCrossings(r, mu, ray.mu_s, ray.nu, a.bottom_radius_m, t_end);
+  const double length = t_end - t_start;
+  double piece_start = t_start;
+  for (int i = 0; i <= crossings.count; ++i) {
+    const bool last = i == crossings.count;
+    const double piece_end = last ? t_end : std::clamp(crossings.distance[i], t_start, t_end);
+    if (!last && !(piece_end > piece_start)) continue;
+    // Sub-intervals no longer than the whole ray's: as accurate, and a ray
+    // cut in pieces costs a few nodes more than a whole one, not a whole
+    // rule per piece.
+    const double share = length > 0.0 ? (piece_end - piece_start) / length : 1.0;
+    const int piece_segments = std::clamp(static_cast<int>(std::ceil(segments * share)), 1, segments);
+    forEachOpticallyThinNode(piece_start, piece_end, piece_segments, -r * mu,
+                             [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
+                             node);
+    piece_start = piece_end;
+  }
+  return {Spectrum(rayleigh) * a.sun_irradiance * a.rayleigh_scattering,
+          Spectrum(mie) * a.sun_irradiance * a.mie_scattering};
+}
+
+}  // namespace skybake

@@ -1,0 +1,40 @@
+// Single scattering of sunlight along one view ray, integrated from the
+// transmittance table: the bake fills its single-scattering tables with it,
+// and lookups with the sun below the horizon use it instead of those tables
+// (see Sky). Each piece of the ray between the edges of the planet's shadow
+// gets its own Gauss-Legendre rule, so no rule spans the jump where the sun
+// appears or disappears.
+#pragma once
+
+#include "data_formats/atmosphere_parameters.h"
+#include "runtime/planet_shadow.h"
+#include "runtime/table_sampler.h"
+
+namespace skybake {
+
+// Rayleigh and Mie single scattering, each without its phase function.
+struct SingleScattering {
+  Spectrum rayleigh;
+  Spectrum mie;
+};
+
+// A view ray in the shell: from radius r at zenith cosine mu, the sun at
+// zenith cosine mu_s making cosine nu with the view.
+struct SunlitRay {
+  double r;
+  double mu;
+  double mu_s;
+  double nu;
+  bool ray_intersects_ground;
+};
+
+// Single scattering over [t_start, t_end] of `ray` (metres from its start),
+// seen from the ray's start; `segments` is how many sub-intervals of 4
+// Gauss nodes the whole of [t_start, t_end] gets, shared among the pieces by
+// length (at least one each; optically thick ones are split further, see
+// ray_quadrature.h).
+SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
+                                           const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
+                                           double t_end, int segments);
+
+}  // namespace skybake
