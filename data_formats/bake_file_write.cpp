@@ -50,7 +50,17 @@ struct PartToWrite {
   // (single Mie scattering combined into single_rayleigh), or none.
   std::string extra_channel = {};
   const std::vector<Spectrum>* extra_texels = nullptr;
+  // Stored as FLOAT whatever bake.precision says (FORMAT.md).
+  bool always_float = false;
 };
+
+// The multiple-scattering density is light per metre: 1e-6 to 1e-7 W m^-3
+// nm^-1 by day and far less in twilight, where half's normal range ends
+// (6e-5) and its subnormals keep a few bits or round to 0. Stored as half,
+// radiance toward a point in twilight came out 25 to 55 % off.
+bool storedAsHalf(const BakeFile& bake, const PartToWrite& part) {
+  return bake.config.bake.precision == StoragePrecision::Half && !part.always_float;
+}
 
 // Parts of a multi-part file must share one display window; each part's data
 // window is its own table size.
@@ -61,8 +71,7 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
   header.setName(part.name);
   header.setType(Imf::SCANLINEIMAGE);
   header.compression() = Imf::ZIP_COMPRESSION;
-  const Imf::PixelType type =
-      bake.config.bake.precision == StoragePrecision::Half ? Imf::HALF : Imf::FLOAT;
+  const Imf::PixelType type = storedAsHalf(bake, part) ? Imf::HALF : Imf::FLOAT;
   for (double wavelength : a.wavelengths_nm) {
     header.channels().insert(channelName(wavelength), Imf::Channel(type));
   }
@@ -99,9 +108,9 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
   for (const PartToWrite& part : parts) headers.push_back(makeHeader(bake, part, display_window));
   Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
   const int channels = bake.config.atmosphere.channelCount();
-  const bool half = bake.config.bake.precision == StoragePrecision::Half;
   for (size_t i = 0; i < parts.size(); ++i) {
     const PartToWrite& part = parts[i];
+    const bool half = storedAsHalf(bake, part);
     Imf::OutputPart out(file, static_cast<int>(i));
     Imf::FrameBuffer frame;
     // Half storage: convert here, one half4 per texel, same layout as the floats.
@@ -169,6 +178,8 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
        "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_density.texels,
        t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
   };
+  auto is_density = [](const PartToWrite& p) { return p.name == std::string_view(kPartMultipleDensity); };
+  std::find_if(parts.begin(), parts.end(), is_density)->always_float = true;
   if (bakeStoresCombinedSingleMie(bake.config)) {
     auto is_rayleigh = [](const PartToWrite& p) { return p.name == std::string_view(kPartSingleRayleigh); };
     PartToWrite& rayleigh = *std::find_if(parts.begin(), parts.end(), is_rayleigh);

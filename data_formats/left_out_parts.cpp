@@ -24,7 +24,9 @@ std::vector<LeftOutPart> leftOutParts(const BakeConfig& c) {
                    table_4d / n * (n - 1)});
   }
   if (!c.scene.radiance_to_points) {
-    out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", table_4d});
+    // Always stored as float (FORMAT.md).
+    const uint64_t float_table_4d = table_4d / value_bytes * (4 * c.atmosphere.channelCount());
+    out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", float_table_4d});
   }
   if (!c.scene.ground_irradiance) {
     out.push_back({bake_file::kPartIrradiance, "scene.outputs without ground_irradiance",

@@ -34,6 +34,10 @@ constexpr double kHorizonBlendCosine = 0.002;
 // show as seams; there the segment is integrated directly from the
 // single-scattering source and the tabulated multiple-scattering source.
 // Between the two lengths the results are blended linearly in distance.
+// With the sun below the horizon every segment is integrated directly, as
+// single scattering along whole rays is (kIntegratedSingleScatteringTopCosine):
+// the tables' twilight difference was 4.3 / 4.2 / 3.8 % RMS off on the
+// standard set, the direct integral is 3.1 / 3.8 / 3.6 % (reference noise 3 %).
 constexpr double kDirectSegmentMaxLength_m = 20000.0;
 constexpr double kDifferenceSegmentMinLength_m = 10000.0;
 // 4 sub-intervals x 4 Gauss nodes: a vertical 20 km segment holds 17 Mie
@@ -263,10 +267,11 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
 
   const bool ground = start.ends_on_ground;
   const double scattering_length = std::max(d - shadow, 0.0);
-  const double direct_weight =
+  const double direct_weight = std::max(
       std::clamp((kDirectSegmentMaxLength_m - scattering_length) /
                      (kDirectSegmentMaxLength_m - kDifferenceSegmentMinLength_m),
-                 0.0, 1.0);
+                 0.0, 1.0),
+      integratedSingleScatteringWeight(withBakedSun({r, mu, mu_s, nu, start.ends_on_ground}).mu_s));
   Spectrum radiance(0.0f);
   Spectrum transmittance(0.0f);
   if (direct_weight > 0.0) {

@@ -7,15 +7,16 @@ namespace skybake {
 namespace {
 
 TEST(SizeChoice, PicksTheCheapestSweptSizeThatMeetsTheTarget) {
-  // The sweep's worst of day and low sun: 3.95, 1.39, 0.61, 0.44 %.
-  const std::optional<SizeChoice> one = chooseSizesForError(1.0);
+  // The sweep's worst of day and low sun: 2.36, 0.82, 0.48, 0.33 %.
+  const std::optional<SizeChoice> one = chooseSizesForError(0.5);
   ASSERT_TRUE(one);
   EXPECT_EQ(one->scale, 1.0);
-  EXPECT_EQ(one->predicted_percent, 0.61);
-  const std::optional<SizeChoice> half = chooseSizesForError(0.5);
-  ASSERT_TRUE(half);
-  EXPECT_EQ(half->scale, 1.5);
-  EXPECT_EQ(chooseSizesForError(1.39)->scale, 0.75);  // a target equal to a swept figure meets it
+  EXPECT_EQ(one->predicted_percent, 0.48);
+  const std::optional<SizeChoice> finer = chooseSizesForError(0.4);
+  ASSERT_TRUE(finer);
+  EXPECT_EQ(finer->scale, 1.5);
+  EXPECT_EQ(chooseSizesForError(0.82)->scale, 0.75);  // a target equal to a swept figure meets it
+  EXPECT_EQ(chooseSizesForError(1.0)->scale, 0.75);
   EXPECT_EQ(chooseSizesForError(50.0)->scale, 0.5);
   EXPECT_FALSE(chooseSizesForError(0.3));
   // Cheaper sizes never come with a smaller swept error (else the choice

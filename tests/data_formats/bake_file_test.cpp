@@ -89,6 +89,23 @@ TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {
   }
 }
 
+// The multiple-scattering density is light per metre, far below half's
+// normal range in twilight: a half bake still stores it as float, exactly.
+TEST_F(BakeFileTest, HalfPrecisionKeepsTheDensityInFloat) {
+  BakeFile written = syntheticBake();
+  written.config.bake.precision = StoragePrecision::Half;
+  for (Spectrum& v : written.tables.multiple_density.texels) v *= 1e-9f;  // below half's smallest subnormal, 6e-8
+  for (Spectrum& v : written.tables.single_rayleigh.texels) v *= 1e-9f;
+  const fs::path path = dir / "half_density.exr";
+  writeBakeFile(path, written);
+  const BakeFile read = readBakeFile(path);
+  for (size_t i = 0; i < read.tables.multiple_density.texels.size(); ++i) {
+    ASSERT_EQ(read.tables.multiple_density.texels[i][0], written.tables.multiple_density.texels[i][0]) << i;
+  }
+  // The other parts are half: the same values round to 0 there.
+  EXPECT_EQ(read.tables.single_rayleigh.texels[0][0], 0.0f);
+}
+
 TEST_F(BakeFileTest, FailedWriteLeavesExistingFileIntactAndNoTemporary) {
   const fs::path path = dir / "bake.exr";
   writeBakeFile(path, syntheticBake());
