@@ -11,6 +11,8 @@ namespace skybake {
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
                                            double t_end, int segments) {
+  // A light shaft's shadow can reach past the ray's end: nothing is lit.
+  if (!(t_end > t_start)) return {Spectrum(0.0f), Spectrum(0.0f)};
   const AtmosphereMedia media(a);
   const double r = ray.r, mu = ray.mu;
   auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };

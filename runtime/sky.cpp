@@ -142,8 +142,10 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
              : glm::exp(-sampler_.opticalDepthToTop(t.transmittance, r, mu));
 
   // Light shafts: only the part of the ray beyond the shadow scatters, seen
-  // through the shadowed part. Without a shadow that part starts here.
-  const double shadow = std::max(shadow_length_m - start.moved, 0.0);
+  // through the shadowed part. Without a shadow that part starts here; a
+  // shadow longer than the ray leaves nothing lit (looked up past the ray's
+  // end, the tables gave light from nowhere: 36 times the unshadowed sky).
+  const double shadow = std::clamp(shadow_length_m - start.moved, 0.0, start.length);
   double r_p = r, mu_p = mu, mu_s_p = mu_s;
   Spectrum shadow_transmittance(1.0f);
   if (shadow > 0.0) {

@@ -197,6 +197,30 @@ TEST(Sky, NoStepInTheSkyAsTheSunSets) {
   RecordProperty("worst_rate_change", std::to_string(worst));
 }
 
+// Light shafts: a shadow of scene geometry over the ray's first part leaves
+// less light, never negative light, even when it reaches past the ray's end.
+TEST(Sky, LightShaftShadowsOnlyTakeLightAway) {
+  const Sky& sky = bakedSky("earth.exr");
+  const double bottom = sky.atmosphere().bottom_radius_m;
+  for (double sun_zenith : {60.0, 93.0}) {
+    for (double view_zenith : {45.0, 89.0, 120.0}) {
+      const glm::dvec3 camera(0.0, 0.0, bottom + 1000.0), view = direction(view_zenith, 30.0),
+          sun = direction(sun_zenith, 0.0);
+      const Spectrum unshadowed = sky.skyRadiance(camera, view, sun).radiance;
+      for (double shadow_m : {1000.0, 50000.0, 1e7}) {
+        const Spectrum shadowed = sky.skyRadiance(camera, view, sun, shadow_m).radiance;
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_TRUE(std::isfinite(shadowed[c]));
+          EXPECT_GE(shadowed[c], 0.0f) << "sun " << sun_zenith << " view " << view_zenith << " shadow " << shadow_m;
+          // Float rounding of the blended lookups: 1e-6 relative.
+          EXPECT_LE(shadowed[c], unshadowed[c] * (1.0f + 1e-6f))
+              << "sun " << sun_zenith << " view " << view_zenith << " shadow " << shadow_m;
+        }
+      }
+    }
+  }
+}
+
 TEST(Sky, TransmittanceLookupsMatchQuadrature) {
   const Sky& sky = bakedSky("earth.exr");
   const AtmosphereParameters& a = sky.atmosphere();
