@@ -99,12 +99,16 @@ void checkNonIncreasing(InvariantResult& result, const std::vector<Spectrum>& al
   result.pass();
 }
 
-void checkContinuous(InvariantResult& result, const Spectrum& a, const Spectrum& b, double floor, int channels,
-                     const std::string& where) {
+void checkContinuous(InvariantResult& result, const Spectrum& before, const Spectrum& a, const Spectrum& b,
+                     double floor, int channels, const std::string& where) {
+  auto relativeChange = [floor](const Spectrum& x, const Spectrum& y, int c) {
+    const double scale = std::max({std::abs(double(x[c])), std::abs(double(y[c])), floor});
+    return std::abs(double(x[c]) - double(y[c])) / scale;
+  };
   for (int c = 0; c < channels; ++c) {
-    const double scale = std::max({std::abs(double(a[c])), std::abs(double(b[c])), floor});
-    const double change = std::abs(double(a[c]) - double(b[c])) / scale;
-    if (!(change <= kContinuityMaxRelativeChange)) {
+    const double change = relativeChange(a, b, c);
+    const bool slope = change <= kContinuitySlopeRatio * relativeChange(before, a, c);
+    if (!(change <= kContinuityMaxRelativeChange || slope)) {
       result.fail(excessOf(change, change), fmt::format("{} ch{}: {} -> {} ({:.1f} %)", where, c, a[c], b[c],
                                                         100.0 * change));
       return;

@@ -139,6 +139,7 @@ class Checks {
       for (int si = 0; si < kContinuitySunAngles; ++si) {
         const double sun_zenith = lowest_sun_rad * (si + 0.5) / kContinuitySunAngles;
         const glm::dvec3 sun = sunDirection(sun_zenith);
+        const glm::dvec3 sun_before = sunDirection(sun_zenith - kContinuityStep_rad);
         const glm::dvec3 sun_moved = sunDirection(sun_zenith + kContinuityStep_rad);
         // No pair within kHorizonExclusion_rad of the ground horizon: there
         // the ray's length through the densest air has a square-root
@@ -156,20 +157,23 @@ class Checks {
         for (double zenith : zeniths) {
           for (double azimuth : {0.0, 0.5 * M_PI, M_PI}) {
             const glm::dvec3 view = direction(std::cos(zenith), azimuth);
+            const glm::dvec3 view_before = direction(std::cos(zenith - kContinuityStep_rad), azimuth);
             const glm::dvec3 view_moved = direction(std::cos(zenith + kContinuityStep_rad), azimuth);
             const std::string where = fmt::format("{} view zenith {:.5f} rad az {:.2f} sun zenith {:.4f} rad", cam.name,
                                                   zenith, azimuth, sun_zenith);
             const RadianceAndTransmittance sky = sky_.skyRadiance(camera, view, sun);
-            checkContinuous(view_continuity_, sky.radiance, sky_.skyRadiance(camera, view_moved, sun).radiance,
-                            floor, channels_, "sky " + where);
-            checkContinuous(sun_continuity_, sky.radiance, sky_.skyRadiance(camera, view, sun_moved).radiance, floor,
-                            channels_, "sky " + where);
+            checkContinuous(view_continuity_, sky_.skyRadiance(camera, view_before, sun).radiance, sky.radiance,
+                            sky_.skyRadiance(camera, view_moved, sun).radiance, floor, channels_, "sky " + where);
+            checkContinuous(sun_continuity_, sky_.skyRadiance(camera, view, sun_before).radiance, sky.radiance,
+                            sky_.skyRadiance(camera, view, sun_moved).radiance, floor, channels_, "sky " + where);
             const RadianceAndTransmittance received = sky_.receivedRadiance(camera, view, sun);
-            checkContinuous(view_continuity_, received.radiance, sky_.receivedRadiance(camera, view_moved, sun).radiance,
-                            floor, channels_, "received " + where);
-            checkContinuous(sun_continuity_, received.radiance, sky_.receivedRadiance(camera, view, sun_moved).radiance,
-                            floor, channels_, "received " + where);
-            lookups_ += 6;
+            checkContinuous(view_continuity_, sky_.receivedRadiance(camera, view_before, sun).radiance,
+                            received.radiance, sky_.receivedRadiance(camera, view_moved, sun).radiance, floor,
+                            channels_, "received " + where);
+            checkContinuous(sun_continuity_, sky_.receivedRadiance(camera, view, sun_before).radiance,
+                            received.radiance, sky_.receivedRadiance(camera, view, sun_moved).radiance, floor,
+                            channels_, "received " + where);
+            lookups_ += 10;
           }
         }
       }

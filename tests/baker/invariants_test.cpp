@@ -99,15 +99,19 @@ TEST(Invariants, GrowingOrdersFailFromTheThirdOrderOn) {
 TEST(Invariants, AJumpBetweenNeighbouringLookupsFails) {
   InvariantResult r("continuity");
   const double floor = 0.01;
-  checkContinuous(r, Spectrum(1.0f), Spectrum(1.01f), floor, kChannels, "smooth");
+  checkContinuous(r, Spectrum(0.99f), Spectrum(1.0f), Spectrum(1.01f), floor, kChannels, "smooth");
   // Tiny values: compared against the floor, not against themselves.
-  checkContinuous(r, Spectrum(1e-4f), Spectrum(2e-4f), floor, kChannels, "near zero");
+  checkContinuous(r, Spectrum(0.0f), Spectrum(1e-4f), Spectrum(2e-4f), floor, kChannels, "near zero");
+  // A steep slope: 7 % per step, 6.5 % the step before.
+  checkContinuous(r, Spectrum(1.07f), Spectrum(1.0f), Spectrum(0.93f), floor, kChannels, "steep");
   EXPECT_TRUE(r.passed());
-  checkContinuous(r, Spectrum(0.0788f), Spectrum(0.0f), floor, kChannels, "jump");
+  checkContinuous(r, Spectrum(0.0788f), Spectrum(0.0788f), Spectrum(0.0f), floor, kChannels, "jump");
   EXPECT_FALSE(r.passed());
   EXPECT_NEAR(r.worst_excess, 1.0, 1e-6);
-  checkContinuous(r, Spectrum(1.0f), Spectrum(std::nanf("")), floor, kChannels, "nan");
-  EXPECT_EQ(r.failed, 2);
+  // 7 % after a flat step is a jump too.
+  checkContinuous(r, Spectrum(1.0f), Spectrum(1.0f), Spectrum(0.93f), floor, kChannels, "step");
+  checkContinuous(r, Spectrum(1.0f), Spectrum(1.0f), Spectrum(std::nanf("")), floor, kChannels, "nan");
+  EXPECT_EQ(r.failed, 3);
 }
 
 TEST(Invariants, FiniteNonNegativeValuesRejectNaNAndNegatives) {
