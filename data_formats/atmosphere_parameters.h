@@ -118,8 +118,12 @@ struct SceneRanges {
   std::optional<std::array<double, 2>> altitude_m;
   // Sun zenith angles, degrees: [low, high], high <= sun.max_zenith_deg.
   std::optional<std::array<double, 2>> sun_zenith_deg;
+  // Whether the 4D tables hold rays that end on the ground. Without them the
+  // tables' whole mu axis holds the sky; lookups of rays toward the ground
+  // integrate along the ray instead (Sky).
+  bool views_below_horizon = true;
 
-  bool narrows() const { return altitude_m.has_value() || sun_zenith_deg.has_value(); }
+  bool narrows() const { return altitude_m.has_value() || sun_zenith_deg.has_value() || !views_below_horizon; }
 };
 
 struct BakeConfig {

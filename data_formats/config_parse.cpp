@@ -303,7 +303,12 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
 
   if (const toml::table* t = in.table(root, "", "scene", false)) {
-    in.rejectUnknownKeys(*t, "scene.", {"outputs", "altitude_range_m", "sun_zenith_range_deg"});
+    in.rejectUnknownKeys(*t, "scene.", {"outputs", "altitude_range_m", "sun_zenith_range_deg", "views_below_horizon"});
+    if (const toml::node* node = t->get("views_below_horizon")) {
+      auto b = node->as_boolean();
+      if (!b) in.fail(node, "scene.views_below_horizon", ConfigReader::describe(*node), "must be true or false");
+      config.scene_ranges.views_below_horizon = b->get();
+    }
     auto range = [&](std::string_view key, std::optional<std::array<double, 2>>& out) {
       const toml::node* node = t->get(key);
       if (node == nullptr) return;

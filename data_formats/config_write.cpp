@@ -50,6 +50,7 @@ std::string sceneTable(const SceneOutputs& scene, const SceneRanges& ranges) {
   };
   range("altitude_range_m", ranges.altitude_m);
   range("sun_zenith_range_deg", ranges.sun_zenith_deg);
+  if (!ranges.views_below_horizon) text += "views_below_horizon = false\n";
   return text;
 }
 

@@ -23,7 +23,9 @@ std::vector<LeftOutPart> leftOutParts(const BakeConfig& c) {
                    "are rebuilt from the Rayleigh channels",
                    table_4d / n * (n - 1)});
   }
-  if (!c.scene.radiance_to_points) {
+  // Rays toward the ground are integrated over the density when the 4D
+  // tables leave them out ([scene] views_below_horizon), so it stays then.
+  if (!c.scene.radiance_to_points && c.scene_ranges.views_below_horizon) {
     // Always stored as float (FORMAT.md).
     const uint64_t float_table_4d = table_4d / value_bytes * (4 * c.atmosphere.channelCount());
     out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", float_table_4d});

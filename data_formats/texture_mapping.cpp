@@ -63,6 +63,7 @@ AtmosphereDomain AtmosphereDomain::fromConfig(const BakeConfig& config) {
     d.scattering_mu_s_coord_min = muSUnitCoord(d, cosineOfDegrees(high_deg));
     alignTexelWithHorizon(d, config.sizes.scattering_mu_s);
   }
+  d.scattering_ground_views = scene.views_below_horizon;
   return d;
 }
 
@@ -131,7 +132,12 @@ ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const Sca
   const double u_mu = texelCentre(i_mu, s.mu);
   double mu;
   bool ground;
-  if (u_mu < 0.5) {
+  if (!d.scattering_ground_views) {
+    const double d_min = d.top_radius_m - r;
+    const double dist = d_min + (rho + H - d_min) * unitRangeFromTextureCoord(u_mu, s.mu);
+    mu = muFromDistanceToTop(r, dist, rho, H);
+    ground = false;
+  } else if (u_mu < 0.5) {
     const double d_min = r - d.bottom_radius_m;
     const double d_max = rho;
     const double dist = d_min + (d_max - d_min) * unitRangeFromTextureCoord(1.0 - 2.0 * u_mu, s.mu / 2);

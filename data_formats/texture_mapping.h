@@ -36,6 +36,10 @@ struct AtmosphereDomain {
   double scattering_rho_max_m = 0.0;
   double scattering_mu_s_coord_min = 0.0;
   double scattering_mu_s_coord_max = 1.0;
+  // Whether the 4D tables' mu axis holds rays that end on the ground (its
+  // first half) as well as the sky (second half), or only the sky (all of
+  // it): [scene] views_below_horizon.
+  bool scattering_ground_views = true;
 
   // The whole domain: every altitude, every sun up to sun.max_zenith_deg.
   static AtmosphereDomain fromParameters(const AtmosphereParameters& a) {
@@ -49,7 +53,7 @@ struct AtmosphereDomain {
 
   bool narrowed() const {
     return scattering_rho_min_m > 0.0 || scattering_rho_max_m < horizonToTopDistance() ||
-           scattering_mu_s_coord_min > 0.0 || scattering_mu_s_coord_max < 1.0;
+           scattering_mu_s_coord_min > 0.0 || scattering_mu_s_coord_max < 1.0 || !scattering_ground_views;
   }
   // Distance from the ground to the top boundary along the horizontal: the
   // longest path a ray that does not hit the ground spends above one point.
@@ -219,6 +223,12 @@ inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r
                                 double mu, bool ray_intersects_ground) {
   const double r_mu = r * mu;
   const double discriminant = r_mu * r_mu - r * r + d.bottom_radius_m * d.bottom_radius_m;
+  if (!d.scattering_ground_views) {
+    // Sky only, over the whole axis; a ray to the ground is read at the
+    // horizon (Sky does not look those up here).
+    const double dist = ray_intersects_ground ? rho + H : -r_mu + safeSqrt(discriminant + H * H);
+    return textureCoordFromUnitRange(fractionOfRange(dist, d.top_radius_m - r, rho + H), size_mu);
+  }
   if (ray_intersects_ground) {
     // Distance to the ground, between r - bottom (straight down) and rho (the horizon).
     const double dist = -r_mu - safeSqrt(discriminant);

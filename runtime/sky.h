@@ -163,6 +163,10 @@ class Sky {
     if (weight > 0.0) blendInIntegratedSingleScattering(baked, t_start, t_end, weight, s);
     return s;
   }
+  // The radiance scattered toward the start of a ray that ends on the ground,
+  // over its part [t_start, t_end], integrated along it (for bakes whose
+  // tables hold no such rays).
+  Spectrum groundRayRadiance(const SunlitRay& ray, double t_start, double t_end) const;
   // `ray` with a sun outside the baked sun angles moved to the nearest one,
   // as the tables take it (see the geometry conventions above).
   SunlitRay withBakedSun(const SunlitRay& ray) const;

@@ -118,6 +118,12 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
     const double mu = clampCosine(glm::dot(up, dir));
     const double nu = clampCosine(glm::dot(dir, sun_dir));
     const bool ground = rayIntersectsSphere(r, mu, d.bottom_radius_m);
+    if (ground && !d.scattering_ground_views) {
+      // The tables hold no rays toward the ground: integrated, as skyRadiance does.
+      const RadianceAndTransmittance v = skyRadiance(camera, dir, sun_dir);
+      store(i, v.radiance, v.transmittance);
+      continue;
+    }
     const AxisLerp mu_lerp = axisLerpFromTextureCoord(scatteringCoordMu(d, ss.mu, r, rho, H, mu, ground), ss.mu);
     const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, ss.nu);
     const double base = one_plus_g2 - 2.0 * g * nu;

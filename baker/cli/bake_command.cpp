@@ -1,5 +1,6 @@
 // skybake bake [CONFIG.toml] -o OUT.exr [--orders N] [--threads N] [--precision half|float] [--outputs ...]
-//   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH] [--target-error PERCENT] [--combined-single-mie]
+//   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH] [--sky-views-only] [--target-error PERCENT]
+//   [--combined-single-mie]
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -39,6 +40,7 @@ struct BakeOptions {
   std::optional<std::string> target_error;  // "0.5%" or "0.5"; absent: the config's sizes
   bool reproducible = false;
   bool combined_single_mie = false;  // false: from the config
+  bool sky_views_only = false;       // false: from the config
 };
 
 std::string stageSummary(const BakeReport& report) {
@@ -102,6 +104,7 @@ void runBake(const BakeOptions& o) {
   if (!o.sun_zenith_range.empty()) {
     config.scene_ranges.sun_zenith_deg = parseRangeOption("--sun-zenith-range", o.sun_zenith_range);
   }
+  if (o.sky_views_only) config.scene_ranges.views_below_horizon = false;
   std::optional<SizeChoice> size_choice;
   if (o.target_error) {
     size_choice = sizesForTargetError(*o.target_error);
@@ -215,6 +218,10 @@ Command addBakeCommand(CLI::App& app) {
   cmd->add_option("--sun-zenith-range", options->sun_zenith_range,
                   "LOW:HIGH, degrees: the scene's sun zenith angles; the 4D tables cover only these, plus "
                   "1 deg each side (overrides scene.sun_zenith_range_deg).");
+  cmd->add_flag("--sky-views-only", options->sky_views_only,
+                "The scene's views never look below the horizon (sets scene.views_below_horizon = false): the 4D "
+                "tables hold only rays that reach the sky, twice as densely; lookups of rays toward the ground "
+                "integrate along the ray instead, several times slower (docs/LEAVE_OUT.md).");
   cmd->add_option("--target-error", options->target_error,
                   "A sky radiance error to aim for, e.g. 1%: every table size becomes the smallest multiple of "
                   "the default sizes measured in the sweep of the built-in Earth (0.5x, 0.75x, 1x, 1.5x) whose error "

@@ -43,6 +43,10 @@ void runInfo(const std::string& path) {
                "of these sizes\n",
                d.horizonToTopDistance() / (d.scattering_rho_max_m - d.scattering_rho_min_m),
                1.0 / (d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min));
+    if (!d.scattering_ground_views) {
+      fmt::print("               no views below the horizon: the mu axis holds only the sky, 2x as densely; rays "
+                 "toward the ground are integrated at lookup (several times slower)\n");
+    }
   }
   double left_out_mib = 0.0;
   for (const LeftOutPart& p : leftOutParts(c)) {

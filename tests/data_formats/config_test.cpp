@@ -182,6 +182,12 @@ TEST(Config, SceneRangesParseAndRoundTrip) {
   EXPECT_EQ(again.scene_ranges.sun_zenith_deg, c.scene_ranges.sun_zenith_deg);
   EXPECT_EQ(again.sizes.iteration, c.sizes.iteration);
   EXPECT_EQ(configToToml(again), text);
+  // Views below the horizon: on unless the scene says otherwise.
+  EXPECT_TRUE(c.scene_ranges.views_below_horizon);
+  const BakeConfig sky = parseConfig(kMinimal + "[scene]\nviews_below_horizon = false\n", "sky views");
+  EXPECT_FALSE(sky.scene_ranges.views_below_horizon);
+  EXPECT_TRUE(sky.scene_ranges.narrows());
+  EXPECT_FALSE(parseConfig(configToToml(sky), "round trip").scene_ranges.views_below_horizon);
 }
 
 TEST(Config, RejectsBadSceneRanges) {
@@ -196,6 +202,8 @@ TEST(Config, RejectsBadSceneRanges) {
                  {"scene.sun_zenith_range_deg[1]", "150", "sun.max_zenith_deg"});
   expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [\"low\", 90]\n",
                  {"scene.sun_zenith_range_deg[0]", "must be a number"});
+  expectRejected(kMinimal + "[scene]\nviews_below_horizon = \"no\"\n",
+                 {"scene.views_below_horizon", "must be true or false"});
   expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [0, 90]\n[resolution.iteration]\nmu = 33\n",
                  {"resolution.iteration.mu", "33", "must be even"});
 }
