@@ -21,7 +21,10 @@
 // with the sun below the horizon, which is integrated along each view ray
 // over the baked transmittance table (the tables cannot follow the edge of
 // the planet's shadow; see sky.cpp). Such twilight lookups cost about six
-// times a day lookup.
+// times a day lookup. A bake without views below the horizon ([scene]
+// views_below_horizon = false) integrates rays that end on the ground
+// whole, multiple scattering over the baked density (about 20 times a
+// table lookup).
 #pragma once
 
 #include <cstddef>
