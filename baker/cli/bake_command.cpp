@@ -221,7 +221,7 @@ Command addBakeCommand(CLI::App& app) {
   cmd->add_flag("--sky-views-only", options->sky_views_only,
                 "The scene's views never look below the horizon (sets scene.views_below_horizon = false): the 4D "
                 "tables hold only rays that reach the sky, twice as densely; lookups of rays toward the ground "
-                "integrate along the ray instead, several times slower (docs/LEAVE_OUT.md).");
+                "integrate along the ray instead, about 20 times slower (docs/LEAVE_OUT.md).");
   cmd->add_option("--target-error", options->target_error,
                   "A sky radiance error to aim for, e.g. 1%: every table size becomes the smallest multiple of "
                   "the default sizes measured in the sweep of the built-in Earth (0.5x, 0.75x, 1x, 1.5x) whose error "

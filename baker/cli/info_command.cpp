@@ -45,7 +45,7 @@ void runInfo(const std::string& path) {
                1.0 / (d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min));
     if (!d.scattering_ground_views) {
       fmt::print("               no views below the horizon: the mu axis holds only the sky, 2x as densely; rays "
-                 "toward the ground are integrated at lookup (several times slower)\n");
+                 "toward the ground are integrated at lookup (about 20 times slower)\n");
     }
   }
   double left_out_mib = 0.0;
