@@ -18,6 +18,7 @@
 #include "data_formats/bake_file_attributes.h"
 #include "data_formats/error.h"
 #include "runtime/sky.h"
+#include "batch_lookups.h"
 #include "test_configs.h"
 
 namespace skybake {
@@ -55,31 +56,24 @@ TEST(NoMieBake, LeavesOutTheSingleMiePartAndMatchesANegligibleMieBake) {
 
   const glm::dvec3 camera(0.0, 0.0, no_mie.atmosphere().bottom_radius_m + 1000.0);
   const glm::dvec3 sun = glm::normalize(glm::dvec3(0.5, 0.0, 0.8));
-  std::vector<float> x, y, z;
+  std::vector<glm::dvec3> views;
   for (double zenith_deg : {0.0, 45.0, 89.0, 91.0, 135.0}) {
     const double v = zenith_deg * M_PI / 180.0;
-    x.push_back(static_cast<float>(std::sin(v)));
-    y.push_back(0.0f);
-    z.push_back(static_cast<float>(std::cos(v)));
+    views.emplace_back(std::sin(v), 0.0, std::cos(v));
   }
-  std::vector<float> batch[3], unused[3];
-  for (auto& b : batch) b.resize(x.size());
-  for (auto& u : unused) u.resize(x.size());
-  no_mie.skyRadianceBatch(camera, sun, {x.data(), y.data(), z.data(), x.size()},
-                          {{batch[0].data(), batch[1].data(), batch[2].data(), nullptr}},
-                          {{unused[0].data(), unused[1].data(), unused[2].data(), nullptr}});
-  for (size_t i = 0; i < x.size(); ++i) {
-    const glm::dvec3 view(x[i], y[i], z[i]);
-    const Spectrum a = no_mie.skyRadiance(camera, view, sun).radiance;
-    const Spectrum b = tiny_mie.skyRadiance(camera, view, sun).radiance;
-    const Spectrum to_point = no_mie.radianceToPoint(camera, camera + 5000.0 * view, sun).radiance;
+  int i = 0;
+  for (const test::BatchLookup& l : test::lookUpBatch(no_mie, camera, sun, views)) {
+    const Spectrum a = no_mie.skyRadiance(camera, l.view, sun).radiance;
+    const Spectrum b = tiny_mie.skyRadiance(camera, l.view, sun).radiance;
+    const Spectrum to_point = no_mie.radianceToPoint(camera, camera + 5000.0 * l.view, sun).radiance;
     for (int c = 0; c < 3; ++c) {
       EXPECT_GT(a[c], 0.0f) << i;
       // Same tables but for the zero-filled one: equal to float rounding.
       EXPECT_NEAR(a[c], b[c], 1e-5f * b[c]) << i << " channel " << c;
-      EXPECT_NEAR(batch[c][i], a[c], 1e-5f * a[c]) << i << " channel " << c;
+      EXPECT_NEAR(l.value.radiance[c], a[c], 1e-5f * a[c]) << i << " channel " << c;
       EXPECT_TRUE(std::isfinite(to_point[c]) && to_point[c] >= 0.0f) << i;
     }
+    ++i;
   }
 }
 

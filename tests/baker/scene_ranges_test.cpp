@@ -12,6 +12,7 @@
 
 #include "baker/bake.h"
 #include "runtime/sky.h"
+#include "batch_lookups.h"
 #include "test_configs.h"
 
 namespace skybake {
@@ -202,21 +203,10 @@ TEST_F(SceneRangesTest, SkyViewsOnlyBakeMatchesTheWholeDomainAndIntegratesGround
   EXPECT_LT(worst, 0.05);
   // The batch path integrates the same rays.
   const glm::dvec3 camera(0.0, 0.0, whole_->atmosphere().bottom_radius_m + 1200.0), sun = direction(60.0, 0.0);
-  std::vector<float> x, y, z;
-  for (double view_deg : {30.0, 95.0, 150.0}) {
-    const glm::dvec3 v = direction(view_deg, 45.0);
-    x.push_back(float(v.x)); y.push_back(float(v.y)); z.push_back(float(v.z));
-  }
-  std::vector<float> out[3], trans[3];
-  SpectrumBatch radiance{}, transmittance{};
-  for (int ch = 0; ch < 3; ++ch) {
-    out[ch].resize(x.size()); trans[ch].resize(x.size());
-    radiance.channel[ch] = out[ch].data(); transmittance.channel[ch] = trans[ch].data();
-  }
-  sky.skyRadianceBatch(camera, sun, {x.data(), y.data(), z.data(), x.size()}, radiance, transmittance);
-  for (size_t i = 0; i < x.size(); ++i) {
-    const Spectrum v = sky.skyRadiance(camera, glm::dvec3(x[i], y[i], z[i]), sun).radiance;
-    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(out[ch][i], v[ch], 1e-5f * v[ch]);
+  for (const test::BatchLookup& l :
+       test::lookUpBatch(sky, camera, sun, {direction(30.0, 45.0), direction(95.0, 45.0), direction(150.0, 45.0)})) {
+    const Spectrum v = sky.skyRadiance(camera, l.view, sun).radiance;
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(l.value.radiance[ch], v[ch], 1e-5f * v[ch]);
   }
 }
 

@@ -14,6 +14,7 @@
 #include "runtime/ray_quadrature.h"
 #include "data_formats/error.h"
 #include "runtime/sky.h"
+#include "batch_lookups.h"
 
 namespace skybake {
 namespace {
@@ -433,26 +434,16 @@ TEST(Sky, BatchLookupsEqualScalarLookups) {
   for (const glm::dvec3 camera : {glm::dvec3(0.0, 0.0, bottom + 300.0), glm::dvec3(0.0, bottom + 31000.0, 0.0),
                                   glm::dvec3(0.0, 0.0, bottom - 50.0), glm::dvec3(0.0, 0.0, bottom + 400000.0)}) {
   const glm::dvec3 sun = direction(sun_zenith, 10.0);
-  std::vector<float> x, y, z;
+  std::vector<glm::dvec3> views;
   for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
-    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) {
-      const glm::dvec3 d = direction(zenith, azimuth);
-      x.push_back(static_cast<float>(d.x)); y.push_back(static_cast<float>(d.y)); z.push_back(static_cast<float>(d.z));
-    }
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(direction(zenith, azimuth));
   }
-  std::vector<float> out[3], trans[3];
-  SpectrumBatch radiance{}, transmittance{};
-  for (int c = 0; c < 3; ++c) {
-    out[c].resize(x.size()); trans[c].resize(x.size());
-    radiance.channel[c] = out[c].data(); transmittance.channel[c] = trans[c].data();
-  }
-  sky.skyRadianceBatch(camera, sun, {x.data(), y.data(), z.data(), x.size()}, radiance, transmittance);
-  for (size_t i = 0; i < x.size(); ++i) {
-    const RadianceAndTransmittance v = sky.skyRadiance(camera, glm::dvec3(x[i], y[i], z[i]), sun);
+  for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, views)) {
+    const RadianceAndTransmittance v = sky.skyRadiance(camera, l.view, sun);
     for (int c = 0; c < 3; ++c) {
-      EXPECT_NEAR(out[c][i], v.radiance[c], 1e-5f * v.radiance[c] + 1e-10f);
+      EXPECT_NEAR(l.value.radiance[c], v.radiance[c], 1e-5f * v.radiance[c] + 1e-10f);
       // The batch interpolates in another order: float rounding, 1e-5.
-      EXPECT_NEAR(trans[c][i], v.transmittance[c], 1e-5f);
+      EXPECT_NEAR(l.value.transmittance[c], v.transmittance[c], 1e-5f);
     }
   }
   }
