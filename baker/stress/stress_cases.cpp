@@ -171,6 +171,15 @@ std::vector<StressCase> stressCases(bool quick) {
     c.atmosphere.sun_angular_radius_rad = 0.1;
     add("sun_0.1rad", "sun angular radius 0.1 rad (21 times the Sun's)", c);
   }
+  {
+    // Every ray toward the ground is integrated at lookup, not read from
+    // the tables: the runtime path the other cases do not take.
+    BakeConfig c = earth;
+    c.scene_ranges.views_below_horizon = false;
+    c.sizes.iteration = std::array<int, 4>{c.sizes.scattering_r, c.sizes.scattering_mu, c.sizes.scattering_mu_s,
+                                           c.sizes.scattering_nu};
+    add("sky_views_only", "Earth without views below the horizon (scene.views_below_horizon = false)", c);
+  }
   return cases;
 }
 
