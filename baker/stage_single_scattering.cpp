@@ -118,12 +118,7 @@ void collectPiecewiseNodes(const StageContext& ctx, const Texture2D& optical_dep
   double piece_start = 0.0;
   for (int i = 0; i <= crossings.count; ++i) {
     const double piece_end = i < crossings.count ? crossings.distance[i] : length;
-    // Sub-intervals no longer than the whole ray's: as accurate, and a
-    // ray cut in pieces costs a few nodes more than a whole one, not a
-    // whole rule per piece.
-    const double share = length > 0.0 ? (piece_end - piece_start) / length : 1.0;
-    const int segments = std::clamp(static_cast<int>(std::ceil(kSingleScatteringSegments * share)), 1,
-                                    kSingleScatteringSegments);
+    const int segments = segmentsForPiece(kSingleScatteringSegments, piece_end - piece_start, length);
     collectViewNodes(ctx, optical_depth, r, mu, ray_intersects_ground, piece_start, piece_end, segments, nodes);
     piece_start = piece_end;
   }

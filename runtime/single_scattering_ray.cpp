@@ -40,12 +40,7 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     const bool last = i == crossings.count;
     const double piece_end = last ? t_end : std::clamp(crossings.distance[i], t_start, t_end);
     if (!last && !(piece_end > piece_start)) continue;
-    // Sub-intervals no longer than the whole ray's: as accurate, and a ray
-    // cut in pieces costs a few nodes more than a whole one, not a whole
-    // rule per piece.
-    const double share = length > 0.0 ? (piece_end - piece_start) / length : 1.0;
-    const int piece_segments = std::clamp(static_cast<int>(std::ceil(segments * share)), 1, segments);
-    forEachOpticallyThinNode(piece_start, piece_end, piece_segments, -r * mu,
+    forEachOpticallyThinNode(piece_start, piece_end, segmentsForPiece(segments, piece_end - piece_start, length), -r * mu,
                              [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
                              node);
     piece_start = piece_end;

@@ -168,7 +168,9 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
   }
   if (ground && !domain.scattering_ground_views) {
     // The tables hold no rays toward the ground: integrate this one.
-    return {groundRayRadiance({r, mu, mu_s, nu, ground}, shadow, start.length), transmittance};
+    return {groundRayRadiance({r, mu, mu_s, nu, ground}, shadow, start.length, {r_p, mu_p, mu_s_p, nu, ground},
+                              shadow_transmittance),
+            transmittance};
   }
   const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, shadow, start.length, [&] {
     return SingleScattering{
@@ -361,26 +363,18 @@ void Sky::blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start
   s.mie += (integrated.mie - s.mie) * w;
 }
 
-Spectrum Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end) const {
+Spectrum Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
+                                const Spectrum& to_start) const {
   const BakeTables& t = bake_.tables;
-  const AtmosphereDomain& domain = sampler_.domain();
-  const SunlitRay baked = withBakedSun(ray);
-  const SingleScattering single = integrateSingleScattering(sampler_, t.transmittance, atmosphere(), baked, t_start,
-                                                            t_end, kGroundRaySubintervals);
-  // Multiple scattering from where the light shaft's shadow ends, seen
-  // through the shadow.
-  const double r_p = std::clamp(radiusAlongRay(ray.r, ray.mu, t_start), domain.bottom_radius_m, domain.top_radius_m);
-  const double mu_p = cosineAlongRay(ray.r, ray.mu, t_start, r_p);
-  const double mu_s_p = clampCosine((ray.r * baked.mu_s + t_start * ray.nu) / r_p);
-  const Spectrum through_shadow =
-      t_start > 0.0 ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, ray.r, ray.mu, t_start, true))
-                    : Spectrum(1.0f);
-  const RadianceAndTransmittance multiple =
-      directSegmentRadiance(sampler_, t, atmosphere(), multiple_shape_, r_p, mu_p, mu_s_p, ray.nu,
-                            std::max(t_end - t_start, 0.0), kGroundRaySubintervals, false);
+  const SingleScattering single = integrateSingleScattering(sampler_, t.transmittance, atmosphere(),
+                                                            withBakedSun(ray), t_start, t_end, kGroundRaySubintervals);
+  const SunlitRay baked_from_start = withBakedSun(from_start);
+  const RadianceAndTransmittance multiple = directSegmentRadiance(
+      sampler_, t, atmosphere(), multiple_shape_, baked_from_start.r, baked_from_start.mu, baked_from_start.mu_s,
+      ray.nu, std::max(t_end - t_start, 0.0), kGroundRaySubintervals, false);
   return single.rayleigh * static_cast<float>(rayleighPhase(ray.nu)) +
          single.mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, ray.nu)) +
-         multiple.radiance * through_shadow;
+         multiple.radiance * to_start;
 }
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,

@@ -168,8 +168,10 @@ class Sky {
   }
   // The radiance scattered toward the start of a ray that ends on the ground,
   // over its part [t_start, t_end], integrated along it (for bakes whose
-  // tables hold no such rays).
-  Spectrum groundRayRadiance(const SunlitRay& ray, double t_start, double t_end) const;
+  // tables hold no such rays). `from_start` is the same ray from t_start on,
+  // `to_start` the transmittance over [0, t_start].
+  Spectrum groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
+                             const Spectrum& to_start) const;
   // `ray` with a sun outside the baked sun angles moved to the nearest one,
   // as the tables take it (see the geometry conventions above).
   SunlitRay withBakedSun(const SunlitRay& ray) const;
