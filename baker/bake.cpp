@@ -76,6 +76,10 @@ float lastOrderShare(const std::vector<OrderContribution>& orders, int channels)
 // (and too large) to add: such atmospheres need more computed orders.
 constexpr float kMaxTailRatio = 0.8f;
 
+// The orders after the last computed one as a multiple of it: the sum of the
+// geometric series r + r^2 + ... = r / (1 - r) of the estimated ratio.
+Spectrum tailScale(const TailEstimate& tail) { return tail.ratio / (Spectrum(1.0f) - tail.ratio); }
+
 TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<OrderContribution>& orders, int channels,
                              const Texture4D& last_radiance, const Texture4D& last_density,
                              const MultipleScatteringPhase& last_shape, const MultipleScatteringPhase& stored_shape,
@@ -86,7 +90,6 @@ TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<Orde
     tail.reason = "not applied: needs at least 3 orders to estimate the ratio";
     return tail;
   }
-  Spectrum scale(0.0f);
   for (int c = 0; c < channels; ++c) {
     const float previous = orders[n - 2].mean_radiance[c];
     tail.ratio[c] = previous > 0.0f ? orders[n - 1].mean_radiance[c] / previous : 0.0f;
@@ -95,8 +98,8 @@ TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<Orde
       tail.reason = fmt::format("not applied: order ratio {} outside (0, {})", orders[n - 1].mean_radiance[c] / previous, kMaxTailRatio);
       return tail;
     }
-    scale[c] = tail.ratio[c] / (1.0f - tail.ratio[c]);
   }
+  const Spectrum scale = tailScale(tail);
   addReshaped(sampler, TexelLayout::Scattering, last_radiance, last_shape, stored_shape, scale,
               tables.multiple_scattering);
   addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, scale, tables.multiple_density);
@@ -107,6 +110,27 @@ TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<Orde
   tail.reason = fmt::format("applied after order {}: the remaining orders as a geometric series", orders[n - 1].order);
   return tail;
 }
+
+// A narrowed scene's stored scattering density, computed on the scene's own
+// texels order by order from the whole domain's previous order. Interpolated
+// from the whole domain's summed density instead, it was interpolated twice
+// (there, then again at each lookup), which smoothed the twilight sky's fall
+// with the sun angle and altitude: rays toward the ground integrate it in a
+// bake without views below the horizon, and radiance to a point does in
+// twilight.
+struct SceneDensity {
+  TableSampler sampler;
+  StageContext ctx;
+  ScatteringDensityKernel kernel;
+  Texture4D sum;   // orders 2 .. N, each divided by the stored shape (as in the file)
+  Texture4D last;  // order N's, divided by its own shape
+
+  SceneDensity(const AtmosphereParameters& a, const AtmosphereDomain& domain, const TextureSizes& sizes,
+               ProgressSink& progress)
+      : sampler(domain, sizes), ctx{a, sampler, progress} {}
+  SceneDensity(const SceneDensity&) = delete;  // ctx refers to sampler
+  SceneDensity& operator=(const SceneDensity&) = delete;
+};
 
 class StageRunner {
  public:
@@ -140,7 +164,8 @@ class StageRunner {
 
 }  // namespace
 
-BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& progress) {
+BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink& progress) {
+  const BakeConfig config = settledBakeConfig(requested);
   if (threads > 0) omp_set_num_threads(threads);
   BakeOutput out;
   BakeReport& report = out.report;
@@ -193,16 +218,37 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     density_kernel =
         stage.run("density_kernel", 0, s.r, [&] { return makeScatteringDensityKernel(ctx, optical_depth); });
   }
+  // A scene that narrows the domain stores its 4D tables on its own texels.
+  const AtmosphereDomain scene_domain = AtmosphereDomain::fromConfig(config);
+  std::optional<SceneDensity> scene;
+  if (scene_domain.narrowed()) {
+    scene.emplace(a, scene_domain, config.sizes, progress);
+    const ScatteringSizes& ss = scene->sampler.scatteringSizes();
+    scene->sum = Texture4D(ss.r, ss.mu, ss.mu_s, ss.nu);
+    if (last_order >= 2) {
+      scene->kernel = stage.run("scene_density_kernel", 0, ss.r,
+                                [&] { return makeScatteringDensityKernel(scene->ctx, optical_depth); });
+    }
+  }
   for (int order = 2; order <= last_order; ++order) {
     const MultipleScatteringPhase order_shape(a, order);
     const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple,
                                  previous_shape ? *previous_shape : stored_shape};
     const Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
-      return computeScatteringDensityTable(ctx, *density_kernel, previous, order_shape, delta_irradiance);
+      return computeScatteringDensityTable(ctx, *density_kernel, previous, sampler, order_shape, delta_irradiance);
     });
     addReshaped(sampler, TexelLayout::Density, density, order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_density);
     last_density = density;
+    if (scene) {
+      const ScatteringSizes& ss = scene->sampler.scatteringSizes();
+      scene->last = stage.run("scene_density", order, static_cast<size_t>(ss.r) * ss.mu_s, [&] {
+        return computeScatteringDensityTable(scene->ctx, scene->kernel, previous, sampler, order_shape,
+                                             delta_irradiance);
+      });
+      addReshaped(scene->sampler, TexelLayout::Density, scene->last, order_shape, stored_shape, Spectrum(1.0f),
+                  scene->sum);
+    }
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
       return computeIndirectIrradianceTable(ctx, previous);
     });
@@ -227,19 +273,20 @@ BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& p
     report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density,
                                   previous_shape ? *previous_shape : stored_shape, stored_shape, delta_irradiance,
                                   tables);
+    if (scene && report.tail.applied) {
+      addReshaped(scene->sampler, TexelLayout::Density, scene->last, previous_shape ? *previous_shape : stored_shape,
+                  stored_shape, tailScale(report.tail), scene->sum);
+    }
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";
   }
 
-  // A scene that narrows the domain stores its 4D tables on its own texels.
-  const AtmosphereDomain scene_domain = AtmosphereDomain::fromConfig(config);
-  if (scene_domain.narrowed()) {
-    const TableSampler scene_sampler(scene_domain, config.sizes);
-    const StageContext scene_ctx{a, scene_sampler, progress};
-    const ScatteringSizes& scene_sizes = scene_sampler.scatteringSizes();
+  if (scene) {
+    scene->last = Texture4D();  // no longer needed: free it before the stored tables are built
+    const ScatteringSizes& ss = scene->sampler.scatteringSizes();
     // Single and multiple scattering each advance once per (r, mu) row of the scene's tables.
-    stage.run("scene_tables", 0, 2 * static_cast<size_t>(scene_sizes.r) * scene_sizes.mu, [&] {
-      narrowTablesToScene(scene_ctx, sampler, optical_depth, stored_shape, tables);
+    stage.run("scene_tables", 0, 2 * static_cast<size_t>(ss.r) * ss.mu, [&] {
+      narrowTablesToScene(scene->ctx, sampler, optical_depth, stored_shape, std::move(scene->sum), tables);
     });
   }
 

@@ -69,7 +69,8 @@ struct BakeOutput {
 };
 
 // Runs every stage for `config` on `threads` OpenMP threads (0: OpenMP's
-// default). The result is identical for every thread count.
+// default). The result is identical for every thread count. The file holds
+// the config as settled (settledBakeConfig in data_formats/texture_mapping.h).
 BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& progress);
 
 // The report as stored in the file header (see BakeReport::toJson).

@@ -56,8 +56,9 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
     return product(
         {axis(t.scattering_r), axis(t.scattering_mu), axis(t.scattering_mu_s), axis(t.scattering_nu), texel_bytes});
   };
-  // The orders iterate on the whole domain's tables; a narrowing scene then
-  // builds its 4 stored tables beside them.
+  // The orders iterate on the whole domain's tables; a narrowing scene keeps
+  // its density (the sum and the last order's) beside them and then builds
+  // its other 3 stored tables.
   const TextureSizes iteration = iterationTextureSizes(config);
   const uint64_t iteration_bytes = table4DBytes(iteration);
   const uint64_t stored_bytes = table4DBytes(s);
@@ -65,10 +66,12 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   e.table_4d_bytes = std::max(iteration_bytes, stored_bytes);
   const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
   e.tables_4d_at_peak = tables4DAtPeak(orders) + (narrowed ? 4 : 0);
-  // Alive from before order 2 to the end of the order loop.
-  e.density_kernel_bytes =
-      orders >= 2 ? product({axis(iteration.scattering_r), axis(iteration.scattering_mu), kDensityKernelBytesPerRMu})
-                  : 0;
+  // Alive from before order 2 to the end of the order loop; a narrowing
+  // scene has a second one on its own texels (its density is computed there).
+  auto kernelBytes = [&](const TextureSizes& t) {
+    return product({axis(t.scattering_r), axis(t.scattering_mu), kDensityKernelBytesPerRMu});
+  };
+  e.density_kernel_bytes = orders >= 2 ? sum({kernelBytes(iteration), narrowed ? kernelBytes(s) : 0}) : 0;
   // 2D: the transmittance table, the summed sky irradiance, and the last
   // order's irradiance beside the one being computed.
   e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), transmittance,

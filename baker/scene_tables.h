@@ -12,9 +12,11 @@ namespace skybake {
 // scattering and its density, on `whole`'s texels with every order summed)
 // by the same quantities on `scene`'s texels: single scattering integrated
 // anew, multiple scattering integrated from the whole domain's summed
-// density, the density interpolated from it. Multiple scattering and density
-// are divided by `stored_shape`, as in the file.
+// density, and `scene_density`, the density the bake computed on the scene's
+// texels order by order. Multiple scattering and density are divided by
+// `stored_shape`, as in the file.
 void narrowTablesToScene(const StageContext& scene, const TableSampler& whole, const Texture2D& optical_depth,
-                         const MultipleScatteringPhase& stored_shape, BakeTables& tables);
+                         const MultipleScatteringPhase& stored_shape, Texture4D scene_density,
+                         BakeTables& tables);
 
 }  // namespace skybake

@@ -129,8 +129,8 @@ std::array<float, kAzimuthModes> cosinesOfMultiples(double cos_phi) {
 }  // namespace
 
 Texture4D computeScatteringDensityTable(const StageContext& ctx, const ScatteringDensityKernel& kernel,
-                                        const OrderRadiance& previous, const MultipleScatteringPhase& shape,
-                                        const Texture2D& ground_irradiance) {
+                                        const OrderRadiance& previous, const TableSampler& previous_sampler,
+                                        const MultipleScatteringPhase& shape, const Texture2D& ground_irradiance) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
   const AtmosphereMedia media(a);
@@ -141,7 +141,7 @@ Texture4D computeScatteringDensityTable(const StageContext& ctx, const Scatterin
 
 #pragma omp parallel
   {
-    OrderRadianceAlongNu incident(previous, ctx.sampler, a.mie_phase_g);
+    OrderRadianceAlongNu incident(previous, previous_sampler, a.mie_phase_g);
     RingModes ring;
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {

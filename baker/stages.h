@@ -83,10 +83,13 @@ class OrderRadianceAlongNu {
 // density depends on the direction only and has no horizon split, and a
 // second evaluation on the scattering table's texels (Bruneton's mu) changed
 // no validated figure by more than 0.11 point while doubling this stage.
+// `previous` is read through `previous_sampler`: ctx's own, or the whole
+// domain's where ctx holds a scene's narrowed texels (the kernel is then
+// the scene's, made on ctx).
 struct ScatteringDensityKernel;  // baker/scattering_density_kernel.h: built once per bake
 Texture4D computeScatteringDensityTable(const StageContext& ctx, const ScatteringDensityKernel& kernel,
-                                        const OrderRadiance& previous, const MultipleScatteringPhase& shape,
-                                        const Texture2D& ground_irradiance);
+                                        const OrderRadiance& previous, const TableSampler& previous_sampler,
+                                        const MultipleScatteringPhase& shape, const Texture2D& ground_irradiance);
 
 // Irradiance on a horizontal surface from the sky radiance of one order.
 Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const OrderRadiance& order);

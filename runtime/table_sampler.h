@@ -223,7 +223,9 @@ class TableSampler {
   Spectrum multipleDensity(const Texture4D& table, double r, double mu, double mu_s, double nu) const {
     ScatteringCoord c = scatteringCoord(r, 1.0, mu_s, nu, false);
     c.u_mu = densityCoordMu(mu, table.mu_size);
-    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size));
+    const AxisLerp nu_lerp = axisLerpNu(c.u_nu, table.nu_size);
+    return radianceBlend(mu_s) == Blend::Linear ? sample4D<Blend::Linear>(table, c, nu_lerp)
+                                                : sample4D<Blend::GeometricWhereSteep>(table, c, nu_lerp);
   }
 
   // Linear in mu_s, geometric in r: irradiance falls off with altitude

@@ -2,6 +2,7 @@
 //   [--altitude-range LOW:HIGH] [--sun-zenith-range LOW:HIGH] [--sky-views-only] [--target-error PERCENT]
 //   [--combined-single-mie]
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
+#include "data_formats/texture_mapping.h"
 
 namespace skybake::cli {
 namespace {
@@ -113,6 +115,15 @@ void runBake(const BakeOptions& o) {
     config.sizes.iteration = iteration;
   }
   validateConfig(config, source + " (with command-line overrides)");
+  const BakeConfig settled = settledBakeConfig(config);
+  if (config.scene_ranges.sun_zenith_deg && !settled.scene_ranges.sun_zenith_deg) {
+    const std::array<double, 2>& range = *config.scene_ranges.sun_zenith_deg;
+    fmt::print(stderr,
+               "skybake: scene.sun_zenith_range_deg {:g}:{:g} covers all but less than a texel of the sun axis "
+               "(0 to {:g} deg): the tables keep the whole axis\n",
+               range[0], range[1], config.atmosphere.sun_max_zenith_deg);
+  }
+  config = settled;
 
   const std::filesystem::path output(o.output_path);
   requireWritableOutput(output, {o.config_path});
