@@ -127,7 +127,10 @@ struct SceneDensity {
 
   SceneDensity(const AtmosphereParameters& a, const AtmosphereDomain& domain, const TextureSizes& sizes,
                ProgressSink& progress)
-      : sampler(domain, sizes), ctx{a, sampler, progress} {}
+      : sampler(domain, sizes),
+        ctx{a, sampler, progress},
+        sum(sampler.scatteringSizes().r, sampler.scatteringSizes().mu, sampler.scatteringSizes().mu_s,
+            sampler.scatteringSizes().nu) {}
   SceneDensity(const SceneDensity&) = delete;  // ctx refers to sampler
   SceneDensity& operator=(const SceneDensity&) = delete;
 };
@@ -223,10 +226,8 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
   std::optional<SceneDensity> scene;
   if (scene_domain.narrowed()) {
     scene.emplace(a, scene_domain, config.sizes, progress);
-    const ScatteringSizes& ss = scene->sampler.scatteringSizes();
-    scene->sum = Texture4D(ss.r, ss.mu, ss.mu_s, ss.nu);
     if (last_order >= 2) {
-      scene->kernel = stage.run("scene_density_kernel", 0, ss.r,
+      scene->kernel = stage.run("scene_density_kernel", 0, scene->sampler.scatteringSizes().r,
                                 [&] { return makeScatteringDensityKernel(scene->ctx, optical_depth); });
     }
   }
@@ -270,12 +271,12 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
   }
 
   if (config.bake.tail_estimate) {
-    report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density,
-                                  previous_shape ? *previous_shape : stored_shape, stored_shape, delta_irradiance,
-                                  tables);
+    const MultipleScatteringPhase& last_shape = previous_shape ? *previous_shape : stored_shape;
+    report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density, last_shape,
+                                  stored_shape, delta_irradiance, tables);
     if (scene && report.tail.applied) {
-      addReshaped(scene->sampler, TexelLayout::Density, scene->last, previous_shape ? *previous_shape : stored_shape,
-                  stored_shape, tailScale(report.tail), scene->sum);
+      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape,
+                  tailScale(report.tail), scene->sum);
     }
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";

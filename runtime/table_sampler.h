@@ -124,6 +124,11 @@ inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const Axi
                          axisLerpFromTextureCoord(c.u_mu_s, t.mu_s_size), nu);
 }
 
+// The same with the blend chosen at run time (see radianceBlend).
+inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu, Blend blend) {
+  return blend == Blend::Linear ? sample4D<Blend::Linear>(t, c, nu) : sample4D<Blend::GeometricWhereSteep>(t, c, nu);
+}
+
 class TableSampler {
  public:
   TableSampler(const AtmosphereDomain& domain, const TextureSizes& sizes)
@@ -214,18 +219,16 @@ class TableSampler {
   Spectrum scattering(const Texture4D& table, double r, double mu, double mu_s, double nu,
                       bool ray_intersects_ground) const {
     const ScatteringCoord c = scatteringCoord(r, mu, mu_s, nu, ray_intersects_ground);
-    const AxisLerp nu_lerp = axisLerpNu(c.u_nu, table.nu_size);
-    return radianceBlend(mu_s) == Blend::Linear ? sample4D<Blend::Linear>(table, c, nu_lerp)
-                                                : sample4D<Blend::GeometricWhereSteep>(table, c, nu_lerp);
+    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s));
   }
 
-  // The multiple-scattering density table (linear mu, see densityCoordMu).
+  // The multiple-scattering density table (linear mu, see densityCoordMu);
+  // its sun texels blended as a radiance lookup's (it falls as steeply with
+  // a setting sun).
   Spectrum multipleDensity(const Texture4D& table, double r, double mu, double mu_s, double nu) const {
     ScatteringCoord c = scatteringCoord(r, 1.0, mu_s, nu, false);
     c.u_mu = densityCoordMu(mu, table.mu_size);
-    const AxisLerp nu_lerp = axisLerpNu(c.u_nu, table.nu_size);
-    return radianceBlend(mu_s) == Blend::Linear ? sample4D<Blend::Linear>(table, c, nu_lerp)
-                                                : sample4D<Blend::GeometricWhereSteep>(table, c, nu_lerp);
+    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s));
   }
 
   // Linear in mu_s, geometric in r: irradiance falls off with altitude
