@@ -9,6 +9,7 @@
 #include "data_formats/bake_file.h"
 #include "data_formats/texture_mapping.h"
 #include "runtime/phase_functions.h"
+#include "runtime/sun_disk.h"
 
 namespace skybake {
 
@@ -185,7 +186,7 @@ class TableSampler {
           r_coord_(transmittanceCoordR(sampler.domain_, sampler.sizes_.transmittance_r,
                                        sampler.domain_.distanceToHorizon(r))),
           tangent_mu_(tangentZenithCosine(r, sampler.domain_.bottom_radius_m)),
-          disk_half_size_(sampler.domain_.bottom_radius_m / r * sun_angular_radius) {}
+          disk_half_size_(sunDiskHalfSizeAtHorizon(sampler.domain_.bottom_radius_m, r, sun_angular_radius)) {}
     double muCoord(double mu_s) const { return mu_coord_(mu_s); }
     double visibleFraction(double mu_s) const { return sunDiskVisibleFraction(mu_s - tangent_mu_, disk_half_size_); }
     // Optical depth to the top at the mu coordinate `u_mu`.
@@ -198,17 +199,6 @@ class TableSampler {
     double r_coord_;
     double tangent_mu_, disk_half_size_;
   };
-
-  // Fraction of the sun disk above the horizon given how far (in cosine) its
-  // centre is above it and the disk's half-size in the same units.
-  // A point sun (half_size 0) is all up or all down. Written with selects
-  // rather than an early return, so loops over many suns vectorize.
-  static double sunDiskVisibleFraction(double height, double half_size) {
-    const double ramp = std::clamp((height + half_size) / (2.0 * half_size), 0.0, 1.0);
-    const double point = height > 0.0 ? 1.0 : 0.0;
-    const double t = half_size > 0.0 ? ramp : point;
-    return t * t * (3.0 - 2.0 * t);  // smooth ramp: no kink in the sky's derivative
-  }
 
   ScatteringCoord scatteringCoord(double r, double mu, double mu_s, double nu,
                                   bool ray_intersects_ground) const {

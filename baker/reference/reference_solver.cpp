@@ -12,6 +12,7 @@
 #include "runtime/phase_functions.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
+#include "runtime/sun_disk.h"
 
 namespace skybake {
 namespace {
@@ -61,12 +62,17 @@ class PathTracer {
 
   double altitude(const glm::dvec3& p) const { return glm::length(p) - a_.bottom_radius_m; }
 
-  // Sun transmittance at p for a point sun: 0 in the planet's shadow.
+  // Sun transmittance at p times the part of the sun disk above p's horizon
+  // (as the bake counts it): 0 in the planet's shadow. The visible part of a
+  // disk centred below the horizon grazes it.
   SpectrumD sunTransmittance(const glm::dvec3& p, const glm::dvec3& sun, int segments) const {
     const double r = std::max(glm::length(p), a_.bottom_radius_m);
     const double mu_s = clampCosine(glm::dot(p, sun) / glm::length(p));
-    if (rayIntersectsSphere(r, mu_s, a_.bottom_radius_m)) return SpectrumD(0.0);
-    return glm::exp(-opticalDepthToTop(media_, r, mu_s, segments));
+    const double horizon_mu = tangentZenithCosine(r, a_.bottom_radius_m);
+    const double visible = sunDiskVisibleFraction(
+        mu_s - horizon_mu, sunDiskHalfSizeAtHorizon(a_.bottom_radius_m, r, a_.sun_angular_radius_rad));
+    if (visible <= 0.0) return SpectrumD(0.0);
+    return glm::exp(-opticalDepthToTop(media_, r, std::max(mu_s, horizon_mu), segments)) * visible;
   }
 
   // Light scattered at p toward -view_dir, from the sun, per unit length.

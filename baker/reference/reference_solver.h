@@ -5,7 +5,9 @@
 // Single scattering (the sun seen through one scattering event, in the air or
 // off the ground) is integrated deterministically along the view ray to high
 // accuracy. Higher orders are path traced in the spherical shell: vertices
-// sampled along each ray, next-event estimation toward a point sun, exact
+// sampled along each ray, next-event estimation toward the sun's centre
+// weighted by the part of its disk above the horizon (runtime/sun_disk.h, the
+// bake's own count, so a sun at the horizon is no model mismatch), exact
 // optical depths by quadrature of the density profiles, Lambertian ground,
 // Rayleigh + Cornette-Shanks Mie + absorption, Russian roulette. Only that
 // part (10 to 30 % of the radiance) is noisy, which cuts the noise several

@@ -15,7 +15,7 @@ namespace {
 
 // Bumped whenever the reference solver's results change: old caches are then
 // simply not found.
-constexpr int kReferenceSolverVersion = 3;  // 3: optically thick sub-intervals split
+constexpr int kReferenceSolverVersion = 4;  // 4: the sun disk counted as the bake counts it
 
 nlohmann::json toJson(const SpectrumD& s) { return {s.x, s.y, s.z, s.w}; }
 SpectrumD spectrumFromJson(const nlohmann::json& j) { return {j.at(0), j.at(1), j.at(2), j.at(3)}; }

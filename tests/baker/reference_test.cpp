@@ -93,5 +93,32 @@ TEST(Reference, FixedSeedIsReproducible) {
   EXPECT_EQ(a.standard_error, b.standard_error);
 }
 
+// The sun is counted as the bake counts it: a camera on the ground with the
+// sun's centre on the horizon sees about half the disk. Along a 1 km
+// horizontal ray at right angles to the sun every point has the sun's centre
+// at zenith cosine 0 and rises at most 8 cm, so its horizon dips by at most
+// 1.6e-4 against the disk's half-size of 4.7e-3: the visible fraction runs
+// from 0.50 to 0.53 (sunDiskVisibleFraction), and single scattering (no
+// paths, deterministic to ~1e-6) is that share of a point sun's. With the
+// sun 1 deg up the whole disk is up and the two agree.
+TEST(Reference, SunOnTheHorizonLightsHalfItsDisk) {
+  BakeConfig disk = builtinEarthConfig();
+  BakeConfig point = disk;
+  point.atmosphere.sun_angular_radius_rad = 0.0;
+  const ReferenceSolver with_disk(disk.atmosphere), with_point(point.atmosphere);
+  const glm::dvec3 camera(0.0, 0.0, disk.atmosphere.bottom_radius_m);
+  const glm::dvec3 view = directionFromZenithAzimuthDeg(90, 90);
+  for (double sun_zenith_deg : {90.0, 89.0}) {
+    const ReferenceRay ray{camera, view, directionFromZenithAzimuthDeg(sun_zenith_deg, 0), 1000.0};
+    const double ratio = with_disk.radiance(ray, 0, 1).value[0] / with_point.radiance(ray, 0, 1).value[0];
+    if (sun_zenith_deg == 90.0) {
+      EXPECT_GE(ratio, 0.50);
+      EXPECT_LE(ratio, 0.53);
+    } else {
+      EXPECT_NEAR(ratio, 1.0, 1e-9);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace skybake

@@ -42,7 +42,7 @@ glm::dvec3 direction(double zenith_deg, double azimuth_deg) {
 // nodes along the view ray (to its end, or to `distance` when > 0), optical
 // depths by quadrature of the density profiles (validated against closed
 // forms in the baker tests), the part of the sun disk above each point's
-// horizon as the bake counts it (TableSampler::sunDiskVisibleFraction).
+// horizon as the bake counts it (sunDiskVisibleFraction).
 Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, const glm::dvec3& view,
                                 const glm::dvec3& sun, double distance = 0.0) {
   const AtmosphereMedia media(a);
@@ -57,8 +57,9 @@ Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, 
   forEachQuadratureNode(0.0, length, 200, [&](double t, double w) {
     const double r_t = radiusAlongRay(r, mu, t);
     const double mu_s_t = (r * mu_s + t * nu) / r_t;
-    const double visible = TableSampler::sunDiskVisibleFraction(
-        mu_s_t - tangentZenithCosine(r_t, a.bottom_radius_m), a.bottom_radius_m / r_t * a.sun_angular_radius_rad);
+    const double visible =
+        sunDiskVisibleFraction(mu_s_t - tangentZenithCosine(r_t, a.bottom_radius_m),
+                               sunDiskHalfSizeAtHorizon(a.bottom_radius_m, r_t, a.sun_angular_radius_rad));
     if (visible <= 0.0) return;  // in the planet's shadow
     const SpectrumD depth = opticalDepthAlongRay(media, r, mu, t) + opticalDepthToTop(media, r_t, mu_s_t);
     const double h = r_t - a.bottom_radius_m;
