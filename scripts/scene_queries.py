@@ -3,7 +3,8 @@
 bake on the queries a narrowed bake answers (docs/LEAVE_OUT.md).
 
 Usage: scene_queries.py DETAILS.csv OUT.csv --altitude-range LOW:HIGH
-                        --sun-zenith-range LOW:HIGH [--bottom-radius-m R]
+                        --sun-zenith-range LOW:HIGH [--points-only]
+                        [--bottom-radius-m R]
 
 DETAILS.csv is what `skybake validate BAKE --details DETAILS.csv` writes (its
 radiance rows are the query set); OUT.csv gets the radiance queries whose
@@ -43,6 +44,7 @@ def main():
     p.add_argument("out")
     p.add_argument("--altitude-range", type=parse_range, required=True)
     p.add_argument("--sun-zenith-range", type=parse_range, required=True)
+    p.add_argument("--points-only", action="store_true", help="keep only the rays to a point")
     p.add_argument("--bottom-radius-m", type=float, default=6360000.0)
     a = p.parse_args()
     with open(a.details, newline="") as f:
@@ -53,6 +55,8 @@ def main():
 
     def inside(row):
         altitudes = (float(row["altitude_m"]), point_altitude_m(row, a.bottom_radius_m))
+        if a.points_only and not float(row["distance_m"] or 0.0) > 0.0:
+            return False
         return all(alt_lo <= h <= alt_hi for h in altitudes) and sun_lo <= float(row["sun_zenith_deg"]) <= sun_hi
 
     kept = [r for r in rows if inside(r)]
