@@ -40,7 +40,8 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     const bool last = i == crossings.count;
     const double piece_end = last ? t_end : std::clamp(crossings.distance[i], t_start, t_end);
     if (!last && !(piece_end > piece_start)) continue;
-    forEachOpticallyThinNode(piece_start, piece_end, segmentsForPiece(segments, piece_end - piece_start, length), -r * mu,
+    const int piece_segments = segmentsForPiece(segments, piece_end - piece_start, length);
+    forEachOpticallyThinNode(piece_start, piece_end, piece_segments, -r * mu,
                              [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
                              node);
     piece_start = piece_end;

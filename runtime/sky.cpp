@@ -300,8 +300,9 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
   Spectrum transmittance(0.0f);
   if (direct_weight > 0.0) {
     const float w = static_cast<float>(direct_weight);
-    const RadianceAndTransmittance direct = directSegmentRadiance(
-        sampler_, t, atmosphere(), multiple_shape_, r, mu, mu_s, nu, scattering_length, kDirectSegmentSubintervals, true);
+    const RadianceAndTransmittance direct =
+        directSegmentRadiance(sampler_, t, atmosphere(), multiple_shape_, r, mu, mu_s, nu, scattering_length,
+                              kDirectSegmentSubintervals, true);
     radiance += direct.radiance * w;
     // With a shadow the segment to the point is longer than the lit part.
     transmittance += (shadow > 0.0 ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground))

@@ -153,8 +153,8 @@ TEST_F(SceneRangesTest, LookupsOutsideTheRangesAreClampedToTheirEnds) {
 // integrated at lookup: by day and at low sun both agree with the
 // whole-domain bake within its own interpolation error at these sizes (the
 // bounds of the test above; measured 0.08 % RMS on the sky, 0.9 % on ground
-// rays, worst 2.3 %: the whole domain's ground half has 32 mu texels here). In twilight the whole-domain tables are no yardstick at these
-// sizes (16 sun texels: the integrated ground rays differ by 10 to 25 %
+// rays, worst 2.3 %: the whole domain's ground half has 32 mu texels here).
+// In twilight the whole-domain tables are no yardstick at these sizes (16 sun texels: the integrated ground rays differ by 10 to 25 %
 // there; against the reference at the default sizes they are the more
 // accurate, docs/LEAVE_OUT.md), so there they must only be finite. The
 // density they integrate over stays in the file even for a scene without
