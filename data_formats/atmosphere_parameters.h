@@ -67,7 +67,7 @@ struct TextureSizes {
   int scattering_nu = 8;
   // [resolution] iteration, r, mu, mu_s and nu: the 4D sizes the orders
   // iterate on over the whole domain when a [scene] narrows the stored
-  // tables (iterationTextureSizes in texture_mapping.h). Absent: the default
+  // tables (iterationTextureSizes in baker/bake/bake_policy.h). Absent: the default
   // scattering sizes above. Unused without scene ranges (which the command
   // line can add to a config).
   std::optional<std::array<int, 4>> iteration;

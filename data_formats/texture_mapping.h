@@ -69,20 +69,6 @@ struct AtmosphereDomain {
   }
 };
 
-// The sizes the bake's orders iterate on: the stored ones, except that a
-// scene that narrows the domain iterates over the whole domain at
-// resolution.iteration (default: the default scattering sizes).
-TextureSizes iterationTextureSizes(const BakeConfig& config);
-
-// The config as the bake uses and stores it: a sun range that would add less
-// than a texel's worth of resolution to the sun axis is dropped (the tables
-// keep the whole axis, on the iteration's own sun texels), and a scene that
-// narrows the domain gets its resolution.iteration written out: the default
-// scattering sizes, with the stored tables' mu_s where the sun axis stays
-// whole and that is larger, so that the stored tables' sun texels are the
-// iteration's. bakeAtmosphere settles its config this way.
-BakeConfig settledBakeConfig(BakeConfig config);
-
 // [0, 1] -> texture coordinate whose texel centres hit 0 and 1 exactly.
 inline double textureCoordFromUnitRange(double x, int size) {
   return 0.5 / size + x * (1.0 - 1.0 / size);

@@ -13,14 +13,15 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
-#include "baker/available_memory.h"
-#include "baker/bake.h"
-#include "baker/bake_memory_estimate.h"
+#include "baker/bake/bake_policy.h"
+#include "baker/cli/available_memory.h"
+#include "baker/bake/bake.h"
+#include "baker/cli/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
-#include "baker/report_sidecar.h"
-#include "baker/size_choice.h"
+#include "baker/cli/report_sidecar.h"
+#include "baker/cli/size_choice.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"

@@ -8,9 +8,9 @@
 
 #include <fmt/format.h>
 
-#include "baker/available_memory.h"
-#include "baker/bake.h"
-#include "baker/bake_memory_estimate.h"
+#include "baker/cli/available_memory.h"
+#include "baker/bake/bake.h"
+#include "baker/cli/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"

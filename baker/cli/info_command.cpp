@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 #include <fmt/format.h>
 
+#include "baker/bake/bake_policy.h"
 #include "baker/cli/commands.h"
 #include "data_formats/bake_file.h"
 #include "data_formats/config.h"

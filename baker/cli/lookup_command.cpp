@@ -3,8 +3,8 @@
 #include <glm/geometric.hpp>
 
 #include "baker/cli/commands.h"
-#include "baker/csv_table.h"
-#include "baker/local_frame.h"
+#include "baker/validation/csv_table.h"
+#include "baker/validation/local_frame.h"
 #include "baker/validation/validation_queries.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"

@@ -7,7 +7,7 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
-#include "baker/available_memory.h"
+#include "baker/cli/available_memory.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/render/sky_image.h"

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <mutex>
 
-#include "baker/progress.h"
+#include "baker/stages/progress.h"
 
 namespace skybake::cli {
 

@@ -6,7 +6,7 @@
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
-#include "baker/report_sidecar.h"
+#include "baker/cli/report_sidecar.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"

@@ -4,8 +4,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "baker/progress.h"
-#include "baker/stages.h"
+#include "baker/stages/progress.h"
+#include "baker/stages/optical_depth_table.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/atmosphere_ray.h"
 
@@ -30,7 +30,7 @@ HillaireMultipleScattering::HillaireMultipleScattering(const AtmosphereParameter
     : a_(a), sizes_(hillaireSizes()), sampler_(AtmosphereDomain::fromParameters(a), sizes_) {
   const auto start = std::chrono::steady_clock::now();
   SilentProgress silent;
-  optical_depth_ = computeTransmittanceTable({a_, sampler_, silent});
+  optical_depth_ = computeOpticalDepthTable({a_, sampler_, silent});
   const AtmosphereMedia media(a_);
   multiple_ = Texture2D(kTableSize, kTableSize);
   const double thickness = a_.top_radius_m - a_.bottom_radius_m;

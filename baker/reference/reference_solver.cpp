@@ -4,7 +4,7 @@
 #include <array>
 #include <vector>
 
-#include "baker/optical_depth.h"
+#include "baker/numerics/optical_depth_integral.h"
 #include "baker/reference/log_linear_proposal.h"
 #include "baker/reference/path_sampler.h"
 #include "runtime/atmosphere_ray.h"

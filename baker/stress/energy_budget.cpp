@@ -40,7 +40,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "baker/gauss_legendre.h"
+#include "baker/numerics/gauss_legendre.h"
 #include "data_formats/ray_sphere.h"
 #include "data_formats/texture_mapping.h"
 #include "runtime/phase_functions.h"

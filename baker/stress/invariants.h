@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 #include "baker/stress/energy_budget.h"
 #include "data_formats/spectrum.h"
 

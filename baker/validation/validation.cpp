@@ -11,7 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/reference/reference_solver.h"
-#include "baker/local_frame.h"
+#include "baker/validation/local_frame.h"
 #include "runtime/atmosphere_ray.h"
 #include "data_formats/error.h"
 #include "runtime/atmosphere_ray.h"

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "baker/progress.h"
+#include "baker/stages/progress.h"
 #include "baker/validation/reference_cache.h"
 #include "baker/validation/validation_queries.h"
 #include "runtime/sky.h"

@@ -2,7 +2,7 @@
 // with per-stage times as counters. Run through scripts/bench_bake.sh.
 #include <benchmark/benchmark.h>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 #include "data_formats/config.h"
 
 namespace {

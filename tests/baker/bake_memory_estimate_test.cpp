@@ -1,4 +1,4 @@
-#include "baker/bake_memory_estimate.h"
+#include "baker/cli/bake_memory_estimate.h"
 
 #include <sys/resource.h>
 
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 #include "test_configs.h"
 
 namespace skybake {

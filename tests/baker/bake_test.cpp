@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 #include "test_configs.h"
 
 namespace skybake {

@@ -10,8 +10,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "baker/bake.h"
-#include "baker/gauss_legendre.h"
+#include "baker/bake/bake.h"
+#include "baker/numerics/gauss_legendre.h"
 #include "baker/reference/reference_solver.h"
 #include "baker/stress/energy_budget.h"
 #include "baker/stress/invariants.h"

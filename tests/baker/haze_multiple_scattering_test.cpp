@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 #include "runtime/sky.h"
 #include "test_configs.h"
 

@@ -14,7 +14,7 @@
 #include <OpenEXR/ImfMultiPartInputFile.h>
 #include <glm/geometric.hpp>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 #include "data_formats/bake_file_attributes.h"
 #include "data_formats/error.h"
 #include "runtime/sky.h"

@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "baker/local_frame.h"
+#include "baker/validation/local_frame.h"
 #include "baker/reference/reference_solver.h"
 #include "test_configs.h"
 

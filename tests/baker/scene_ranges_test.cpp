@@ -10,7 +10,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 #include "runtime/sky.h"
 #include "batch_lookups.h"
 #include "test_configs.h"

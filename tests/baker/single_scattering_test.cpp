@@ -6,7 +6,8 @@
 
 #include <cmath>
 
-#include "baker/stages.h"
+#include "baker/stages/optical_depth_table.h"
+#include "baker/stages/single_scattering_tables.h"
 #include "test_configs.h"
 
 namespace skybake {
@@ -30,7 +31,7 @@ void checkAgainstClosedForm(bool mie, double scale_height_m) {
   SilentProgress silent;
   const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
   const StageContext ctx{a, sampler, silent};
-  const Texture2D optical_depth = computeTransmittanceTable(ctx);
+  const Texture2D optical_depth = computeOpticalDepthTable(ctx);
   const double b = (mie ? a.mie_extinction[0] : a.rayleigh_scattering[0]) * scale_height_m;
   for (double s : {0.2, 0.35, 0.6, 1.0}) {
     for (double v : {0.2, 0.35, 0.6, 1.0}) {

@@ -1,7 +1,7 @@
 // --target-error picks the cheapest swept size that meets the target.
 #include <gtest/gtest.h>
 
-#include "baker/size_choice.h"
+#include "baker/cli/size_choice.h"
 
 namespace skybake {
 namespace {

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "baker/bake.h"
-#include "baker/optical_depth.h"
-#include "baker/stages.h"
+#include "baker/bake/bake.h"
+#include "baker/numerics/optical_depth_integral.h"
+#include "baker/stages/optical_depth_table.h"
 #include "data_formats/config.h"
 
 namespace skybake {
@@ -83,7 +83,7 @@ TEST(Transmittance, VerticalFromGroundMatchesClosedForm) {
 
   SilentProgress silent;
   const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
-  const Texture2D table = computeTransmittanceTable({a, sampler, silent});
+  const Texture2D table = computeOpticalDepthTable({a, sampler, silent});
   // Texel (mu 0, r 0) sits exactly on r = bottom, mu = 1.
   const Spectrum tabulated = table.at(0, 0);
   for (int c = 0; c < 3; ++c) {
@@ -121,7 +121,7 @@ TEST(Transmittance, TableLookupsBetweenTexelsStayWithinTolerance) {
   const AtmosphereParameters& a = config.atmosphere;
   SilentProgress silent;
   const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
-  const Texture2D table = computeTransmittanceTable({a, sampler, silent});
+  const Texture2D table = computeOpticalDepthTable({a, sampler, silent});
   for (double altitude : {0.0, 500.0, 3333.0, 12000.0, 47000.0}) {
     const double r = a.bottom_radius_m + altitude;
     for (double mu : {0.97, 0.61, 0.33, 0.17, 0.08}) {

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <map>
 
-#include "baker/optical_depth.h"
+#include "baker/numerics/optical_depth_integral.h"
 #include "runtime/ray_quadrature.h"
 #include "data_formats/error.h"
 #include "runtime/sky.h"

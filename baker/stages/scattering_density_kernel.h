@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "baker/stages.h"
+#include "baker/stages/stage_context.h"
 
 namespace skybake {
 

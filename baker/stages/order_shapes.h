@@ -4,7 +4,9 @@
 // the nu each was computed for.
 #pragma once
 
-#include "baker/stages.h"
+#include "baker/stages/stage_context.h"
+#include "data_formats/textures.h"
+#include "runtime/multiple_scattering_phase.h"
 
 namespace skybake {
 

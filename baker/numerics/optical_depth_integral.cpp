@@ -1,4 +1,4 @@
-#include "baker/optical_depth.h"
+#include "baker/numerics/optical_depth_integral.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "baker/available_memory.h"
+#include "baker/cli/available_memory.h"
 
 #include <sys/resource.h>
 #include <unistd.h>

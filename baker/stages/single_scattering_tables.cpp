@@ -5,9 +5,9 @@
 #include "runtime/atmosphere_media.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
-#include "baker/row_sun_texels.h"
-#include "baker/vector_exp.h"
-#include "baker/stages.h"
+#include "baker/stages/row_sun_texels.h"
+#include "baker/numerics/vector_exp.h"
+#include "baker/stages/single_scattering_tables.h"
 
 namespace skybake {
 namespace {

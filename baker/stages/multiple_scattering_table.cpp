@@ -4,8 +4,8 @@
 
 #include "runtime/atmosphere_media.h"
 #include "runtime/ray_quadrature.h"
-#include "baker/row_sun_texels.h"
-#include "baker/stages.h"
+#include "baker/stages/row_sun_texels.h"
+#include "baker/stages/multiple_scattering_table.h"
 
 namespace skybake {
 namespace {

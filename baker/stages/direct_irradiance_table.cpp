@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "baker/stages.h"
+#include "baker/stages/direct_irradiance_table.h"
 
 namespace skybake {
 

@@ -1,4 +1,4 @@
-#include "baker/csv_table.h"
+#include "baker/validation/csv_table.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,10 +1,11 @@
-#include "baker/bake_memory_estimate.h"
+#include "baker/bake/bake_policy.h"
+#include "baker/cli/bake_memory_estimate.h"
 
 #include <algorithm>
 #include <initializer_list>
 #include <limits>
 
-#include "baker/scattering_density_kernel.h"
+#include "baker/stages/scattering_density_kernel.h"
 #include "data_formats/spectrum.h"
 #include "data_formats/texture_mapping.h"
 

@@ -1,6 +1,6 @@
 #include <omp.h>
 
-#include "baker/stages.h"
+#include "baker/stages/indirect_irradiance_table.h"
 
 namespace skybake {
 namespace {

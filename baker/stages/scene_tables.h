@@ -4,7 +4,9 @@
 // under suns outside the scene's range, so the intermediate tables need it.
 #pragma once
 
-#include "baker/stages.h"
+#include "baker/stages/stage_context.h"
+#include "data_formats/bake_file.h"
+#include "runtime/multiple_scattering_phase.h"
 
 namespace skybake {
 

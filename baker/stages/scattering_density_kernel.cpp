@@ -1,11 +1,11 @@
-#include "baker/scattering_density_kernel.h"
+#include "baker/stages/scattering_density_kernel.h"
 
 #include <omp.h>
 
 #include <array>
 #include <cmath>
 
-#include "baker/gauss_legendre.h"
+#include "baker/numerics/gauss_legendre.h"
 
 namespace skybake {
 namespace {

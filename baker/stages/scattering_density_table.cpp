@@ -14,9 +14,9 @@
 #include <array>
 #include <vector>
 
-#include "baker/scattering_density_kernel.h"
+#include "baker/stages/scattering_density_kernel.h"
 #include "runtime/atmosphere_media.h"
-#include "baker/stages.h"
+#include "baker/stages/scattering_density_table.h"
 
 namespace skybake {
 namespace {

@@ -1,4 +1,4 @@
-#include "baker/stages.h"
+#include "baker/stages/order_radiance.h"
 
 namespace skybake {
 

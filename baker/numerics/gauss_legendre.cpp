@@ -1,4 +1,4 @@
-#include "baker/gauss_legendre.h"
+#include "baker/numerics/gauss_legendre.h"
 
 #include <cmath>
 #include <stdexcept>

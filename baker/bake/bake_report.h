@@ -1,11 +1,12 @@
-// The order loop: from a config to every table of a bake, with timings.
+// What a bake reports about itself: its stages' timings, what each order
+// added, how the number of orders was decided, and the tail estimate. Stored
+// as JSON in the file's header and in the sidecar.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "baker/progress.h"
-#include "data_formats/bake_file.h"
+#include "data_formats/spectrum.h"
 
 namespace skybake {
 
@@ -62,18 +63,5 @@ struct BakeReport {
   // files whatever the machine or thread count.
   std::string toJson(bool with_run_facts = true) const;
 };
-
-struct BakeOutput {
-  BakeFile file;
-  BakeReport report;
-};
-
-// Runs every stage for `config` on `threads` OpenMP threads (0: OpenMP's
-// default). The result is identical for every thread count. The file holds
-// the config as settled (settledBakeConfig in data_formats/texture_mapping.h).
-BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& progress);
-
-// The report as stored in the file header (see BakeReport::toJson).
-void setStoredReport(BakeOutput& bake, bool with_run_facts);
 
 }  // namespace skybake

@@ -1,4 +1,5 @@
-#include "baker/bake.h"
+#include "baker/bake/bake_policy.h"
+#include "baker/bake/bake.h"
 
 #include <omp.h>
 #include <sys/resource.h>
@@ -7,10 +8,15 @@
 #include <limits>
 #include <optional>
 
-#include "baker/order_shapes.h"
-#include "baker/scene_tables.h"
-#include "baker/scattering_density_kernel.h"
-#include "baker/stages.h"
+#include "baker/stages/order_shapes.h"
+#include "baker/stages/scene_tables.h"
+#include "baker/stages/scattering_density_kernel.h"
+#include "baker/stages/optical_depth_table.h"
+#include "baker/stages/direct_irradiance_table.h"
+#include "baker/stages/single_scattering_tables.h"
+#include "baker/stages/scattering_density_table.h"
+#include "baker/stages/indirect_irradiance_table.h"
+#include "baker/stages/multiple_scattering_table.h"
 
 #include <fmt/format.h>
 
@@ -188,7 +194,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
 
   BakeTables& tables = out.file.tables;
   tables.transmittance = stage.run("transmittance", 0, config.sizes.transmittance_r,
-                                   [&] { return computeTransmittanceTable(ctx); });
+                                   [&] { return computeOpticalDepthTable(ctx); });
   const Texture2D& optical_depth = tables.transmittance;
   Texture2D delta_irradiance = stage.run("direct_irradiance", 1, config.sizes.irradiance_r, [&] {
     return computeDirectIrradianceTable(ctx, optical_depth);

@@ -1,11 +1,11 @@
 #include <omp.h>
 
-#include "baker/optical_depth.h"
-#include "baker/stages.h"
+#include "baker/numerics/optical_depth_integral.h"
+#include "baker/stages/optical_depth_table.h"
 
 namespace skybake {
 
-Texture2D computeTransmittanceTable(const StageContext& ctx) {
+Texture2D computeOpticalDepthTable(const StageContext& ctx) {
   const TextureSizes& s = ctx.sampler.sizes();
   Texture2D table(s.transmittance_mu, s.transmittance_r);
   const AtmosphereMedia media(ctx.atmosphere);

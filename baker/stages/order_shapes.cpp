@@ -1,4 +1,4 @@
-#include "baker/order_shapes.h"
+#include "baker/stages/order_shapes.h"
 
 #include <vector>
 

@@ -1,4 +1,7 @@
-#include "baker/scene_tables.h"
+#include "baker/stages/scene_tables.h"
+
+#include "baker/stages/multiple_scattering_table.h"
+#include "baker/stages/single_scattering_tables.h"
 
 namespace skybake {
 

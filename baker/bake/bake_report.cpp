@@ -1,6 +1,6 @@
 #include <nlohmann/json.hpp>
 
-#include "baker/bake.h"
+#include "baker/bake/bake.h"
 
 namespace skybake {
 

@@ -1,4 +1,4 @@
-#include "baker/report_sidecar.h"
+#include "baker/cli/report_sidecar.h"
 
 #include <fstream>
 

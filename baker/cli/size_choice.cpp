@@ -1,4 +1,4 @@
-#include "baker/size_choice.h"
+#include "baker/cli/size_choice.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,25 @@
+// How a bake settles its config before it starts: which scene ranges are
+// worth narrowing the tables to, and the sizes the orders iterate on. Bake
+// policy, not parameterization: readers never need it, since the file states
+// the domain it covers (data_formats/FORMAT.md).
+#pragma once
+
+#include "data_formats/atmosphere_parameters.h"
+
+namespace skybake {
+
+// The sizes the bake's orders iterate on: the stored ones, except that a
+// scene that narrows the domain iterates over the whole domain at
+// resolution.iteration (default: the default scattering sizes).
+TextureSizes iterationTextureSizes(const BakeConfig& config);
+
+// The config as the bake uses and stores it: a sun range that would add less
+// than a texel's worth of resolution to the sun axis is dropped (the tables
+// keep the whole axis, on the iteration's own sun texels), and a scene that
+// narrows the domain gets its resolution.iteration written out: the default
+// scattering sizes, with the stored tables' mu_s where the sun axis stays
+// whole and that is larger, so that the stored tables' sun texels are the
+// iteration's. bakeAtmosphere settles its config this way.
+BakeConfig settledBakeConfig(BakeConfig config);
+
+}  // namespace skybake
