@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "atmosphere_parameters.h"
+#include "bake_file_attributes.h"
 #include "textures.h"
 
 namespace skybake {
@@ -44,6 +45,19 @@ struct BakeTables {
   // nearly equal lookups.
   Texture4D multiple_density;
 };
+
+// Calls fn(part name, texels) for every table of a bake, in the file's part
+// order: the one list of tables that code walking all of them uses, so that a
+// table added later is not missed.
+template <typename Tables, typename Fn>
+void forEachTable(Tables& t, Fn&& fn) {
+  fn(bake_file::kPartTransmittance, t.transmittance.texels);
+  fn(bake_file::kPartSingleRayleigh, t.single_rayleigh.texels);
+  fn(bake_file::kPartSingleMie, t.single_mie.texels);
+  fn(bake_file::kPartMultipleScattering, t.multiple_scattering.texels);
+  fn(bake_file::kPartIrradiance, t.irradiance.texels);
+  fn(bake_file::kPartMultipleDensity, t.multiple_density.texels);
+}
 
 // Whether a bake stores the `single_mie` part: not when no channel has Mie
 // scattering, where it would hold nothing but zeros (a quarter of the file).

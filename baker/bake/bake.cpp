@@ -1,7 +1,5 @@
-#include "baker/bake/bake_policy.h"
 #include "baker/bake/bake.h"
 
-#include <omp.h>
 #include <sys/resource.h>
 
 #include <chrono>
@@ -17,8 +15,11 @@
 #include "baker/stages/scattering_density_table.h"
 #include "baker/stages/indirect_irradiance_table.h"
 #include "baker/stages/multiple_scattering_table.h"
+#include "baker/stages/openmp_threads.h"
 
 #include <fmt/format.h>
+
+#include "baker/bake/bake_policy.h"
 
 namespace skybake {
 namespace {
@@ -98,10 +99,20 @@ TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<Orde
   }
   for (int c = 0; c < channels; ++c) {
     const float previous = orders[n - 2].mean_radiance[c];
-    tail.ratio[c] = previous > 0.0f ? orders[n - 1].mean_radiance[c] / previous : 0.0f;
-    if (!(tail.ratio[c] > 0.0f && tail.ratio[c] < kMaxTailRatio)) {
+    const float last = orders[n - 1].mean_radiance[c];
+    // A channel in which neither order added light has no tail: its ratio
+    // stays 0 and the other channels' tails still apply.
+    if (previous == 0.0f && last == 0.0f) continue;
+    if (!(previous > 0.0f)) {
       tail.ratio = Spectrum(0.0f);
-      tail.reason = fmt::format("not applied: order ratio {} outside (0, {})", orders[n - 1].mean_radiance[c] / previous, kMaxTailRatio);
+      tail.reason = fmt::format("not applied: order {} added light in channel {} where order {} added none",
+                                orders[n - 1].order, c, orders[n - 2].order);
+      return tail;
+    }
+    tail.ratio[c] = last / previous;
+    if (!(tail.ratio[c] > 0.0f && tail.ratio[c] < kMaxTailRatio)) {
+      tail.reason = fmt::format("not applied: order ratio {} outside (0, {})", tail.ratio[c], kMaxTailRatio);
+      tail.ratio = Spectrum(0.0f);
       return tail;
     }
   }
@@ -175,10 +186,10 @@ class StageRunner {
 
 BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink& progress) {
   const BakeConfig config = settledBakeConfig(requested);
-  if (threads > 0) omp_set_num_threads(threads);
+  const ScopedOpenMpThreads thread_count(threads);
   BakeOutput out;
   BakeReport& report = out.report;
-  report.threads = threads > 0 ? threads : omp_get_max_threads();
+  report.threads = thread_count.threads();
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = processCpuSeconds();
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "baker/stages/openmp_threads.h"
 #include "baker/cli/option_checks.h"
 #include "baker/stress/stress_matrix.h"
 #include "data_formats/atomic_file.h"
@@ -37,7 +38,7 @@ std::vector<StressCase> selectedCases(const StressOptions& o) {
 void runStress(const StressOptions& o) {
   if (!o.json_path.empty()) requireWritableOutput(o.json_path);
   const std::vector<StressCase> cases = selectedCases(o);
-  if (o.threads > 0) omp_set_num_threads(o.threads);
+  const ScopedOpenMpThreads thread_count(o.threads);
   const auto start = std::chrono::steady_clock::now();
   std::vector<StressRow> rows;
   for (const StressCase& c : cases) {
@@ -46,7 +47,7 @@ void runStress(const StressOptions& o) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fmt::print("stress matrix ({}, {} cases, {} threads): every table texel and {} runtime lookups per case\n\n{}",
-             o.quick ? "quick" : "full", rows.size(), o.threads > 0 ? o.threads : omp_get_max_threads(),
+             o.quick ? "quick" : "full", rows.size(), thread_count.threads(),
              rows.empty() ? 0 : rows.front().lookups, stressTable(rows));
   int failed = 0;
   for (const StressRow& r : rows) failed += r.passed() ? 0 : 1;
@@ -55,7 +56,7 @@ void runStress(const StressOptions& o) {
   if (!o.json_path.empty()) {
     nlohmann::ordered_json j = stressJson(rows);
     j["quick"] = o.quick;
-    j["threads"] = o.threads > 0 ? o.threads : omp_get_max_threads();
+    j["threads"] = thread_count.threads();
     j["seconds"] = seconds;
     writeFileContentsAtomically(o.json_path, j.dump(2) + "\n");
   }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "baker/stages/openmp_threads.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/cli/report_sidecar.h"
@@ -55,7 +56,7 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
 }
 
 void runValidate(const ValidateOptions& o) {
-  if (o.threads > 0) omp_set_num_threads(o.threads);
+  const ScopedOpenMpThreads thread_count(o.threads);
   for (const std::string& output : {o.json_path, o.details_path}) {
     if (!output.empty()) requireWritableOutput(output, {o.bake_path, o.queries});
   }

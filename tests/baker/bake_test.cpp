@@ -5,6 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <utility>
+
+#include <omp.h>
+#include <unistd.h>
 
 #include "baker/bake/bake.h"
 #include "test_configs.h"
@@ -85,19 +93,71 @@ TEST(Bake, TablesAreFiniteAndNonNegative) {
   }
 }
 
+// Determinism: every table, and the whole written file of a reproducible
+// bake, byte for byte. The tables are walked with forEachTable, so a table
+// added to the bake is compared without this test changing.
 TEST(Bake, ResultIsIdenticalForOneAndTwoThreads) {
   SilentProgress silent;
   const BakeConfig config = test::smallEarth(3);
-  const BakeOutput one = bakeAtmosphere(config, 1, silent);
-  const BakeOutput two = bakeAtmosphere(config, 2, silent);
-  auto identical = [](const std::vector<Spectrum>& a, const std::vector<Spectrum>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Spectrum)) == 0;
+  BakeOutput one = bakeAtmosphere(config, 1, silent);
+  BakeOutput two = bakeAtmosphere(config, 2, silent);
+  std::vector<std::pair<std::string, const std::vector<Spectrum>*>> tables_one, tables_two;
+  forEachTable(one.file.tables, [&](const char* part, const auto& texels) { tables_one.emplace_back(part, &texels); });
+  forEachTable(two.file.tables, [&](const char* part, const auto& texels) { tables_two.emplace_back(part, &texels); });
+  ASSERT_EQ(tables_one.size(), 6u);
+  for (size_t i = 0; i < tables_one.size(); ++i) {
+    const std::vector<Spectrum>& a = *tables_one[i].second;
+    const std::vector<Spectrum>& b = *tables_two[i].second;
+    EXPECT_FALSE(a.empty()) << tables_one[i].first;
+    EXPECT_TRUE(a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Spectrum)) == 0)
+        << tables_one[i].first << " differs between 1 and 2 threads";
+  }
+  setStoredReport(one, false);
+  setStoredReport(two, false);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("skybake_determinism_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  writeBakeFile(dir / "one.exr", one.file);
+  writeBakeFile(dir / "two.exr", two.file);
+  auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
   };
-  EXPECT_TRUE(identical(one.file.tables.transmittance.texels, two.file.tables.transmittance.texels));
-  EXPECT_TRUE(identical(one.file.tables.irradiance.texels, two.file.tables.irradiance.texels));
-  EXPECT_TRUE(identical(one.file.tables.multiple_scattering.texels, two.file.tables.multiple_scattering.texels));
-  EXPECT_TRUE(identical(one.file.tables.single_mie.texels, two.file.tables.single_mie.texels));
-  EXPECT_TRUE(identical(one.file.tables.multiple_density.texels, two.file.tables.multiple_density.texels));
+  const std::string file_one = bytes(dir / "one.exr");
+  EXPECT_FALSE(file_one.empty());
+  EXPECT_TRUE(file_one == bytes(dir / "two.exr")) << "the written files differ between 1 and 2 threads";
+  std::filesystem::remove_all(dir);
+}
+
+// A bake that asks for a thread count leaves OpenMP's setting as it found
+// it: a later bake asking for OpenMP's default (0) gets that default, not
+// the earlier bake's count.
+TEST(Bake, LeavesTheOpenMpThreadCountAsItFoundIt) {
+  SilentProgress silent;
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(3);
+  const BakeConfig config = test::smallEarth(1);
+  EXPECT_EQ(bakeAtmosphere(config, 1, silent).report.threads, 1);
+  EXPECT_EQ(omp_get_max_threads(), 3);
+  EXPECT_EQ(bakeAtmosphere(config, 0, silent).report.threads, 3);
+  omp_set_num_threads(before);
+}
+
+// A channel in which nothing scatters adds no light in any order. The tail
+// estimate then leaves that channel at 0 and applies to the others, and its
+// reason never prints a ratio of zeros (0 / 0 printed "nan").
+TEST(Bake, TailEstimateSkipsAChannelInWhichNothingScatters) {
+  SilentProgress silent;
+  BakeConfig config = test::smallEarth(3);
+  config.atmosphere.rayleigh_scattering[1] = 0.0f;
+  config.atmosphere.mie_scattering[1] = 0.0f;
+  const BakeOutput bake = bakeAtmosphere(config, 0, silent);
+  for (const OrderContribution& o : bake.report.orders) EXPECT_EQ(o.mean_radiance[1], 0.0f) << "order " << o.order;
+  EXPECT_TRUE(bake.report.tail.applied) << bake.report.tail.reason;
+  EXPECT_EQ(bake.report.tail.ratio[1], 0.0f);
+  EXPECT_GT(bake.report.tail.ratio[0], 0.0f);
+  EXPECT_GT(bake.report.tail.ratio[2], 0.0f);
+  EXPECT_EQ(bake.report.tail.reason.find("nan"), std::string::npos) << bake.report.tail.reason;
+  EXPECT_EQ(bake.report.tail.reason.find("inf"), std::string::npos) << bake.report.tail.reason;
 }
 
 }  // namespace
