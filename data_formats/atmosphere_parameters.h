@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "angles.h"
 #include "spectrum.h"
 
 namespace skybake {
@@ -22,6 +23,7 @@ struct DensityLayer {
   double exp_scale = 0.0;      // m^-1
   double linear_term = 0.0;    // m^-1
   double constant_term = 0.0;  // dimensionless
+  bool operator==(const DensityLayer&) const = default;
 };
 
 // Layers stacked from the ground up. Empty means density 0 everywhere.
@@ -51,7 +53,8 @@ struct AtmosphereParameters {
 
   int channelCount() const { return static_cast<int>(wavelengths_nm.size()); }
   // Cosine of sun_max_zenith_deg: the mu_s at the low end of the scattering domain.
-  double sunMuSMin() const { return std::cos(sun_max_zenith_deg * (M_PI / 180.0)); }
+  double sunMuSMin() const { return std::cos(radiansFromDegrees(sun_max_zenith_deg)); }
+  bool operator==(const AtmosphereParameters&) const = default;
 };
 
 // Texel counts. Transmittance and irradiance are 2D (mu or mu_s across, r
@@ -71,6 +74,7 @@ struct TextureSizes {
   // scattering sizes above. Unused without scene ranges (which the command
   // line can add to a config).
   std::optional<std::array<int, 4>> iteration;
+  bool operator==(const TextureSizes&) const = default;
 };
 
 enum class StoragePrecision { Float, Half };
@@ -107,6 +111,7 @@ struct SceneOutputs {
   bool ground_irradiance = true;
 
   bool all() const { return radiance_to_points && ground_irradiance; }
+  bool operator==(const SceneOutputs&) const = default;
 };
 
 // The cameras and suns the scene has ([scene] in CONFIG.md): the 4D tables

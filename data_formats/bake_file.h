@@ -13,19 +13,23 @@
 
 #include "atmosphere_parameters.h"
 #include "bake_file_attributes.h"
+#include "texture_mapping.h"
 #include "textures.h"
 
 namespace skybake {
 
 // Bumped whenever the meaning of a part or attribute changes; readers refuse
-// versions they do not know.
-inline constexpr int kBakeFormatVersion = 2;
+// versions they do not know. Version 3 names the optical-depth part for what
+// it holds and states everything a reader needs in typed attributes; version
+// 2 files are still read (FORMAT.md, "Version 2").
+inline constexpr int kBakeFormatVersion = 3;
+inline constexpr int kOldestReadBakeFormatVersion = 2;
 
 struct BakeTables {
   // Optical depth (dimensionless) from (r, mu) to the top boundary, per channel.
   // Stored as optical depth rather than transmittance so that the transmittance
   // between two points is exp(-(difference)) and never 0/0 in thick atmospheres.
-  Texture2D transmittance;
+  Texture2D optical_depth;
   // Single Rayleigh scattering divided by the Rayleigh phase function:
   // W m^-2 nm^-1 (W m^-2 sr^-1 nm^-1 / sr^-1).
   Texture4D single_rayleigh;
@@ -46,12 +50,28 @@ struct BakeTables {
   Texture4D multiple_density;
 };
 
+// What a bake file states about its tables besides their texels: everything a
+// reader needs to use them, each in typed header attributes (FORMAT.md). The
+// config the bake was made from travels beside it as provenance only.
+struct BakeContents {
+  AtmosphereParameters atmosphere;
+  TextureSizes sizes;      // the stored tables' sizes; `iteration` unset
+  AtmosphereDomain domain; // what the 4D tables cover
+  SceneOutputs outputs;    // which optional parts the bake holds
+  StoragePrecision precision = StoragePrecision::Float;
+  bool combined_single_mie = false;  // bake.combined_single_mie as the bake applied it
+  bool operator==(const BakeContents&) const = default;
+};
+
+// The contents of a bake of `config` whose 4D tables cover `domain`.
+BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& domain);
+
 // Calls fn(part name, texels) for every table of a bake, in the file's part
 // order: the one list of tables that code walking all of them uses, so that a
 // table added later is not missed.
 template <typename Tables, typename Fn>
 void forEachTable(Tables& t, Fn&& fn) {
-  fn(bake_file::kPartTransmittance, t.transmittance.texels);
+  fn(bake_file::kPartOpticalDepth, t.optical_depth.texels);
   fn(bake_file::kPartSingleRayleigh, t.single_rayleigh.texels);
   fn(bake_file::kPartSingleMie, t.single_mie.texels);
   fn(bake_file::kPartMultipleScattering, t.multiple_scattering.texels);
@@ -67,12 +87,6 @@ inline bool bakeStoresSingleMie(const AtmosphereParameters& a) {
     if (a.mie_scattering[c] > 0.0f) return true;
   }
   return false;
-}
-
-// Whether the file keeps single Mie scattering as one channel of the
-// `single_rayleigh` part (bake.combined_single_mie) instead of a part of its own.
-inline bool bakeStoresCombinedSingleMie(const BakeConfig& c) {
-  return c.bake.combined_single_mie && bakeStoresSingleMie(c.atmosphere);
 }
 
 // That channel's name: "mie_" and the first wavelength's channel name.
@@ -96,16 +110,23 @@ struct LeftOutPart {
   const char* reason;  // why, in words
   uint64_t bytes;      // what leaving it out saves, uncompressed
 };
-std::vector<LeftOutPart> leftOutParts(const BakeConfig& config);
-bool leavesOut(const BakeConfig& config, const char* part);
+std::vector<LeftOutPart> leftOutParts(const BakeContents& contents);
+bool leavesOut(const BakeContents& contents, const char* part);
 // Empties the texels of the tables a bake leaves out (their sizes stay); a
 // single Mie table stored combined becomes what a reader rebuilds from the
 // file (approximateSingleMie), so in-memory and read-back bakes agree.
-void clearLeftOutTables(const BakeConfig& config, BakeTables& tables);
+void clearLeftOutTables(const BakeContents& contents, BakeTables& tables);
 
 struct BakeFile {
-  BakeConfig config;         // every parameter; sizes equal the tables' sizes
-  int orders_computed = 0;   // scattering orders in `scattering`
+  BakeContents contents;     // what the tables hold and cover; sizes equal the tables' sizes
+  // Provenance: the settled config the bake was made from, canonical TOML
+  // (configToToml). Readers do not parse it; tools that report how a bake
+  // was made (skybake info) may.
+  std::string config_toml;
+  int orders_computed = 0;   // scattering orders in the tables
+  // The version the file was read from (readBakeFile); files are always
+  // written at kBakeFormatVersion.
+  int format_version = kBakeFormatVersion;
   std::string report_json;   // the bake report, JSON text (opaque here)
   BakeTables tables;
 };

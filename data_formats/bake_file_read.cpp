@@ -4,6 +4,7 @@
 // the header before a table is allocated or filled, and any OpenEXR failure
 // becomes an Error naming the file. Files and memory buffers share this one
 // reader through OpenEXR's stream interface.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -20,6 +21,7 @@
 #include <OpenEXR/ImfMultiPartInputFile.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfVecAttribute.h>
 #include <fmt/format.h>
 
 #include "bake_file.h"
@@ -28,6 +30,8 @@
 #include "error.h"
 #include "exr_header_check.h"
 #include "exr_memory_stream.h"
+#include "bake_file_contents.h"
+#include "texture_mapping.h"
 
 namespace skybake {
 namespace {
@@ -64,11 +68,25 @@ class Reader {
     throwBadInput(fmt::format("{}: {}", source_, what));
   }
 
-  int findPart(const char* name) const {
+  int findPartOrMinusOne(const char* name) const {
     for (int i = 0; i < file_.parts(); ++i) {
       if (file_.header(i).hasName() && file_.header(i).name() == name) return i;
     }
-    fail(fmt::format("part '{}' is missing", name));
+    return -1;
+  }
+  int findPart(const char* name) const {
+    const int index = findPartOrMinusOne(name);
+    if (index < 0) fail(fmt::format("part '{}' is missing", name));
+    return index;
+  }
+  const Imf::Header& header(int part) const { return file_.header(part); }
+  // The precision the bake was stored at: its single-scattering part's
+  // channel type (the density part is always float, FORMAT.md).
+  StoragePrecision storedPrecision() const {
+    const Imf::ChannelList& channels = file_.header(findPart(kPartSingleRayleigh)).channels();
+    return channels.begin() != channels.end() && channels.begin().channel().type == Imf::HALF
+               ? StoragePrecision::Half
+               : StoragePrecision::Float;
   }
 
   template <typename Attribute>
@@ -164,25 +182,87 @@ Texture4D emptyTexture4D(const TextureSizes& s) {
   return t;
 }
 
+// How far version 2's stated ends may lie from the whole domain's and still
+// be read as them. Version 2 states the 4D tables' ends as the radii and sun
+// cosines of their first and last texels, which come back from the axes' own
+// coordinates through a square root or a cosine: the whole domain's top
+// radius a few ulps (1e-9 m) off the atmosphere's, its ends' sun coordinate
+// 1e-15 off 0 or 1. Narrowed ranges end at least metres and a fraction of a
+// degree inside.
+constexpr double kVersion2RadiusSnap_m = 1e-3;
+constexpr double kVersion2SunCoordSnap = 1e-9;
+
+// Version 2's domain: the atmosphere's, with the 4D tables' ends converted
+// from the stated radii and cosines.
+AtmosphereDomain version2Domain(const Reader& in, int part, const BakeConfig& config) {
+  AtmosphereDomain d = AtmosphereDomain::fromParameters(config.atmosphere);
+  const Imath::V2d r = in.attribute<Imf::V2dAttribute>(part, kAttrScatteringRRange).value();
+  const Imath::V2d mu_s = in.attribute<Imf::V2dAttribute>(part, kAttrScatteringMuSRange).value();
+  auto rho = [&](double radius, double whole) {
+    if (std::abs(radius - d.radiusAtDistanceToHorizon(whole)) <= kVersion2RadiusSnap_m) return whole;
+    return d.distanceToHorizon(std::clamp(radius, d.bottom_radius_m, d.top_radius_m));
+  };
+  auto coord = [&](double cosine, double whole) {
+    const double x = muSUnitCoord(d, cosine);
+    return std::abs(x - whole) <= kVersion2SunCoordSnap ? whole : x;
+  };
+  d.scattering_rho_min_m = rho(r.x, 0.0);
+  d.scattering_rho_max_m = rho(r.y, d.horizonToTopDistance());
+  d.scattering_mu_s_coord_min = coord(mu_s.x, 0.0);
+  d.scattering_mu_s_coord_max = coord(mu_s.y, 1.0);
+  d.scattering_ground_views = config.scene_ranges.views_below_horizon;
+  return d;
+}
+
+// The part that every version has (its name changed in version 3), and the
+// version its attributes state.
+struct FirstPart {
+  int index;
+  int version;
+};
+
+FirstPart findFirstPart(const Reader& in) {
+  for (const char* name : {kPartOpticalDepth, kPartOpticalDepthVersion2}) {
+    const int index = in.findPartOrMinusOne(name);
+    if (index < 0) continue;
+    const int version = in.attribute<Imf::IntAttribute>(index, kAttrFormatVersion).value();
+    if (version < kOldestReadBakeFormatVersion || version > kBakeFormatVersion) {
+      in.fail(fmt::format("format version {} is not understood by this skybake (it reads versions {} to {})", version,
+                          kOldestReadBakeFormatVersion, kBakeFormatVersion));
+    }
+    const char* expected = version >= 3 ? kPartOpticalDepth : kPartOpticalDepthVersion2;
+    if (std::string_view(name) != expected) {
+      in.fail(fmt::format("part '{}' is missing (a version {} file has it)", expected, version));
+    }
+    return {index, version};
+  }
+  in.fail(fmt::format("part '{}' is missing", kPartOpticalDepth));
+}
+
 BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t file_bytes) {
   Reader in(stream, source);
-  // Every part carries the attributes; transmittance is in every version.
-  const int first = in.findPart(kPartTransmittance);
-  const int version = in.attribute<Imf::IntAttribute>(first, kAttrFormatVersion).value();
-  if (version != kBakeFormatVersion) {
-    in.fail(fmt::format("format version {} is not understood by this skybake (it reads version {})",
-                        version, kBakeFormatVersion));
-  }
+  // Every part carries the attributes; the optical-depth part is in every version.
+  const FirstPart first = findFirstPart(in);
   BakeFile bake;
-  bake.config = parseConfig(in.attribute<Imf::StringAttribute>(first, kAttrConfig).value(),
-                            source + " [" + kAttrConfig + "]");
-  bake.orders_computed = in.attribute<Imf::IntAttribute>(first, kAttrOrders).value();
-  bake.report_json = in.attribute<Imf::StringAttribute>(first, kAttrBakeReport).value();
+  bake.format_version = first.version;
+  bake.config_toml = in.attribute<Imf::StringAttribute>(first.index, kAttrConfig).value();
+  bake.orders_computed = in.attribute<Imf::IntAttribute>(first.index, kAttrOrders).value();
+  bake.report_json = in.attribute<Imf::StringAttribute>(first.index, kAttrBakeReport).value();
+  if (first.version >= 3) {
+    bake.contents = readContentsAttributes(in.header(first.index), [&](const std::string& what) { in.fail(what); });
+    bake.contents.precision = in.storedPrecision();
+    validateContents(bake.contents, source + " [header attributes]");
+  } else {
+    // Version 2 states the atmosphere only in the config it carries.
+    const BakeConfig config = parseConfig(bake.config_toml, source + " [" + kAttrConfig + "]");
+    bake.contents = storedContents(config, version2Domain(in, first.index, config));
+  }
+  const char* optical_depth_part = first.version >= 3 ? kPartOpticalDepth : kPartOpticalDepthVersion2;
 
-  const TextureSizes& s = bake.config.sizes;
-  const AtmosphereParameters& a = bake.config.atmosphere;
+  const TextureSizes& s = bake.contents.sizes;
+  const AtmosphereParameters& a = bake.contents.atmosphere;
   BakeTables& t = bake.tables;
-  t.transmittance = emptyTexture2D(s.transmittance_mu, s.transmittance_r);
+  t.optical_depth = emptyTexture2D(s.transmittance_mu, s.transmittance_r);
   t.irradiance = emptyTexture2D(s.irradiance_mu_s, s.irradiance_r);
   t.single_rayleigh = emptyTexture4D(s);
   t.single_mie = emptyTexture4D(s);
@@ -195,7 +275,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
     std::vector<Spectrum>* texels;
   };
   std::vector<Table> tables = {
-      {kPartTransmittance, t.transmittance.width, t.transmittance.height, &t.transmittance.texels},
+      {optical_depth_part, t.optical_depth.width, t.optical_depth.height, &t.optical_depth.texels},
       {kPartIrradiance, t.irradiance.width, t.irradiance.height, &t.irradiance.texels},
       {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(),
        &t.single_rayleigh.texels},
@@ -205,10 +285,10 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
       {kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(),
        &t.multiple_density.texels},
   };
-  std::erase_if(tables, [&](const Table& table) { return leavesOut(bake.config, table.part); });
+  std::erase_if(tables, [&](const Table& table) { return leavesOut(bake.contents, table.part); });
   // Single Mie scattering combined into single_rayleigh: its first channel
   // is read from there and the others rebuilt.
-  const bool combined_mie = bakeStoresCombinedSingleMie(bake.config);
+  const bool combined_mie = bake.contents.combined_single_mie;
   std::vector<PartLayout> layouts;
   uint64_t stored_bytes = 0;
   for (const Table& table : tables) {

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfDoubleAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIntAttribute.h>
@@ -13,16 +12,14 @@
 #include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <OpenEXR/ImfVecAttribute.h>
 #include <Imath/half.h>
 #include <fmt/format.h>
 
 #include "atomic_file.h"
 #include "bake_file.h"
 #include "bake_file_attributes.h"
-#include "config.h"
+#include "bake_file_contents.h"
 #include "error.h"
-#include "texture_mapping.h"
 
 namespace skybake {
 
@@ -59,14 +56,14 @@ struct PartToWrite {
 // (6e-5) and its subnormals keep a few bits or round to 0. Stored as half,
 // radiance toward a point in twilight came out 25 to 55 % off.
 bool storedAsHalf(const BakeFile& bake, const PartToWrite& part) {
-  return bake.config.bake.precision == StoragePrecision::Half && !part.always_float;
+  return bake.contents.precision == StoragePrecision::Half && !part.always_float;
 }
 
 // Parts of a multi-part file must share one display window; each part's data
 // window is its own table size.
 Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
                        const Imath::Box2i& display_window) {
-  const AtmosphereParameters& a = bake.config.atmosphere;
+  const AtmosphereParameters& a = bake.contents.atmosphere;
   Imf::Header header(display_window, Imath::Box2i({0, 0}, {part.width - 1, part.height - 1}));
   header.setName(part.name);
   header.setType(Imf::SCANLINEIMAGE);
@@ -76,24 +73,13 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
     header.channels().insert(channelName(wavelength), Imf::Channel(type));
   }
   if (part.extra_texels != nullptr) header.channels().insert(part.extra_channel, Imf::Channel(type));
-  std::string wavelengths;
-  for (double w : a.wavelengths_nm) wavelengths += fmt::format("{}{}", wavelengths.empty() ? "" : " ", w);
-  const AtmosphereDomain domain = AtmosphereDomain::fromConfig(bake.config);
   header.insert(kAttrFormatVersion, Imf::IntAttribute(kBakeFormatVersion));
   header.insert(kAttrContent, Imf::StringAttribute(part.content));
   header.insert(kAttrUnits, Imf::StringAttribute(part.units));
   header.insert(kAttrTableSize, Imf::StringAttribute(part.size_text));
-  header.insert(kAttrWavelengths, Imf::StringAttribute(wavelengths));
-  header.insert(kAttrBottomRadius, Imf::DoubleAttribute(domain.bottom_radius_m));
-  header.insert(kAttrTopRadius, Imf::DoubleAttribute(domain.top_radius_m));
-  header.insert(kAttrMuSMin, Imf::DoubleAttribute(domain.mu_s_min));
-  const ScatteringSizes s = ScatteringSizes::fromTextureSizes(bake.config.sizes);
-  header.insert(kAttrScatteringRRange,
-                Imf::V2dAttribute({rFromScatteringTexel(domain, s, 0), rFromScatteringTexel(domain, s, s.r - 1)}));
-  header.insert(kAttrScatteringMuSRange, Imf::V2dAttribute({muSFromScatteringTexel(domain, s, 0),
-                                                            muSFromScatteringTexel(domain, s, s.mu_s - 1)}));
+  insertContentsAttributes(bake.contents, header);
   header.insert(kAttrOrders, Imf::IntAttribute(bake.orders_computed));
-  header.insert(kAttrConfig, Imf::StringAttribute(configToToml(bake.config)));
+  header.insert(kAttrConfig, Imf::StringAttribute(bake.config_toml));
   header.insert(kAttrBakeReport, Imf::StringAttribute(bake.report_json));
   return header;
 }
@@ -107,7 +93,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
   std::vector<Imf::Header> headers;
   for (const PartToWrite& part : parts) headers.push_back(makeHeader(bake, part, display_window));
   Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
-  const int channels = bake.config.atmosphere.channelCount();
+  const int channels = bake.contents.atmosphere.channelCount();
   for (size_t i = 0; i < parts.size(); ++i) {
     const PartToWrite& part = parts[i];
     const bool half = storedAsHalf(bake, part);
@@ -133,7 +119,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
     const size_t texel_bytes = value_bytes * kMaxChannels;
     const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
     for (int c = 0; c < channels; ++c) {
-      frame.insert(channelName(bake.config.atmosphere.wavelengths_nm[c]),
+      frame.insert(channelName(bake.contents.atmosphere.wavelengths_nm[c]),
                    Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
     }
     if (part.extra_texels != nullptr) {
@@ -155,9 +141,9 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
                    const std::function<void(const std::filesystem::path& temp)>& before_rename) {
   const BakeTables& t = bake.tables;
   std::vector<PartToWrite> parts = {
-      {kPartTransmittance, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
-       "dimensionless", &t.transmittance.texels, t.transmittance.width, t.transmittance.height,
-       fmt::format("mu={} r={}", t.transmittance.width, t.transmittance.height)},
+      {kPartOpticalDepth, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
+       "dimensionless", &t.optical_depth.texels, t.optical_depth.width, t.optical_depth.height,
+       fmt::format("mu={} r={}", t.optical_depth.width, t.optical_depth.height)},
       {kPartSingleRayleigh, "single Rayleigh scattering radiance divided by the Rayleigh phase function",
        "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_rayleigh.texels,
        t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(), table4DSizeText(t.single_rayleigh)},
@@ -180,13 +166,13 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
   };
   auto is_density = [](const PartToWrite& p) { return p.name == std::string_view(kPartMultipleDensity); };
   std::find_if(parts.begin(), parts.end(), is_density)->always_float = true;
-  if (bakeStoresCombinedSingleMie(bake.config)) {
+  if (bake.contents.combined_single_mie) {
     auto is_rayleigh = [](const PartToWrite& p) { return p.name == std::string_view(kPartSingleRayleigh); };
     PartToWrite& rayleigh = *std::find_if(parts.begin(), parts.end(), is_rayleigh);
-    rayleigh.extra_channel = combinedSingleMieChannelName(bake.config.atmosphere);
+    rayleigh.extra_channel = combinedSingleMieChannelName(bake.contents.atmosphere);
     rayleigh.extra_texels = &t.single_mie.texels;
   }
-  std::erase_if(parts, [&](const PartToWrite& p) { return leavesOut(bake.config, p.name); });
+  std::erase_if(parts, [&](const PartToWrite& p) { return leavesOut(bake.contents, p.name); });
   for (const PartToWrite& part : parts) {
     if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0 ||
         (part.extra_texels != nullptr && part.extra_texels->size() != part.texels->size())) {

@@ -7,15 +7,27 @@
 
 namespace skybake {
 
-std::vector<LeftOutPart> leftOutParts(const BakeConfig& c) {
+BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& domain) {
+  BakeContents c;
+  c.atmosphere = config.atmosphere;
+  c.sizes = config.sizes;
+  c.sizes.iteration.reset();
+  c.domain = domain;
+  c.outputs = config.scene;
+  c.precision = config.bake.precision;
+  c.combined_single_mie = config.bake.combined_single_mie && bakeStoresSingleMie(config.atmosphere);
+  return c;
+}
+
+std::vector<LeftOutPart> leftOutParts(const BakeContents& c) {
   const TextureSizes& s = c.sizes;
-  const uint64_t value_bytes = (c.bake.precision == StoragePrecision::Half ? 2 : 4) * c.atmosphere.channelCount();
+  const uint64_t value_bytes = (c.precision == StoragePrecision::Half ? 2 : 4) * c.atmosphere.channelCount();
   const uint64_t table_4d = static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s *
                             s.scattering_nu * value_bytes;
   std::vector<LeftOutPart> out;
   if (!bakeStoresSingleMie(c.atmosphere)) {
     out.push_back({bake_file::kPartSingleMie, "no Mie scattering", table_4d});
-  } else if (bakeStoresCombinedSingleMie(c)) {
+  } else if (c.combined_single_mie) {
     // One channel of it moves into single_rayleigh.
     const int n = c.atmosphere.channelCount();
     out.push_back({bake_file::kPartSingleMie,
@@ -25,24 +37,24 @@ std::vector<LeftOutPart> leftOutParts(const BakeConfig& c) {
   }
   // Rays toward the ground are integrated over the density when the 4D
   // tables leave them out ([scene] views_below_horizon), so it stays then.
-  if (!c.scene.radiance_to_points && c.scene_ranges.views_below_horizon) {
+  if (!c.outputs.radiance_to_points && c.domain.scattering_ground_views) {
     // Always stored as float (FORMAT.md).
     const uint64_t float_table_4d = table_4d / value_bytes * (4 * c.atmosphere.channelCount());
     out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", float_table_4d});
   }
-  if (!c.scene.ground_irradiance) {
+  if (!c.outputs.ground_irradiance) {
     out.push_back({bake_file::kPartIrradiance, "scene.outputs without ground_irradiance",
                    static_cast<uint64_t>(s.irradiance_mu_s) * s.irradiance_r * value_bytes});
   }
   return out;
 }
 
-void clearLeftOutTables(const BakeConfig& config, BakeTables& tables) {
-  if (bakeStoresCombinedSingleMie(config)) {
-    approximateSingleMie(config.atmosphere, tables.single_rayleigh, tables.single_mie);
+void clearLeftOutTables(const BakeContents& contents, BakeTables& tables) {
+  if (contents.combined_single_mie) {
+    approximateSingleMie(contents.atmosphere, tables.single_rayleigh, tables.single_mie);
   }
-  for (const LeftOutPart& p : leftOutParts(config)) {
-    if (std::strcmp(p.part, bake_file::kPartSingleMie) == 0 && !bakeStoresCombinedSingleMie(config)) {
+  for (const LeftOutPart& p : leftOutParts(contents)) {
+    if (std::strcmp(p.part, bake_file::kPartSingleMie) == 0 && !contents.combined_single_mie) {
       tables.single_mie.texels = {};
     }
     if (std::strcmp(p.part, bake_file::kPartMultipleDensity) == 0) tables.multiple_density.texels = {};
@@ -77,8 +89,8 @@ void approximateSingleMie(const AtmosphereParameters& a, const Texture4D& raylei
   }
 }
 
-bool leavesOut(const BakeConfig& config, const char* part) {
-  for (const LeftOutPart& p : leftOutParts(config)) {
+bool leavesOut(const BakeContents& contents, const char* part) {
+  for (const LeftOutPart& p : leftOutParts(contents)) {
     if (std::strcmp(p.part, part) == 0) return true;
   }
   return false;

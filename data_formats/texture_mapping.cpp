@@ -17,55 +17,7 @@ double muFromDistanceToTop(double r, double dist, double rho, double H) {
   return dist == 0.0 ? 1.0 : clampCosine((H * H - rho * rho - dist * dist) / (2.0 * r * dist));
 }
 
-// Sun angles the 4D tables cover beyond the scene's range, on each side: a
-// point that radiance to a point looks up 100 km from the camera sees the sun
-// 0.9 deg higher or lower than the camera does (on Earth), and its lookup
-// would clamp to the range's end.
-constexpr double kSceneSunZenithMargin_deg = 1.0;
-
-double cosineOfDegrees(double deg) { return std::cos(deg * (M_PI / 180.0)); }
-
-// Moves the low end of a narrowed sun axis down (to lower suns) until a texel
-// sits on the horizon, mu_s = 0, where the sky changes character (sunlight
-// reaching the ground turns off over the disk's half-degree): interpolating
-// across it from texels on both sides smears it, by up to 5 % in the low-sun
-// band when the texel spacing shifted by a tenth. Left alone when the
-// horizon is outside the range or the low end would leave the whole range.
-void alignTexelWithHorizon(AtmosphereDomain& d, int size_mu_s) {
-  const double horizon = muSUnitCoord(d, 0.0);
-  const double lo = d.scattering_mu_s_coord_min, hi = d.scattering_mu_s_coord_max;
-  const int last = size_mu_s - 1;
-  if (!(horizon > lo && horizon < hi) || last < 2) return;
-  const int k = static_cast<int>(std::ceil((horizon - lo) / (hi - lo) * last));
-  if (k >= last) return;
-  const double aligned_lo = (horizon * last - k * hi) / (last - k);
-  if (aligned_lo >= 0.0 && aligned_lo <= lo) d.scattering_mu_s_coord_min = aligned_lo;
-}
-
 }  // namespace
-
-AtmosphereDomain AtmosphereDomain::fromConfig(const BakeConfig& config) {
-  const AtmosphereParameters& a = config.atmosphere;
-  AtmosphereDomain d = fromParameters(a);
-  const SceneRanges& scene = config.scene_ranges;
-  if (scene.altitude_m) {
-    // Cameras above the top are looked up where their rays enter, at the top.
-    const double thickness_m = a.top_radius_m - a.bottom_radius_m;
-    const double low_m = std::clamp((*scene.altitude_m)[0], 0.0, thickness_m);
-    const double high_m = std::clamp((*scene.altitude_m)[1], low_m, thickness_m);
-    d.scattering_rho_min_m = d.distanceToHorizon(a.bottom_radius_m + low_m);
-    d.scattering_rho_max_m = d.distanceToHorizon(a.bottom_radius_m + high_m);
-  }
-  if (scene.sun_zenith_deg) {
-    const double low_deg = std::max((*scene.sun_zenith_deg)[0] - kSceneSunZenithMargin_deg, 0.0);
-    const double high_deg = std::min((*scene.sun_zenith_deg)[1] + kSceneSunZenithMargin_deg, a.sun_max_zenith_deg);
-    d.scattering_mu_s_coord_max = muSUnitCoord(d, cosineOfDegrees(low_deg));
-    d.scattering_mu_s_coord_min = muSUnitCoord(d, cosineOfDegrees(high_deg));
-    alignTexelWithHorizon(d, config.sizes.scattering_mu_s);
-  }
-  d.scattering_ground_views = scene.views_below_horizon;
-  return d;
-}
 
 double muSFromUnitCoord(const AtmosphereDomain& d, double x) {
   const MuSDistanceRange range = MuSDistanceRange::of(d);

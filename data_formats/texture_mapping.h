@@ -31,7 +31,8 @@ struct AtmosphereDomain {
   // sun coordinate (muSUnitCoord: 0 at mu_s_min, 1 at the zenith) at the
   // mu_s axis's ends. The whole domain is [0, H] and [0, 1]; a [scene]
   // narrows them (fromConfig), and the axes keep their texel spacing's shape
-  // over the narrower range.
+  // over the narrower range. A bake decides them
+  // (sceneDomain, baker/bake/bake_policy.h) and its file states them.
   double scattering_rho_min_m = 0.0;
   double scattering_rho_max_m = 0.0;
   double scattering_mu_s_coord_min = 0.0;
@@ -40,6 +41,7 @@ struct AtmosphereDomain {
   // first half) as well as the sky (second half), or only the sky (all of
   // it): [scene] views_below_horizon.
   bool scattering_ground_views = true;
+  bool operator==(const AtmosphereDomain&) const = default;
 
   // The whole domain: every altitude, every sun up to sun.max_zenith_deg.
   static AtmosphereDomain fromParameters(const AtmosphereParameters& a) {
@@ -47,9 +49,6 @@ struct AtmosphereDomain {
     d.scattering_rho_max_m = d.horizonToTopDistance();
     return d;
   }
-  // The 4D tables narrowed to the config's scene ranges (the whole domain
-  // without them).
-  static AtmosphereDomain fromConfig(const BakeConfig& config);
 
   bool narrowed() const {
     return scattering_rho_min_m > 0.0 || scattering_rho_max_m < horizonToTopDistance() ||

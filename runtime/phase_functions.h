@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-namespace skybake {
+#include "data_formats/angles.h"
 
-inline constexpr double kPi = 3.14159265358979323846;
+namespace skybake {
 
 inline double rayleighPhase(double nu) {
   constexpr double k = 3.0 / (16.0 * kPi);

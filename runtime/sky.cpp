@@ -131,9 +131,9 @@ Sky Sky::load(const std::filesystem::path& path) { return Sky(readBakeFile(path)
 
 Sky::Sky(BakeFile bake)
     : bake_(std::move(bake)),
-      sampler_(AtmosphereDomain::fromConfig(bake_.config), bake_.config.sizes),
-      multiple_shape_(bake_.config.atmosphere),
-      ranges_(bakedRangesOf(sampler_.domain(), bake_.config.atmosphere.sun_max_zenith_deg)),
+      sampler_(bake_.contents.domain, bake_.contents.sizes),
+      multiple_shape_(bake_.contents.atmosphere),
+      ranges_(bakedRangesOf(sampler_.domain(), bake_.contents.atmosphere.sun_max_zenith_deg)),
       baked_mu_s_min_(std::cos(ranges_.sun_zenith_max_deg * (kPi / 180.0))),
       baked_mu_s_max_(std::cos(ranges_.sun_zenith_min_deg * (kPi / 180.0))) {}
 
@@ -150,8 +150,8 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
   const BakeTables& t = bake_.tables;
 
   const Spectrum transmittance =
-      ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, start.length, true))
-             : glm::exp(-sampler_.opticalDepthToTop(t.transmittance, r, mu));
+      ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, start.length, true))
+             : glm::exp(-sampler_.opticalDepthToTop(t.optical_depth, r, mu));
 
   // Light shafts: only the part of the ray beyond the shadow scatters, seen
   // through the shadowed part. Without a shadow that part starts here; a
@@ -164,7 +164,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
     r_p = std::clamp(radiusAlongRay(r, mu, shadow), domain.bottom_radius_m, domain.top_radius_m);
     mu_p = cosineAlongRay(r, mu, shadow, r_p);
     mu_s_p = clampCosine((r * mu_s + shadow * nu) / r_p);
-    shadow_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, shadow, ground));
+    shadow_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, shadow, ground));
   }
   if (ground && !domain.scattering_ground_views) {
     // The tables hold no rays toward the ground: integrate this one.
@@ -207,7 +207,7 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
   const double mu_s_p = clampCosine((r * mu_s + d_p * nu) / r_p);
   const Spectrum shadow_transmittance =
       shadow == 0.0 ? transmittance
-                    : glm::exp(-sampler.opticalDepthAlongRay(t.transmittance, r, mu, d_p, ground));
+                    : glm::exp(-sampler.opticalDepthAlongRay(t.optical_depth, r, mu, d_p, ground));
   auto difference = [&](const Texture4D& table, const Spectrum& scale_here, const Spectrum& scale_there) {
     return glm::max(sampler.scattering(table, r, mu, mu_s, nu, ground) * scale_here -
                         shadow_transmittance * scale_there *
@@ -254,7 +254,7 @@ RadianceAndTransmittance directSegmentRadiance(const TableSampler& sampler, cons
                 ? (a.rayleigh_scattering * (static_cast<float>(media.rayleighDensity(altitude)) * rayleigh_phase) +
                    a.mie_scattering * (static_cast<float>(media.mieDensity(altitude)) * mie_phase)) *
                       (a.sun_irradiance *
-                       sampler.transmittanceToSun(t.transmittance, r_d, mu_s_d, a.sun_angular_radius_rad))
+                       sampler.transmittanceToSun(t.optical_depth, r_d, mu_s_d, a.sun_angular_radius_rad))
                 : Spectrum(0.0f);
         const Spectrum multiple_source =
             sampler.multipleDensity(t.multiple_density, r_d, mu_d, mu_s_d, nu) *
@@ -305,12 +305,12 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
                               kDirectSegmentSubintervals, true);
     radiance += direct.radiance * w;
     // With a shadow the segment to the point is longer than the lit part.
-    transmittance += (shadow > 0.0 ? glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground))
+    transmittance += (shadow > 0.0 ? glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, d, ground))
                                    : direct.transmittance) * w;
   }
   if (direct_weight < 1.0) {
     const float w = static_cast<float>(1.0 - direct_weight);
-    const Spectrum table_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.transmittance, r, mu, d, ground));
+    const Spectrum table_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, d, ground));
     radiance += differenceSegmentRadiance(r, mu, mu_s, nu, d, shadow, ground, table_transmittance) * w;
     transmittance += table_transmittance * w;
   }
@@ -357,7 +357,7 @@ SunlitRay Sky::withBakedSun(const SunlitRay& ray) const {
 
 void Sky::blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, double weight,
                                             SingleScattering& s) const {
-  const SingleScattering integrated = integrateSingleScattering(sampler_, bake_.tables.transmittance, atmosphere(),
+  const SingleScattering integrated = integrateSingleScattering(sampler_, bake_.tables.optical_depth, atmosphere(),
                                                                 ray, t_start, t_end, kLookupSingleScatteringSegments);
   const float w = static_cast<float>(weight);
   s.rayleigh += (integrated.rayleigh - s.rayleigh) * w;
@@ -367,7 +367,7 @@ void Sky::blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start
 Spectrum Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
                                 const Spectrum& to_start) const {
   const BakeTables& t = bake_.tables;
-  const SingleScattering single = integrateSingleScattering(sampler_, t.transmittance, atmosphere(),
+  const SingleScattering single = integrateSingleScattering(sampler_, t.optical_depth, atmosphere(),
                                                             withBakedSun(ray), t_start, t_end, kGroundRaySubintervals);
   const SunlitRay baked_from_start = withBakedSun(from_start);
   const RadianceAndTransmittance multiple = directSegmentRadiance(
@@ -405,7 +405,7 @@ SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& n
   const Spectrum sky = sampler_.irradiance(t.irradiance, r, mu_s) *
                        static_cast<float>(0.5 * (1.0 + glm::dot(normal, up)));
   const Spectrum sun = atmosphere().sun_irradiance *
-                       sampler_.transmittanceToSun(t.transmittance, r, mu_s, atmosphere().sun_angular_radius_rad) *
+                       sampler_.transmittanceToSun(t.optical_depth, r, mu_s, atmosphere().sun_angular_radius_rad) *
                        static_cast<float>(std::max(glm::dot(normal, sun_dir), 0.0));
   return {sun, sky};
 }
@@ -436,7 +436,7 @@ Spectrum Sky::transmittance(const glm::dvec3& a, const glm::dvec3& b) const {
   }
   // Beyond the top the ray is in vacuum: only the part inside counts.
   const double inside = std::min(d, length);
-  return glm::exp(-sampler_.opticalDepthAlongRay(bake_.tables.transmittance, start.r, start.mu, inside, ground));
+  return glm::exp(-sampler_.opticalDepthAlongRay(bake_.tables.optical_depth, start.r, start.mu, inside, ground));
 }
 
 }  // namespace skybake

@@ -90,8 +90,9 @@ class Sky {
   static Sky load(const std::filesystem::path& path);
   explicit Sky(BakeFile bake);
 
-  const BakeConfig& config() const { return bake_.config; }
-  const AtmosphereParameters& atmosphere() const { return bake_.config.atmosphere; }
+  // What the bake's file states: the atmosphere, table sizes, domain, outputs.
+  const BakeContents& contents() const { return bake_.contents; }
+  const AtmosphereParameters& atmosphere() const { return bake_.contents.atmosphere; }
   int channelCount() const { return atmosphere().channelCount(); }
   int orders() const { return bake_.orders_computed; }
 
@@ -141,7 +142,7 @@ class Sky {
   // What the bake holds besides sky radiance ([scene] outputs in CONFIG.md).
   // radianceToPoint and irradiance (and receivedRadiance for a ray that ends
   // on the ground) throw Error(BadInput) for an output the bake left out.
-  const SceneOutputs& outputs() const { return bake_.config.scene; }
+  const SceneOutputs& outputs() const { return bake_.contents.outputs; }
   // The altitudes and sun angles the scattering tables cover (see the
   // geometry conventions above for lookups outside them).
   const BakedRanges& bakedRanges() const { return ranges_; }

@@ -102,9 +102,9 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
   const MuNuSlice multiple(t.multiple_scattering, r_lerp, mu_s_lerp, radianceBlend(mu_s));
   const SpectrumD multiple_peak_weight = multiple_shape_.peakWeightAt(r - d.bottom_radius_m);
   const OpticalDepthRow depth_here(
-      t.transmittance, axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, sizes.transmittance_r),
+      t.optical_depth, axisLerpFromTextureCoord(textureCoordFromUnitRange(rho / H, sizes.transmittance_r),
                                                 sizes.transmittance_r));
-  const OpticalDepthRow depth_ground(t.transmittance, axisLerpFromTextureCoord(
+  const OpticalDepthRow depth_ground(t.optical_depth, axisLerpFromTextureCoord(
                                                           textureCoordFromUnitRange(0.0, sizes.transmittance_r),
                                                           sizes.transmittance_r));
   const double g = atmosphere().mie_phase_g;

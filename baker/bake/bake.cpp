@@ -20,6 +20,7 @@
 #include <fmt/format.h>
 
 #include "baker/bake/bake_policy.h"
+#include "data_formats/config.h"
 
 namespace skybake {
 namespace {
@@ -204,9 +205,9 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
   StageRunner stage(progress, report);
 
   BakeTables& tables = out.file.tables;
-  tables.transmittance = stage.run("transmittance", 0, config.sizes.transmittance_r,
+  tables.optical_depth = stage.run("transmittance", 0, config.sizes.transmittance_r,
                                    [&] { return computeOpticalDepthTable(ctx); });
-  const Texture2D& optical_depth = tables.transmittance;
+  const Texture2D& optical_depth = tables.optical_depth;
   Texture2D delta_irradiance = stage.run("direct_irradiance", 1, config.sizes.irradiance_r, [&] {
     return computeDirectIrradianceTable(ctx, optical_depth);
   });
@@ -239,7 +240,7 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
         stage.run("density_kernel", 0, s.r, [&] { return makeScatteringDensityKernel(ctx, optical_depth); });
   }
   // A scene that narrows the domain stores its 4D tables on its own texels.
-  const AtmosphereDomain scene_domain = AtmosphereDomain::fromConfig(config);
+  const AtmosphereDomain scene_domain = sceneDomain(config);
   std::optional<SceneDensity> scene;
   if (scene_domain.narrowed()) {
     scene.emplace(a, scene_domain, config.sizes, progress);
@@ -310,13 +311,14 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
 
   // The parts the file leaves out (no Mie scattering, outputs the scene does
   // not use): computed where later orders needed them, not kept.
-  clearLeftOutTables(config, tables);
+  out.file.contents = bakeContents(config);
+  clearLeftOutTables(out.file.contents, tables);
 
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.cpu_seconds = processCpuSeconds() - cpu_start;
   report.peak_memory_mib = peakMemoryMiB();
 
-  out.file.config = config;
+  out.file.config_toml = configToToml(config);
   out.file.orders_computed = static_cast<int>(report.orders.size());
   out.file.report_json = report.toJson();
   return out;

@@ -1,8 +1,61 @@
 #include "baker/bake/bake_policy.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "data_formats/angles.h"
 #include "data_formats/texture_mapping.h"
 
 namespace skybake {
+namespace {
+
+// Sun angles the 4D tables cover beyond the scene's range, on each side: a
+// point that radiance to a point looks up 100 km from the camera sees the sun
+// 0.9 deg higher or lower than the camera does (on Earth), and its lookup
+// would clamp to the range's end.
+constexpr double kSceneSunZenithMargin_deg = 1.0;
+
+// Moves the low end of a narrowed sun axis down (to lower suns) until a texel
+// sits on the horizon, mu_s = 0, where the sky changes character (sunlight
+// reaching the ground turns off over the disk's half-degree): interpolating
+// across it from texels on both sides smears it, by up to 5 % in the low-sun
+// band when the texel spacing shifted by a tenth. Left alone when the
+// horizon is outside the range or the low end would leave the whole range.
+void alignTexelWithHorizon(AtmosphereDomain& d, int size_mu_s) {
+  const double horizon = muSUnitCoord(d, 0.0);
+  const double lo = d.scattering_mu_s_coord_min, hi = d.scattering_mu_s_coord_max;
+  const int last = size_mu_s - 1;
+  if (!(horizon > lo && horizon < hi) || last < 2) return;
+  const int k = static_cast<int>(std::ceil((horizon - lo) / (hi - lo) * last));
+  if (k >= last) return;
+  const double aligned_lo = (horizon * last - k * hi) / (last - k);
+  if (aligned_lo >= 0.0 && aligned_lo <= lo) d.scattering_mu_s_coord_min = aligned_lo;
+}
+
+}  // namespace
+
+AtmosphereDomain sceneDomain(const BakeConfig& config) {
+  const AtmosphereParameters& a = config.atmosphere;
+  AtmosphereDomain d = AtmosphereDomain::fromParameters(a);
+  const SceneRanges& scene = config.scene_ranges;
+  if (scene.altitude_m) {
+    // Cameras above the top are looked up where their rays enter, at the top.
+    const double thickness_m = a.top_radius_m - a.bottom_radius_m;
+    const double low_m = std::clamp((*scene.altitude_m)[0], 0.0, thickness_m);
+    const double high_m = std::clamp((*scene.altitude_m)[1], low_m, thickness_m);
+    d.scattering_rho_min_m = d.distanceToHorizon(a.bottom_radius_m + low_m);
+    d.scattering_rho_max_m = d.distanceToHorizon(a.bottom_radius_m + high_m);
+  }
+  if (scene.sun_zenith_deg) {
+    const double low_deg = std::max((*scene.sun_zenith_deg)[0] - kSceneSunZenithMargin_deg, 0.0);
+    const double high_deg = std::min((*scene.sun_zenith_deg)[1] + kSceneSunZenithMargin_deg, a.sun_max_zenith_deg);
+    d.scattering_mu_s_coord_max = muSUnitCoord(d, std::cos(radiansFromDegrees(low_deg)));
+    d.scattering_mu_s_coord_min = muSUnitCoord(d, std::cos(radiansFromDegrees(high_deg)));
+    alignTexelWithHorizon(d, config.sizes.scattering_mu_s);
+  }
+  d.scattering_ground_views = scene.views_below_horizon;
+  return d;
+}
 
 namespace {
 
@@ -17,7 +70,7 @@ namespace {
 constexpr double kSunAxisNarrowingMinTexels = 1.0;
 
 bool sunRangeNarrowsAxis(const BakeConfig& config) {
-  const AtmosphereDomain d = AtmosphereDomain::fromConfig(config);
+  const AtmosphereDomain d = sceneDomain(config);
   const double span = d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min;
   if (span <= 0.0) return true;  // a single sun angle
   // Same texel spacing over the whole axis would take (size - 1) / span + 1 texels.
@@ -30,7 +83,7 @@ bool sunRangeNarrowsAxis(const BakeConfig& config) {
 BakeConfig settledBakeConfig(BakeConfig config) {
   SceneRanges& scene = config.scene_ranges;
   if (scene.sun_zenith_deg && !sunRangeNarrowsAxis(config)) scene.sun_zenith_deg.reset();
-  if (AtmosphereDomain::fromConfig(config).narrowed() && !config.sizes.iteration) {
+  if (sceneDomain(config).narrowed() && !config.sizes.iteration) {
     const TextureSizes defaults{};
     const int mu_s = scene.sun_zenith_deg ? defaults.scattering_mu_s
                                           : std::max(defaults.scattering_mu_s, config.sizes.scattering_mu_s);
@@ -42,7 +95,7 @@ BakeConfig settledBakeConfig(BakeConfig config) {
 
 TextureSizes iterationTextureSizes(const BakeConfig& config) {
   TextureSizes sizes = config.sizes;
-  if (!AtmosphereDomain::fromConfig(config).narrowed()) return sizes;
+  if (!sceneDomain(config).narrowed()) return sizes;
   const TextureSizes defaults{};
   const std::array<int, 4> iteration = config.sizes.iteration.value_or(std::array<int, 4>{
       defaults.scattering_r, defaults.scattering_mu, defaults.scattering_mu_s, defaults.scattering_nu});
@@ -52,5 +105,7 @@ TextureSizes iterationTextureSizes(const BakeConfig& config) {
   sizes.scattering_nu = iteration[3];
   return sizes;
 }
+
+BakeContents bakeContents(const BakeConfig& settled) { return storedContents(settled, sceneDomain(settled)); }
 
 }  // namespace skybake

@@ -5,8 +5,16 @@
 #pragma once
 
 #include "data_formats/atmosphere_parameters.h"
+#include "data_formats/bake_file.h"
+#include "data_formats/texture_mapping.h"
 
 namespace skybake {
+
+// The domain a config's 4D tables cover: its [scene] ranges, the sun range
+// widened by a margin each side and its low end moved so that a texel sits on
+// the horizon; the whole domain without them. The file states the result
+// (FORMAT.md), so readers never recompute it.
+AtmosphereDomain sceneDomain(const BakeConfig& config);
 
 // The sizes the bake's orders iterate on: the stored ones, except that a
 // scene that narrows the domain iterates over the whole domain at
@@ -21,5 +29,9 @@ TextureSizes iterationTextureSizes(const BakeConfig& config);
 // whole and that is larger, so that the stored tables' sun texels are the
 // iteration's. bakeAtmosphere settles its config this way.
 BakeConfig settledBakeConfig(BakeConfig config);
+
+// What the file of a bake of `settled` (settledBakeConfig) states about its
+// tables: storedContents with sceneDomain.
+BakeContents bakeContents(const BakeConfig& settled);
 
 }  // namespace skybake

@@ -63,7 +63,7 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   const TextureSizes iteration = iterationTextureSizes(config);
   const uint64_t iteration_bytes = table4DBytes(iteration);
   const uint64_t stored_bytes = table4DBytes(s);
-  const bool narrowed = AtmosphereDomain::fromConfig(config).narrowed();
+  const bool narrowed = sceneDomain(config).narrowed();
   e.table_4d_bytes = std::max(iteration_bytes, stored_bytes);
   const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
   e.tables_4d_at_peak = tables4DAtPeak(orders) + (narrowed ? 4 : 0);

@@ -48,7 +48,7 @@ class BakedSky final : public SkyMethod {
   size_t memoryBytes() const override {
     const BakeTables& t = sky_.tables();
     size_t texels = 0;
-    for (const auto* v : {&t.transmittance.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
+    for (const auto* v : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
                           &t.multiple_density.texels}) {
       texels += v->size();
     }

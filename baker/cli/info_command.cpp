@@ -14,32 +14,35 @@ namespace {
 
 void runInfo(const std::string& path) {
   const BakeFile bake = readBakeFile(path);
-  const BakeConfig& c = bake.config;
+  const BakeContents& c = bake.contents;
   const TextureSizes& s = c.sizes;
+  // How the bake was made (its name, the sizes its orders iterated on) is in
+  // the config it carries as provenance; what it holds is in the attributes.
+  const BakeConfig made_from = parseConfig(bake.config_toml, path + " [skybake:config]");
   fmt::print("file:          {}\n", path);
-  fmt::print("format:        skybake version {}\n", kBakeFormatVersion);
-  fmt::print("atmosphere:    {}\n", c.name);
+  fmt::print("format:        skybake version {}\n", bake.format_version);
+  fmt::print("atmosphere:    {}\n", made_from.name);
   std::string wavelengths;
   for (double w : c.atmosphere.wavelengths_nm) wavelengths += fmt::format("{} nm  ", w);
   fmt::print("channels:      {}\n", wavelengths);
   fmt::print("radii:         bottom {} m, top {} m\n", c.atmosphere.bottom_radius_m, c.atmosphere.top_radius_m);
   fmt::print("sun domain:    zenith 0 to {} deg\n", c.atmosphere.sun_max_zenith_deg);
   fmt::print("orders:        {}\n", bake.orders_computed);
-  fmt::print("precision:     {}\n", c.bake.precision == StoragePrecision::Half ? "half" : "float");
-  fmt::print("transmittance: {} mu x {} r\n", s.transmittance_mu, s.transmittance_r);
+  fmt::print("precision:     {}\n", c.precision == StoragePrecision::Half ? "half" : "float");
+  fmt::print("optical depth: {} mu x {} r\n", s.transmittance_mu, s.transmittance_r);
   fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
   fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu,
              s.scattering_mu_s, s.scattering_nu);
-  if (c.scene_ranges.narrows()) {
+  const AtmosphereDomain& d = c.domain;
+  if (d.narrowed()) {
     const BakedRanges ranges = Sky(bake).bakedRanges();
-    const TextureSizes it = iterationTextureSizes(c);
+    const TextureSizes it = iterationTextureSizes(made_from);
     fmt::print("scene ranges:  altitude {:g} to {:g} m, sun zenith {:g} to {:.2f} deg (the scattering tables; the "
                "orders iterated over the whole atmosphere at {} r x {} mu x {} mu_s x {} nu)\n",
                ranges.altitude_min_m, ranges.altitude_max_m, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg,
                it.scattering_r, it.scattering_mu, it.scattering_mu_s, it.scattering_nu);
     // What narrowing buys at these sizes: texels closer together in the
     // axes' own coordinates than a whole-domain bake's.
-    const AtmosphereDomain d = AtmosphereDomain::fromConfig(c);
     fmt::print("               texels {:.2f}x closer in altitude and {:.2f}x in sun angle than a whole-domain bake "
                "of these sizes\n",
                d.horizonToTopDistance() / (d.scattering_rho_max_m - d.scattering_rho_min_m),
@@ -73,7 +76,7 @@ void runInfo(const std::string& path) {
   } else {
     fmt::print("bake time:     not recorded (reproducible bake)\n");
   }
-  fmt::print("\nparameters (TOML):\n{}", configToToml(c));
+  fmt::print("\nthe config it was baked from (TOML):\n{}", bake.config_toml);
 }
 
 }  // namespace

@@ -191,7 +191,7 @@ EnergyBudgetLookups energyBudgetLookups(const Sky& sky) {
   // ground: the irradiance table's mu_s texels (sky) and the transmittance
   // table's mu texels of its ground row (sun).
   const AtmosphereDomain& domain = sky.sampler().domain();
-  const TextureSizes& sizes = sky.config().sizes;
+  const TextureSizes& sizes = sky.contents().sizes;
   for (int i = 0; i < sizes.scattering_mu_s; ++i) {
     lookups.radiance_kinks_mu_s.push_back(muSFromScatteringTexel(domain, ScatteringSizes::fromTextureSizes(sizes), i));
   }

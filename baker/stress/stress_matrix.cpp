@@ -115,7 +115,7 @@ StressRow runStressCase(const StressCase& stress_case, int threads) {
   // Optical depth >= 0 is transmittance <= 1; finite is transmittance > 0 or
   // exactly 0 through the ground.
   row.invariants.push_back(checkFiniteNonNegativeTexels("transmittance table (optical depth finite >= 0)",
-                                                        t.transmittance.texels, channels));
+                                                        t.optical_depth.texels, channels));
   row.invariants.push_back(
       checkFiniteNonNegativeTexels("single_rayleigh table finite >= 0", t.single_rayleigh.texels, channels));
   row.invariants.push_back(checkFiniteNonNegativeTexels("single_mie table finite >= 0", t.single_mie.texels, channels));

@@ -82,7 +82,7 @@ TEST(Bake, TablesAreFiniteAndNonNegative) {
   SilentProgress silent;
   const BakeOutput bake = bakeAtmosphere(test::smallEarth(3), 0, silent);
   const BakeTables& t = bake.file.tables;
-  for (const auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
+  for (const auto* texels : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
                              &t.multiple_density.texels}) {
     for (const Spectrum& s : *texels) {
       for (int c = 0; c < 4; ++c) {

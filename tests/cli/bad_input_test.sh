@@ -189,7 +189,7 @@ bytes=$(stat -c %s "$work/good.exr")
 head -c 1000 "$work/good.exr" >"$work/cut_header.exr"
 head -c $((bytes / 2)) "$work/good.exr" >"$work/cut_pixels.exr"
 $corrupt "$work/good.exr" "$work/v99.exr" version 99
-$corrupt "$work/good.exr" "$work/no_part.exr" rename transmittance transmittancX
+$corrupt "$work/good.exr" "$work/no_part.exr" rename optical_depth optical_deptX
 $corrupt "$work/good.exr" "$work/flipped.exr" flip 0.6
 printf 'altitude_m,sun_zenith_deg\n0,30\n' >"$work/e.csv"
 printf 'not an exr' >"$work/text.exr"
@@ -208,8 +208,8 @@ for command in info "lookup irradiance" render validate; do
     validate) extra=("${validate_q[@]}"); out=$work/existing.csv ;;
   esac
   # shellcheck disable=SC2086 # "lookup irradiance" is two words
-  kept "$out" "v99.exr: format version 99 is not understood by this skybake (it reads version 2)" -- $command "$work/v99.exr" "${extra[@]}"
-  kept "$out" "no_part.exr: part 'transmittance' is missing" -- $command "$work/no_part.exr" "${extra[@]}"
+  kept "$out" "v99.exr: format version 99 is not understood by this skybake (it reads versions 2 to 3)" -- $command "$work/v99.exr" "${extra[@]}"
+  kept "$out" "no_part.exr: part 'optical_depth' is missing" -- $command "$work/no_part.exr" "${extra[@]}"
 done
 kept "$work/existing.png" "flipped.exr: not a readable skybake bake file: " -- render "$work/flipped.exr" "${render_v[@]}"
 refused "text.exr: not a readable skybake bake file" -- info "$work/text.exr"

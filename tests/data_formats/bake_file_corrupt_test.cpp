@@ -22,6 +22,7 @@
 
 #include "data_formats/bake_file.h"
 #include "data_formats/bake_file_attributes.h"
+#include "data_formats/bake_file_contents.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 
@@ -33,13 +34,15 @@ namespace fs = std::filesystem;
 // A valid bake at the smallest sizes the config allows, tables zero.
 BakeFile tinyBake() {
   BakeFile bake;
-  bake.config = builtinEarthConfig();
-  TextureSizes& s = bake.config.sizes;
-  s = {2, 2, 2, 2, 2, 4, 2, 2, std::nullopt};
+  BakeConfig config = builtinEarthConfig();
+  config.sizes = {2, 2, 2, 2, 2, 4, 2, 2, std::nullopt};
+  bake.contents = storedContents(config, AtmosphereDomain::fromParameters(config.atmosphere));
+  bake.config_toml = configToToml(config);
+  const TextureSizes& s = bake.contents.sizes;
   bake.orders_computed = 1;
   bake.report_json = "{}";
   BakeTables& t = bake.tables;
-  t.transmittance = Texture2D(s.transmittance_mu, s.transmittance_r);
+  t.optical_depth = Texture2D(s.transmittance_mu, s.transmittance_r);
   t.irradiance = Texture2D(s.irradiance_mu_s, s.irradiance_r);
   t.single_rayleigh = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.single_mie = t.single_rayleigh;
@@ -75,18 +78,18 @@ void expectRefused(const fs::path& path, const std::string& fragment) {
   }
 }
 
-// The headers of a bake whose config claims `config.sizes`, every part's
-// window matching them, and no pixel data: to the reader, a small file that
-// promises huge tables.
-void writeHeadersOnly(const fs::path& path, const BakeConfig& config) {
-  const TextureSizes& s = config.sizes;
+// The headers of a bake whose attributes claim `contents.sizes`, every
+// part's window matching them, and no pixel data: to the reader, a small file
+// that promises huge tables.
+void writeHeadersOnly(const fs::path& path, const BakeContents& contents) {
+  const TextureSizes& s = contents.sizes;
   const int atlas_width = s.scattering_nu * s.scattering_mu_s;
   const int atlas_height = s.scattering_r * s.scattering_mu;
   const struct {
     const char* name;
     int width;
     int height;
-  } parts[] = {{bake_file::kPartTransmittance, s.transmittance_mu, s.transmittance_r},
+  } parts[] = {{bake_file::kPartOpticalDepth, s.transmittance_mu, s.transmittance_r},
                {bake_file::kPartSingleRayleigh, atlas_width, atlas_height},
                {bake_file::kPartSingleMie, atlas_width, atlas_height},
                {bake_file::kPartMultipleScattering, atlas_width, atlas_height},
@@ -101,11 +104,12 @@ void writeHeadersOnly(const fs::path& path, const BakeConfig& config) {
     header.setName(part.name);
     header.setType(Imf::SCANLINEIMAGE);
     header.compression() = Imf::ZIP_COMPRESSION;
-    for (double wavelength : config.atmosphere.wavelengths_nm) {
+    for (double wavelength : contents.atmosphere.wavelengths_nm) {
       header.channels().insert(channelName(wavelength), Imf::Channel(Imf::FLOAT));
     }
     header.insert(bake_file::kAttrFormatVersion, Imf::IntAttribute(kBakeFormatVersion));
-    header.insert(bake_file::kAttrConfig, Imf::StringAttribute(configToToml(config)));
+    insertContentsAttributes(contents, header);
+    header.insert(bake_file::kAttrConfig, Imf::StringAttribute("name = \"headers only\"\n"));
     header.insert(bake_file::kAttrOrders, Imf::IntAttribute(1));
     header.insert(bake_file::kAttrBakeReport, Imf::StringAttribute("{}"));
     headers.push_back(header);
@@ -130,7 +134,8 @@ class BakeFileCorruptTest : public ::testing::Test {
 TEST_F(BakeFileCorruptTest, MemoryReadEqualsFileRead) {
   const BakeFile from_file = readBakeFile(good);
   const BakeFile from_memory = readBakeFileFromMemory(fileBytes(good), "in memory");
-  EXPECT_EQ(configToToml(from_memory.config), configToToml(from_file.config));
+  EXPECT_TRUE(from_memory.contents == from_file.contents);
+  EXPECT_EQ(from_memory.config_toml, from_file.config_toml);
   EXPECT_EQ(from_memory.report_json, from_file.report_json);
   EXPECT_EQ(from_memory.tables.single_rayleigh.texels, from_file.tables.single_rayleigh.texels);
 }
@@ -184,11 +189,11 @@ TEST_F(BakeFileCorruptTest, ChannelListLongerThanItsDeclaredSizeIsRefused) {
 TEST_F(BakeFileCorruptTest, TablesLargerThanTheFileCanHoldAreRefused) {
   // 8192 x 8192 texels of three floats: 805 MB of pixel data, promised by a
   // file of some kilobytes.
-  BakeConfig config = tinyBake().config;
-  config.sizes.transmittance_mu = 8192;
-  config.sizes.transmittance_r = 8192;
+  BakeContents contents = tinyBake().contents;
+  contents.sizes.transmittance_mu = 8192;
+  contents.sizes.transmittance_r = 8192;
   const fs::path corrupt = dir / "huge_tables.exr";
-  writeHeadersOnly(corrupt, config);
+  writeHeadersOnly(corrupt, contents);
   ASSERT_LT(fs::file_size(corrupt), 1u << 20);
   expectRefused(corrupt, "more than a file of");
 }

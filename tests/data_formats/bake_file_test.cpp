@@ -17,20 +17,30 @@ namespace fs = std::filesystem;
 // A bake with small tables filled with distinct, non-round values.
 BakeFile syntheticBake() {
   BakeFile bake;
-  bake.config = builtinEarthConfig();
-  TextureSizes& s = bake.config.sizes;
-  s = {8, 4, 6, 3, 3, 4, 5, 2, std::nullopt};
+  BakeConfig config = builtinEarthConfig();
+  config.sizes = {8, 4, 6, 3, 3, 4, 5, 2, std::nullopt};
+  // A narrowed domain with ends no constant would give: the file must state
+  // them exactly.
+  AtmosphereDomain domain = AtmosphereDomain::fromParameters(config.atmosphere);
+  domain.scattering_rho_min_m = 123456.789;
+  domain.scattering_rho_max_m = 654321.0123;
+  domain.scattering_mu_s_coord_min = 0.1234567891234;
+  domain.scattering_mu_s_coord_max = 0.987654321;
+  domain.scattering_ground_views = false;
+  bake.contents = storedContents(config, domain);
+  bake.config_toml = configToToml(config);
+  const TextureSizes& s = bake.contents.sizes;
   bake.orders_computed = 3;
   bake.report_json = R"({"threads": 2, "note": "synthetic"})";
   BakeTables& t = bake.tables;
-  t.transmittance = Texture2D(s.transmittance_mu, s.transmittance_r);
+  t.optical_depth = Texture2D(s.transmittance_mu, s.transmittance_r);
   t.irradiance = Texture2D(s.irradiance_mu_s, s.irradiance_r);
   t.single_rayleigh = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.single_mie = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.multiple_scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.multiple_density = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   float x = 0.1f;
-  for (auto* texels : {&t.transmittance.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
+  for (auto* texels : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
                        &t.multiple_density.texels}) {
     for (Spectrum& v : *texels) {
       v = Spectrum(x, x * 1.5f, x * 0.25f, 0.0f);
@@ -56,7 +66,10 @@ TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
   const fs::path path = dir / "bake.exr";
   writeBakeFile(path, written);
   const BakeFile read = readBakeFile(path);
-  EXPECT_EQ(configToToml(read.config), configToToml(written.config));
+  EXPECT_TRUE(read.contents == written.contents);
+  EXPECT_EQ(read.contents.domain, written.contents.domain);
+  EXPECT_EQ(read.config_toml, written.config_toml);
+  EXPECT_EQ(read.format_version, kBakeFormatVersion);
   EXPECT_EQ(read.orders_computed, written.orders_computed);
   EXPECT_EQ(read.report_json, written.report_json);
   // Float storage is lossless: compare exactly, channel by channel (the
@@ -67,7 +80,7 @@ TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
       for (int c = 0; c < 3; ++c) ASSERT_EQ(a[i][c], b[i][c]) << i;
     }
   };
-  same(read.tables.transmittance.texels, written.tables.transmittance.texels);
+  same(read.tables.optical_depth.texels, written.tables.optical_depth.texels);
   same(read.tables.irradiance.texels, written.tables.irradiance.texels);
   same(read.tables.single_rayleigh.texels, written.tables.single_rayleigh.texels);
   same(read.tables.single_mie.texels, written.tables.single_mie.texels);
@@ -76,11 +89,11 @@ TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
 
 TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {
   BakeFile written = syntheticBake();
-  written.config.bake.precision = StoragePrecision::Half;
+  written.contents.precision = StoragePrecision::Half;
   const fs::path path = dir / "half.exr";
   writeBakeFile(path, written);
   const BakeFile read = readBakeFile(path);
-  EXPECT_EQ(read.config.bake.precision, StoragePrecision::Half);
+  EXPECT_EQ(read.contents.precision, StoragePrecision::Half);
   // half has an 11-bit significand: relative rounding error <= 2^-11 ~ 4.9e-4
   // for normal values (the synthetic values are all in half's normal range).
   for (size_t i = 0; i < read.tables.single_rayleigh.texels.size(); ++i) {
@@ -93,7 +106,7 @@ TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {
 // normal range in twilight: a half bake still stores it as float, exactly.
 TEST_F(BakeFileTest, HalfPrecisionKeepsTheDensityInFloat) {
   BakeFile written = syntheticBake();
-  written.config.bake.precision = StoragePrecision::Half;
+  written.contents.precision = StoragePrecision::Half;
   for (Spectrum& v : written.tables.multiple_density.texels) v *= 1e-9f;  // below half's smallest subnormal, 6e-8
   for (Spectrum& v : written.tables.single_rayleigh.texels) v *= 1e-9f;
   const fs::path path = dir / "half_density.exr";

@@ -107,45 +107,5 @@ TEST_F(TextureMapping, TransmittanceAndIrradianceTexelCentresRoundTrip) {
   }
 }
 
-// A scene's ranges narrow the 4D axes: texels still round-trip, the r axis
-// ends on the range's altitudes, and the sun axis covers the range plus its
-// 1 deg margin with one texel on the horizon.
-TEST_F(TextureMapping, NarrowedScatteringAxesRoundTripAndEndOnTheSceneRanges) {
-  config.scene_ranges.altitude_m = std::array<double, 2>{500.0, 2000.0};
-  config.scene_ranges.sun_zenith_deg = std::array<double, 2>{20.0, 90.0};
-  const AtmosphereDomain narrow = AtmosphereDomain::fromConfig(config);
-  ASSERT_TRUE(narrow.narrowed());
-  EXPECT_FALSE(domain.narrowed());
-  // r comes back through sqrt(rho^2 + R^2) with R = 6.36e6 m: ~1e-9 m.
-  EXPECT_NEAR(rFromScatteringTexel(narrow, sizes, 0), domain.bottom_radius_m + 500.0, 1e-6);
-  EXPECT_NEAR(rFromScatteringTexel(narrow, sizes, sizes.r - 1), domain.bottom_radius_m + 2000.0, 1e-6);
-  const double deg = M_PI / 180.0;
-  EXPECT_NEAR(muSFromScatteringTexel(narrow, sizes, sizes.mu_s - 1), std::cos(19.0 * deg), 1e-9);
-  // The low end moves down from 91 deg by less than one texel to put a
-  // texel on the horizon.
-  const double lowest_deg = std::acos(muSFromScatteringTexel(narrow, sizes, 0)) / deg;
-  const double second_deg = std::acos(muSFromScatteringTexel(narrow, sizes, 1)) / deg;
-  EXPECT_GE(lowest_deg, 91.0 - 1e-9);
-  EXPECT_LT(lowest_deg - 91.0, lowest_deg - second_deg);
-  double closest_to_horizon = 1.0;
-  for (int i = 0; i < sizes.mu_s; ++i) {
-    closest_to_horizon = std::min(closest_to_horizon, std::abs(muSFromScatteringTexel(narrow, sizes, i)));
-  }
-  EXPECT_LT(closest_to_horizon, 1e-9);
-  for (int i_r = 0; i_r < sizes.r; ++i_r) {
-    for (int i_mu_s = 0; i_mu_s < sizes.mu_s; ++i_mu_s) {
-      const ScatteringTexelConfig c = scatteringTexelConfig(narrow, sizes, i_r, sizes.mu / 2 + 3, i_mu_s, 0);
-      const ScatteringCoord u =
-          scatteringCoordFromRMuMuSNu(narrow, sizes, c.r, c.mu, c.mu_s, c.nu, c.ray_intersects_ground);
-      EXPECT_NEAR(u.u_r, centre(i_r, sizes.r), kCoordTolerance);
-      EXPECT_NEAR(u.u_mu, centre(sizes.mu / 2 + 3, sizes.mu), kCoordTolerance);
-      EXPECT_NEAR(u.u_mu_s, centre(i_mu_s, sizes.mu_s), kCoordTolerance);
-    }
-  }
-  // The irradiance table keeps the whole sun range.
-  EXPECT_NEAR(irradianceTexelConfig(narrow, config.sizes.irradiance_mu_s, config.sizes.irradiance_r, 0, 0).mu,
-              domain.mu_s_min, 1e-9);
-}
-
 }  // namespace
 }  // namespace skybake

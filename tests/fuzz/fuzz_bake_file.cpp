@@ -1,7 +1,7 @@
 // libFuzzer target: readBakeFileFromMemory on arbitrary bytes. A bake file is
 // untrusted input (downloaded, copied, half-written), so any outcome other
 // than a BakeFile or an Error(BadInput) is a finding. A bake that is accepted
-// must hold exactly the tables its config describes, since the runtime indexes
+// must hold exactly the tables its attributes describe, since the runtime indexes
 // them by those sizes without further checks.
 #include <cstddef>
 #include <cstdint>
@@ -19,19 +19,19 @@ namespace {
 constexpr const char* kSource = "fuzz.exr";
 
 void expectTableSizes(const skybake::BakeFile& bake) {
-  const skybake::TextureSizes& s = bake.config.sizes;
+  const skybake::TextureSizes& s = bake.contents.sizes;
   const skybake::BakeTables& t = bake.tables;
   const size_t texels_4d = static_cast<size_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s *
                            s.scattering_nu;
   const bool ok =
-      t.transmittance.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
+      t.optical_depth.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
       t.irradiance.texels.size() ==
-          (bake.config.scene.ground_irradiance ? static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r : 0) &&
+          (bake.contents.outputs.ground_irradiance ? static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r : 0) &&
       t.single_rayleigh.texels.size() == texels_4d &&
-      t.single_mie.texels.size() == (skybake::bakeStoresSingleMie(bake.config.atmosphere) ? texels_4d : 0) &&
+      t.single_mie.texels.size() == (skybake::bakeStoresSingleMie(bake.contents.atmosphere) ? texels_4d : 0) &&
       t.multiple_scattering.texels.size() == texels_4d &&
-      t.multiple_density.texels.size() == (bake.config.scene.radiance_to_points ? texels_4d : 0);
-  if (!ok) skybake::fuzz::finding("accepted bake's tables do not match its config", bake.config.name);
+      t.multiple_density.texels.size() == (bake.contents.outputs.radiance_to_points ? texels_4d : 0);
+  if (!ok) skybake::fuzz::finding("accepted bake's tables do not match its attributes", "fuzz.exr");
 }
 
 }  // namespace
