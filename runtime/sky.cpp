@@ -95,7 +95,7 @@ AtmosphereRay enter(const AtmosphereDomain& domain, const glm::dvec3& camera, co
 constexpr double kRangeAltitudeTolerance_m = 1e-3;
 constexpr double kRangeSunZenithTolerance_deg = 1e-6;
 
-double degreesOfCosine(double cosine) { return std::acos(clampCosine(cosine)) * (180.0 / kPi); }
+double degreesOfCosine(double cosine) { return degreesFromRadians(std::acos(clampCosine(cosine))); }
 
 BakedRanges bakedRangesOf(const AtmosphereDomain& d, double sun_max_zenith_deg) {
   const double thickness_m = d.top_radius_m - d.bottom_radius_m;
@@ -133,9 +133,10 @@ Sky::Sky(BakeFile bake)
     : bake_(std::move(bake)),
       sampler_(bake_.contents.domain, bake_.contents.sizes),
       multiple_shape_(bake_.contents.atmosphere),
+      mie_phase_(bake_.contents.atmosphere.mie_phase_g),
       ranges_(bakedRangesOf(sampler_.domain(), bake_.contents.atmosphere.sun_max_zenith_deg)),
-      baked_mu_s_min_(std::cos(ranges_.sun_zenith_max_deg * (kPi / 180.0))),
-      baked_mu_s_max_(std::cos(ranges_.sun_zenith_min_deg * (kPi / 180.0))) {}
+      baked_mu_s_min_(std::cos(radiansFromDegrees(ranges_.sun_zenith_max_deg))),
+      baked_mu_s_max_(std::cos(radiansFromDegrees(ranges_.sun_zenith_min_deg))) {}
 
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                           const glm::dvec3& sun_dir, double shadow_length_m) const {
@@ -181,7 +182,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
   const Spectrum multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
                             multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
   const Spectrum radiance = single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-                            single.mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, nu)) +
+                            single.mie * static_cast<float>(mie_phase_(nu)) +
                             multiple;
   return {radiance, transmittance};
 }
@@ -341,7 +342,7 @@ Spectrum Sky::differenceSegmentRadiance(double r, double mu, double mu_s, double
     return SingleScattering{s.rayleigh, s.mie * static_cast<float>(mie_fade * mie_fade * (3.0 - 2.0 * mie_fade))};
   });
   return single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-         single.mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, nu)) + s.multiple;
+         single.mie * static_cast<float>(mie_phase_(nu)) + s.multiple;
 }
 
 double Sky::integratedSingleScatteringWeight(double mu_s) {
@@ -374,7 +375,7 @@ Spectrum Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_e
       sampler_, t, atmosphere(), multiple_shape_, baked_from_start.r, baked_from_start.mu, baked_from_start.mu_s,
       ray.nu, std::max(t_end - t_start, 0.0), kGroundRaySubintervals, false);
   return single.rayleigh * static_cast<float>(rayleighPhase(ray.nu)) +
-         single.mie * static_cast<float>(cornetteShanksPhase(atmosphere().mie_phase_g, ray.nu)) +
+         single.mie * static_cast<float>(mie_phase_(ray.nu)) +
          multiple.radiance * to_start;
 }
 

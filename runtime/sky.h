@@ -34,6 +34,7 @@
 
 #include "data_formats/bake_file.h"
 #include "runtime/multiple_scattering_phase.h"
+#include "runtime/phase_functions.h"
 #include "runtime/single_scattering_ray.h"
 #include "runtime/table_sampler.h"
 
@@ -183,6 +184,7 @@ class Sky {
   BakeFile bake_;
   TableSampler sampler_;
   MultipleScatteringPhase multiple_shape_;  // what multiple scattering is stored divided by
+  CornetteShanksPhase mie_phase_;           // the atmosphere's Mie phase function
   BakedRanges ranges_;
   double baked_mu_s_min_, baked_mu_s_max_;  // ranges_' sun angles as zenith cosines
 };

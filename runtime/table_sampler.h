@@ -40,12 +40,16 @@ inline AxisLerp axisLerpNu(double u_nu, int size) {
   return {i0, i0 + 1, static_cast<float>(x - i0)};
 }
 
-inline Spectrum sampleBilinear(const Texture2D& t, TextureCoord2D uv) {
-  const AxisLerp x = axisLerpFromTextureCoord(uv.u, t.width);
-  const AxisLerp y = axisLerpFromTextureCoord(uv.v, t.height);
+// The same from the axes' interpolation weights, for callers that reuse one
+// of them across lookups.
+inline Spectrum sampleBilinear(const Texture2D& t, const AxisLerp& x, const AxisLerp& y) {
   const Spectrum a = t.at(x.i0, y.i0) + (t.at(x.i1, y.i0) - t.at(x.i0, y.i0)) * x.w1;
   const Spectrum b = t.at(x.i0, y.i1) + (t.at(x.i1, y.i1) - t.at(x.i0, y.i1)) * x.w1;
   return a + (b - a) * y.w1;
+}
+
+inline Spectrum sampleBilinear(const Texture2D& t, TextureCoord2D uv) {
+  return sampleBilinear(t, axisLerpFromTextureCoord(uv.u, t.width), axisLerpFromTextureCoord(uv.v, t.height));
 }
 
 // How sample4D blends across mu_s and nu. With the sun below the horizon the
@@ -119,6 +123,17 @@ inline Spectrum sample4D(const Texture4D& t, const AxisLerp& r, const AxisLerp& 
                             nu.w1);
 }
 
+// sample4D of a table with a single r and a single mu_s texel (a 4D table
+// already interpolated at one (r, mu_s), Sky::skyRadianceBatch), without the
+// work the two trivial axes would cost: the same result, since blends with
+// weight 0 between a texel and itself return it exactly (tests tie the two).
+template <Blend blend = Blend::Linear>
+inline Spectrum sampleMuNuSlice(const Texture4D& slice, const AxisLerp& mu, const AxisLerp& nu) {
+  auto at = [&](int i_mu, int i_nu) -> const Spectrum& { return slice.at(0, i_mu, 0, i_nu); };
+  auto lerp_mu = [&](int i_nu) { return at(mu.i0, i_nu) + (at(mu.i1, i_nu) - at(mu.i0, i_nu)) * mu.w1; };
+  return blendAcross<blend>(lerp_mu(nu.i0), lerp_mu(nu.i1), nu.w1);
+}
+
 template <Blend blend = Blend::Linear>
 inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const AxisLerp& nu) {
   return sample4D<blend>(t, axisLerpFromTextureCoord(c.u_r, t.r_size), axisLerpFromTextureCoord(c.u_mu, t.mu_size),
@@ -133,16 +148,19 @@ inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const Axi
 class TableSampler {
  public:
   TableSampler(const AtmosphereDomain& domain, const TextureSizes& sizes)
-      : domain_(domain), sizes_(sizes), scattering_sizes_(ScatteringSizes::fromTextureSizes(sizes)) {}
+      : domain_(domain),
+        sizes_(sizes),
+        scattering_sizes_(ScatteringSizes::fromTextureSizes(sizes)),
+        H_(domain.horizonToTopDistance()) {}
 
   const AtmosphereDomain& domain() const { return domain_; }
   const TextureSizes& sizes() const { return sizes_; }
   const ScatteringSizes& scatteringSizes() const { return scattering_sizes_; }
 
   // Optical depth from (r, mu) to the top boundary (the ground ignored).
+  // Optical depth from (r, mu) to the top boundary (the ground ignored).
   Spectrum opticalDepthToTop(const Texture2D& optical_depth, double r, double mu) const {
-    return sampleBilinear(optical_depth, transmittanceCoordFromRMu(domain_, sizes_.transmittance_mu,
-                                                                   sizes_.transmittance_r, r, mu));
+    return OpticalDepthFromR(*this, r).toTop(optical_depth, mu);
   }
 
   // Optical depth over the segment [0, d] of the ray (r, mu). Written as a
@@ -158,11 +176,16 @@ class TableSampler {
     const double r_d = std::clamp(radiusAlongRay(r, mu, d), domain_.bottom_radius_m, domain_.top_radius_m);
     const double mu_d = cosineAlongRay(r, mu, d, r_d);
     const bool reversed = ray_intersects_ground || d <= -r * mu;
-    const Spectrum tau = reversed ? opticalDepthToTop(optical_depth, r_d, -mu_d) -
-                                        opticalDepthToTop(optical_depth, r, -mu)
-                                  : opticalDepthToTop(optical_depth, r, mu) -
-                                        opticalDepthToTop(optical_depth, r_d, mu_d);
-    return glm::max(tau, Spectrum(0.0f));  // interpolation may leave a tiny negative
+    return reversed ? depthBetween(opticalDepthToTop(optical_depth, r_d, -mu_d),
+                                   opticalDepthToTop(optical_depth, r, -mu))
+                    : depthBetween(opticalDepthToTop(optical_depth, r, mu),
+                                   opticalDepthToTop(optical_depth, r_d, mu_d));
+  }
+  // The optical depth between two points on one ray from the depths to the
+  // top at the nearer (`from_nearer`) and the farther point, as seen looking
+  // away from the top; interpolation may leave a tiny negative, read as 0.
+  static Spectrum depthBetween(const Spectrum& from_nearer, const Spectrum& from_farther) {
+    return glm::max(from_nearer - from_farther, Spectrum(0.0f));
   }
 
   // Transmittance to the sun from radius r with sun zenith cosine mu_s,
@@ -176,27 +199,44 @@ class TableSampler {
     return glm::exp(-sun.opticalDepth(optical_depth, sun.muCoord(mu_s))) * static_cast<float>(visible);
   }
 
-  // transmittanceToSun's steps for many suns seen from one r: the
-  // branch-free part (where on the table's mu axis, how much of the disk is
-  // up) for all suns in a loop that vectorizes, then the table reads.
-  class SunFromR {
+  // Optical depths to the top from one r: where a direction falls on the
+  // table's mu axis (selects only, so loops over many directions vectorize)
+  // and the table read, with the r coordinate worked out once.
+  class OpticalDepthFromR {
    public:
-    SunFromR(const TableSampler& sampler, double r, double sun_angular_radius)
-        : mu_coord_(TransmittanceMuCoordAtR::of(sampler.domain_, sampler.sizes_.transmittance_mu, r)),
-          r_coord_(transmittanceCoordR(sampler.domain_, sampler.sizes_.transmittance_r,
-                                       sampler.domain_.distanceToHorizon(r))),
-          tangent_mu_(tangentZenithCosine(r, sampler.domain_.bottom_radius_m)),
-          disk_half_size_(sunDiskHalfSizeAtHorizon(sampler.domain_.bottom_radius_m, r, sun_angular_radius)) {}
-    double muCoord(double mu_s) const { return mu_coord_(mu_s); }
-    double visibleFraction(double mu_s) const { return sunDiskVisibleFraction(mu_s - tangent_mu_, disk_half_size_); }
+    OpticalDepthFromR(const TableSampler& sampler, double r)
+        : rho_(sampler.domain_.distanceToHorizon(r)),
+          mu_coord_(TransmittanceMuCoordAtR::of(sampler.domain_, sampler.sizes_.transmittance_mu, r, rho_,
+                                                sampler.H_)),
+          r_lerp_(axisLerpFromTextureCoord(textureCoordFromUnitRange(rho_ / sampler.H_, sampler.sizes_.transmittance_r),
+                                           sampler.sizes_.transmittance_r)) {}
+    double muCoord(double mu) const { return mu_coord_(mu); }
     // Optical depth to the top at the mu coordinate `u_mu`.
     Spectrum opticalDepth(const Texture2D& optical_depth, double u_mu) const {
-      return sampleBilinear(optical_depth, {u_mu, r_coord_});
+      return sampleBilinear(optical_depth, axisLerpFromTextureCoord(u_mu, optical_depth.width), r_lerp_);
+    }
+    Spectrum toTop(const Texture2D& optical_depth, double mu) const {
+      return opticalDepth(optical_depth, muCoord(mu));
     }
 
    private:
+    double rho_;  // distanceToHorizon(r)
     TransmittanceMuCoordAtR mu_coord_;
-    double r_coord_;
+    AxisLerp r_lerp_;  // the r axis, the same for every direction
+  };
+
+  // transmittanceToSun's steps for many suns seen from one r: the
+  // branch-free part (where on the table's mu axis, how much of the disk is
+  // up) for all suns in a loop that vectorizes, then the table reads.
+  class SunFromR : public OpticalDepthFromR {
+   public:
+    SunFromR(const TableSampler& sampler, double r, double sun_angular_radius)
+        : OpticalDepthFromR(sampler, r),
+          tangent_mu_(tangentZenithCosine(r, sampler.domain_.bottom_radius_m)),
+          disk_half_size_(sunDiskHalfSizeAtHorizon(sampler.domain_.bottom_radius_m, r, sun_angular_radius)) {}
+    double visibleFraction(double mu_s) const { return sunDiskVisibleFraction(mu_s - tangent_mu_, disk_half_size_); }
+
+   private:
     double tangent_mu_, disk_half_size_;
   };
 
@@ -247,6 +287,7 @@ class TableSampler {
   AtmosphereDomain domain_;
   TextureSizes sizes_;
   ScatteringSizes scattering_sizes_;
+  double H_;  // domain_.horizonToTopDistance()
 };
 
 }  // namespace skybake

@@ -1,12 +1,13 @@
 #include "baker/numerics/gauss_legendre.h"
 
+#include "data_formats/angles.h"
+
 #include <cmath>
 #include <stdexcept>
 
 namespace skybake {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Newton steps stop once a root moves by less than this: double precision
 // near 1, so the weights (which depend on P_n' at the root) are exact to
 // rounding.

@@ -51,11 +51,6 @@ glm::dvec3 directionAround(const glm::dvec3& axis, double cos_theta, double phi)
   return glm::normalize(axis * cos_theta + t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)));
 }
 
-double henyeyGreenstein(double g, double cos_theta) {
-  const double base = 1.0 + g * g - 2.0 * g * cos_theta;
-  return (1.0 - g * g) / (4.0 * kPi * base * std::sqrt(base));
-}
-
 class PathTracer {
  public:
   explicit PathTracer(const AtmosphereParameters& a) : a_(a), media_(a) {}
@@ -232,7 +227,7 @@ class PathTracer {
     }
     const glm::dvec3 incoming = directionAround(dir, cos_theta, 2.0 * kPi * u_phi);
     const double c = clampCosine(glm::dot(incoming, dir));
-    const double pdf = p_uniform / (4.0 * kPi) + (1.0 - p_uniform) * henyeyGreenstein(g, c);
+    const double pdf = p_uniform / (4.0 * kPi) + (1.0 - p_uniform) * henyeyGreensteinPhase(g, c);
     weight = (rayleigh * rayleighPhase(c) + mie * cornetteShanksPhase(g, c)) / pdf;
     return incoming;
   }

@@ -11,7 +11,6 @@
 namespace skybake {
 namespace {
 
-double radians(double degrees) { return degrees * (kPi / 180.0); }
 
 glm::dvec3 fromZenithAzimuth(double zenith, double azimuth) {
   return {std::sin(zenith) * std::cos(azimuth), std::sin(zenith) * std::sin(azimuth), std::cos(zenith)};
@@ -33,7 +32,7 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
   switch (v.projection) {
     case Projection::LatLong: {
       // The sun's azimuth in the middle column, the zenith on the top row.
-      dir = fromZenithAzimuth(w * kPi, radians(v.sun_azimuth_deg) + (u - 0.5) * 2.0 * kPi);
+      dir = fromZenithAzimuth(w * kPi, radiansFromDegrees(v.sun_azimuth_deg) + (u - 0.5) * 2.0 * kPi);
       return true;
     }
     case Projection::Fisheye: {
@@ -43,17 +42,17 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
       const double rho = std::sqrt(px * px + py * py);
       if (rho > 1.0) return false;
       // The sun's azimuth toward the top of the image.
-      dir = fromZenithAzimuth(rho * radians(v.fov_deg) * 0.5, radians(v.sun_azimuth_deg) + std::atan2(px, py));
+      dir = fromZenithAzimuth(rho * radiansFromDegrees(v.fov_deg) * 0.5, radiansFromDegrees(v.sun_azimuth_deg) + std::atan2(px, py));
       return true;
     }
     case Projection::Perspective: {
-      const double azimuth = radians(v.view_azimuth_deg);
-      const double elevation = radians(v.view_elevation_deg);
+      const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
+      const double elevation = radiansFromDegrees(v.view_elevation_deg);
       const glm::dvec3 forward(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
                                std::sin(elevation));
       const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 0.0, 1.0)));
       const glm::dvec3 up = glm::cross(right, forward);
-      const double half_width = std::tan(radians(v.fov_deg) * 0.5);
+      const double half_width = std::tan(radiansFromDegrees(v.fov_deg) * 0.5);
       const double half_height = half_width * v.height / v.width;
       dir = glm::normalize(forward + right * ((2.0 * u - 1.0) * half_width) + up * ((1.0 - 2.0 * w) * half_height));
       return true;
@@ -83,7 +82,7 @@ Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec
 std::vector<float> renderSkyRadiance(const Sky& sky, const SkyView& v) {
   std::vector<float> image(static_cast<size_t>(v.width) * v.height * 3, 0.0f);
   const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m);
-  const glm::dvec3 sun = fromZenithAzimuth(radians(v.sun_zenith_deg), radians(v.sun_azimuth_deg));
+  const glm::dvec3 sun = fromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
   const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
   const int rgb[3] = {nearestChannel(wavelengths, 680.0), nearestChannel(wavelengths, 550.0),
                       nearestChannel(wavelengths, 440.0)};

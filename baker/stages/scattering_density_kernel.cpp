@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "baker/numerics/gauss_legendre.h"
+#include "runtime/phase_functions.h"
 
 namespace skybake {
 namespace {
@@ -80,7 +81,7 @@ void cosineModes(const std::array<double, kPhaseTransformAzimuths / 2 + 1>& samp
 
 ScatteringDensityKernel makeScatteringDensityKernel(const StageContext& ctx, const Texture2D& optical_depth) {
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
-  const double g = ctx.atmosphere.mie_phase_g;
+  const CornetteShanksPhase mie_phase(ctx.atmosphere.mie_phase_g);
   static const TransformCosines cosines;
   ScatteringDensityKernel kernel;
   kernel.altitudes.resize(s.r);
@@ -104,12 +105,8 @@ ScatteringDensityKernel makeScatteringDensityKernel(const StageContext& ctx, con
         rayleigh[0] = static_cast<float>(1.0 + a * a + 0.5 * b * b);
         rayleigh[1] = static_cast<float>(2.0 * a * b);
         rayleigh[2] = static_cast<float>(0.5 * b * b);
-        // Cornette-Shanks without its normalisation: (1 + x^2) / (1 + g^2 - 2 g x)^1.5.
-        for (size_t j = 0; j < mie_shape.size(); ++j) {
-          const double x = a + b * cosines.value[j][1];
-          const double base = 1.0 + g * g - 2.0 * g * x;
-          mie_shape[j] = (1.0 + x * x) / (base * std::sqrt(base));
-        }
+        // Cornette-Shanks without its normalisation.
+        for (size_t j = 0; j < mie_shape.size(); ++j) mie_shape[j] = mie_phase.shape(a + b * cosines.value[j][1]);
         cosineModes(mie_shape, cosines, &k.mie_modes[pair * kAzimuthModes]);
       }
     }

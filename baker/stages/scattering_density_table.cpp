@@ -135,9 +135,9 @@ Texture4D computeScatteringDensityTable(const StageContext& ctx, const Scatterin
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
   const AtmosphereMedia media(a);
   Texture4D out(s.r, s.mu, s.mu_s, s.nu);
-  const float cs_norm = static_cast<float>(3.0 / (8.0 * kPi) * (1.0 - a.mie_phase_g * a.mie_phase_g) /
-                                           (2.0 + a.mie_phase_g * a.mie_phase_g));
-  const float rayleigh_norm = static_cast<float>(3.0 / (16.0 * kPi));
+  // The kernel's phase modes are the shapes; their normalisations go here.
+  const float cs_norm = static_cast<float>(CornetteShanksPhase(a.mie_phase_g).normalisation());
+  const float rayleigh_norm = static_cast<float>(kRayleighPhaseNormalisation);
 
 #pragma omp parallel
   {

@@ -78,7 +78,7 @@ class Checks {
     for (const Camera& cam : cameras(a)) {
       const glm::dvec3 camera(0.0, 0.0, cam.r_m);
       for (double sun_zenith_deg : sunZenithAngles(a)) {
-        const glm::dvec3 sun = sunDirection(sun_zenith_deg * M_PI / 180.0);
+        const glm::dvec3 sun = sunDirection(radiansFromDegrees(sun_zenith_deg));
         const SunAndSkyIrradiance up = sky_.irradiance(camera, {0, 0, 1}, sun);
         const SunAndSkyIrradiance side = sky_.irradiance(camera, {1, 0, 0}, sun);
         const SunAndSkyIrradiance down = sky_.irradiance(camera, {0, 0, -1}, sun);
@@ -89,7 +89,7 @@ class Checks {
         }
         for (double mu : viewCosines(a, cam.r_m)) {
           for (double azimuth_deg : {0.0, 90.0, 180.0}) {
-            const glm::dvec3 view = direction(mu, azimuth_deg * M_PI / 180.0);
+            const glm::dvec3 view = direction(mu, radiansFromDegrees(azimuth_deg));
             ray(cam, camera, mu, view, sun,
                 fmt::format("{} mu {:.6f} az {} sun {} deg", cam.name, mu, azimuth_deg, sun_zenith_deg));
           }
@@ -130,7 +130,7 @@ class Checks {
   void continuity() {
     const AtmosphereParameters& a = sky_.atmosphere();
     const double floor = kContinuityFloorShare * max_;
-    const double lowest_sun_rad = a.sun_max_zenith_deg * M_PI / 180.0;
+    const double lowest_sun_rad = radiansFromDegrees(a.sun_max_zenith_deg);
     for (const Camera& cam : cameras(a)) {
       if (cam.r_m < a.bottom_radius_m || cam.r_m > a.top_radius_m) continue;
       const glm::dvec3 camera(0.0, 0.0, cam.r_m);
@@ -148,14 +148,14 @@ class Checks {
         // the ground occludes the atmosphere behind the tangent point.
         std::vector<double> zeniths;
         for (int vi = 0; vi < kContinuityViewAngles; ++vi) {
-          const double zenith = M_PI * (vi + 0.5) / kContinuityViewAngles;
+          const double zenith = kPi * (vi + 0.5) / kContinuityViewAngles;
           if (std::abs(zenith - horizon_zenith) > kHorizonExclusion_rad) zeniths.push_back(zenith);
         }
         // and the pairs just outside that band, where the mu axis is densest.
         zeniths.push_back(horizon_zenith - 2.0 * kHorizonExclusion_rad);
         zeniths.push_back(horizon_zenith + 2.0 * kHorizonExclusion_rad);
         for (double zenith : zeniths) {
-          for (double azimuth : {0.0, 0.5 * M_PI, M_PI}) {
+          for (double azimuth : {0.0, 0.5 * kPi, kPi}) {
             const glm::dvec3 view = direction(std::cos(zenith), azimuth);
             const glm::dvec3 view_before = direction(std::cos(zenith - kContinuityStep_rad), azimuth);
             const glm::dvec3 view_moved = direction(std::cos(zenith + kContinuityStep_rad), azimuth);

@@ -8,13 +8,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/phase_functions.h"
+#include "data_formats/angles.h"
 
 namespace skybake {
 
 inline glm::dvec3 directionFromZenithAzimuthDeg(double zenith_deg, double azimuth_deg) {
-  const double t = zenith_deg * (kPi / 180.0);
-  const double p = azimuth_deg * (kPi / 180.0);
+  const double t = radiansFromDegrees(zenith_deg);
+  const double p = radiansFromDegrees(azimuth_deg);
   return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
 }
 

@@ -44,7 +44,7 @@ Directions randomDirections(size_t count) {
 constexpr size_t kRays = 1 << 16;
 // The sun at the benchmark's argument, in degrees from the zenith.
 glm::dvec3 sunAt(const benchmark::State& state) {
-  const double zenith = static_cast<double>(state.range(0)) * (3.14159265358979323846 / 180.0);
+  const double zenith = skybake::radiansFromDegrees(static_cast<double>(state.range(0)));
   return {std::sin(zenith), 0.0, std::cos(zenith)};
 }
 

@@ -20,7 +20,6 @@
 namespace skybake {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 BakeConfig stressCase(const std::string& name) {
   for (StressCase& c : stressCases(true)) {

@@ -58,7 +58,7 @@ TEST(NoMieBake, LeavesOutTheSingleMiePartAndMatchesANegligibleMieBake) {
   const glm::dvec3 sun = glm::normalize(glm::dvec3(0.5, 0.0, 0.8));
   std::vector<glm::dvec3> views;
   for (double zenith_deg : {0.0, 45.0, 89.0, 91.0, 135.0}) {
-    const double v = zenith_deg * M_PI / 180.0;
+    const double v = radiansFromDegrees(zenith_deg);
     views.emplace_back(std::sin(v), 0.0, std::cos(v));
   }
   int i = 0;
@@ -178,7 +178,7 @@ TEST(CombinedSingleMie, StoresOneChannelBesideRayleighAndStaysCloseToTheSeparate
   const glm::dvec3 sun = glm::normalize(glm::dvec3(0.6, 0.0, 0.8));
   for (double zenith_deg : {0.0, 30.0, 60.0, 85.0, 95.0}) {
     for (double azimuth_deg : {0.0, 90.0, 180.0}) {
-      const double v = zenith_deg * M_PI / 180.0, phi = azimuth_deg * M_PI / 180.0;
+      const double v = radiansFromDegrees(zenith_deg), phi = radiansFromDegrees(azimuth_deg);
       const glm::dvec3 view(std::sin(v) * std::cos(phi), std::sin(v) * std::sin(phi), std::cos(v));
       const Spectrum read = from_file.skyRadiance(camera, view, sun).radiance;
       const Spectrum kept = in_memory.skyRadiance(camera, view, sun).radiance;

@@ -8,6 +8,7 @@
 
 #include "baker/validation/local_frame.h"
 #include "baker/reference/reference_solver.h"
+#include "runtime/phase_functions.h"
 #include "test_configs.h"
 
 namespace skybake {

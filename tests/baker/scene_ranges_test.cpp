@@ -18,7 +18,7 @@
 namespace skybake {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+constexpr double kDeg = radiansFromDegrees(1.0);
 
 // Earth at an eighth of the default 4D texels: whole-domain and narrowed
 // bakes of it take about a second each on 2 cores.

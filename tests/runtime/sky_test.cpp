@@ -31,10 +31,8 @@ const Sky& bakedSky(const char* file) {
   return it->second;
 }
 
-double radians(double degrees) { return degrees * kPi / 180.0; }
-
 glm::dvec3 direction(double zenith_deg, double azimuth_deg) {
-  const double t = radians(zenith_deg), p = radians(azimuth_deg);
+  const double t = radiansFromDegrees(zenith_deg), p = radiansFromDegrees(azimuth_deg);
   return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
 }
 
@@ -72,7 +70,7 @@ Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, 
 
 // Zenith angle (deg) of the geometric horizon seen from radius r.
 double horizonZenithDeg(const AtmosphereParameters& a, double r) {
-  return 180.0 - std::asin(a.bottom_radius_m / r) * 180.0 / kPi;
+  return 180.0 - degreesFromRadians(std::asin(a.bottom_radius_m / r));
 }
 
 TEST(Sky, SingleScatteringLookupsMatchDirectIntegration) {

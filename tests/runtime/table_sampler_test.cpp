@@ -68,3 +68,32 @@ TEST(TableSampler, DensityBlendsSunTexelsGeometricallyBelowTheHorizonOnly) {
 
 }  // namespace
 }  // namespace skybake
+
+namespace skybake {
+namespace {
+
+// The batch lookups' slice sampling is sample4D with its r and mu_s axes
+// reduced to one texel: the same numbers exactly, for both blends, since a
+// blend of a texel with itself at weight 0 returns it unchanged.
+TEST(TableSampler, SliceSamplingEqualsSample4DOnASingleTexelAxis) {
+  Texture4D slice(1, 6, 1, 4);
+  float x = 0.37f;
+  for (Spectrum& v : slice.texels) {
+    v = Spectrum(x, 3.0f * x, 0.01f * x, 0.0f);
+    x = x * 1.91f + 0.13f;
+    if (x > 50.0f) x = 0.011f;
+  }
+  const AxisLerp single{0, 0, 0.0f};
+  for (double u_mu : {0.0, 0.13, 0.5, 0.77, 1.0}) {
+    for (double u_nu : {0.0, 0.2, 0.61, 1.0}) {
+      const AxisLerp mu = axisLerpFromTextureCoord(u_mu, slice.mu_size);
+      const AxisLerp nu = axisLerpNu(u_nu, slice.nu_size);
+      EXPECT_EQ(sampleMuNuSlice<Blend::Linear>(slice, mu, nu), sample4D<Blend::Linear>(slice, single, mu, single, nu));
+      EXPECT_EQ(sampleMuNuSlice<Blend::GeometricWhereSteep>(slice, mu, nu),
+                sample4D<Blend::GeometricWhereSteep>(slice, single, mu, single, nu));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skybake
