@@ -41,7 +41,7 @@ RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r,
   return {r, muFromDistanceToTop(r, dist, rho, H)};
 }
 
-RMu irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
+RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
                           int i_r) {
   const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
   return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m),

@@ -290,8 +290,13 @@ struct RMu {
   double mu;
 };
 RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r, int i_mu, int i_r);
+
+struct RMuS {
+  double r;
+  double mu_s;
+};
 // (r, mu_s) at an irradiance texel centre.
-RMu irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
+RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
                           int i_r);
 
 // The nu a slice of the 4D tables stands for: -1 + 2 i / (nu_size - 1).

@@ -29,7 +29,7 @@ void appendKinkAltitudes(const DensityProfile& profile, std::vector<double>& alt
 
 }  // namespace
 
-SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
+SpectrumD integrateOpticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
                                int segments_per_piece) {
   const AtmosphereParameters& a = media.parameters();
   // Reused per thread: this runs millions of times in the reference solver.
@@ -61,8 +61,8 @@ SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu
   return depth;
 }
 
-SpectrumD opticalDepthToTop(const AtmosphereMedia& media, double r, double mu, int segments_per_piece) {
-  return opticalDepthAlongRay(media, r, mu, distanceToOuterSphere(r, mu, media.parameters().top_radius_m),
+SpectrumD integrateOpticalDepthToTop(const AtmosphereMedia& media, double r, double mu, int segments_per_piece) {
+  return integrateOpticalDepthAlongRay(media, r, mu, distanceToOuterSphere(r, mu, media.parameters().top_radius_m),
                               segments_per_piece);
 }
 

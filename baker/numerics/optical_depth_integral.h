@@ -14,11 +14,11 @@ namespace skybake {
 // 16 (the default) puts the error near 1e-9 on Earth's steepest profile (Mie,
 // 1.2 km), 6 near 1e-6, enough where the result feeds a Monte Carlo estimate.
 inline constexpr int kOpticalDepthSegmentsPerPiece = 16;
-SpectrumD opticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
+SpectrumD integrateOpticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
                                int segments_per_piece = kOpticalDepthSegmentsPerPiece);
 
 // Optical depth from (r, mu) to the top boundary.
-SpectrumD opticalDepthToTop(const AtmosphereMedia& media, double r, double mu,
+SpectrumD integrateOpticalDepthToTop(const AtmosphereMedia& media, double r, double mu,
                             int segments_per_piece = kOpticalDepthSegmentsPerPiece);
 
 }  // namespace skybake

@@ -67,7 +67,7 @@ class PathTracer {
     const double visible = sunDiskVisibleFraction(
         mu_s - horizon_mu, sunDiskHalfSizeAtHorizon(a_.bottom_radius_m, r, a_.sun_angular_radius_rad));
     if (visible <= 0.0) return SpectrumD(0.0);
-    return glm::exp(-opticalDepthToTop(media_, r, std::max(mu_s, horizon_mu), segments)) * visible;
+    return glm::exp(-integrateOpticalDepthToTop(media_, r, std::max(mu_s, horizon_mu), segments)) * visible;
   }
 
   // Light scattered at p toward -view_dir, from the sun, per unit length.
@@ -184,7 +184,7 @@ class PathTracer {
       v.valid = true;
       v.ground = true;
       v.position = ray.origin + ray.dir * ray.length;
-      v.weight = glm::exp(-opticalDepthAlongRay(media_, ray.r, ray.mu, ray.length, kPathOpticalDepthSegments)) / p_ground;
+      v.weight = glm::exp(-integrateOpticalDepthAlongRay(media_, ray.r, ray.mu, ray.length, kPathOpticalDepthSegments)) / p_ground;
       return v;
     }
     // In the air: uniformly or by the proposal, the rest of u choosing where.
@@ -195,7 +195,7 @@ class PathTracer {
     const double pdf = (1.0 - p_ground) * ((1.0 - uniform_share) * proposal.pdf(t) + uniform_share / ray.length);
     v.valid = true;
     v.position = ray.origin + ray.dir * t;
-    v.weight = glm::exp(-opticalDepthAlongRay(media_, ray.r, ray.mu, t, kPathOpticalDepthSegments)) / pdf;
+    v.weight = glm::exp(-integrateOpticalDepthAlongRay(media_, ray.r, ray.mu, t, kPathOpticalDepthSegments)) / pdf;
     return v;
   }
 
@@ -328,7 +328,7 @@ ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths
 SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
   const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return SpectrumD(1.0);
-  return glm::exp(-opticalDepthAlongRay(AtmosphereMedia(a_), ray.r, ray.mu, ray.length));
+  return glm::exp(-integrateOpticalDepthAlongRay(AtmosphereMedia(a_), ray.r, ray.mu, ray.length));
 }
 
 ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,

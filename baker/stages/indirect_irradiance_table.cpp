@@ -25,18 +25,18 @@ Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const OrderRad
 #pragma omp for schedule(dynamic)
     for (int i_r = 0; i_r < table.height; ++i_r) {
       for (int i_mu_s = 0; i_mu_s < table.width; ++i_mu_s) {
-        const RMu rm = irradianceTexelConfig(ctx.sampler.domain(), table.width, table.height, i_mu_s, i_r);
-        const double sun_x = safeSqrt(1.0 - rm.mu * rm.mu);
+        const RMuS rm = irradianceTexelConfig(ctx.sampler.domain(), table.width, table.height, i_mu_s, i_r);
+        const double sun_x = safeSqrt(1.0 - rm.mu_s * rm.mu_s);
         SpectrumD sum(0.0);
         for (int i = 0; i < kZenithSamples; ++i) {
           const double theta = (i + 0.5) * d_theta;
           const double mu = std::cos(theta);
           // cos(theta) for the horizontal surface times the solid angle element.
           const double weight = mu * std::sin(theta) * d_theta * d_phi;
-          ring_radiance.moveTo(rm.r, mu, rm.mu, false);
+          ring_radiance.moveTo(rm.r, mu, rm.mu_s, false);
           for (int j = 0; j < kAzimuthSamples; ++j) {
             const double phi = (j + 0.5) * d_phi;
-            const double nu = clampCosine(std::sin(theta) * std::cos(phi) * sun_x + mu * rm.mu);
+            const double nu = clampCosine(std::sin(theta) * std::cos(phi) * sun_x + mu * rm.mu_s);
             sum += SpectrumD(ring_radiance.at(nu)) * weight;
           }
         }

@@ -13,7 +13,7 @@ Texture2D computeOpticalDepthTable(const StageContext& ctx) {
   for (int i_r = 0; i_r < table.height; ++i_r) {
     for (int i_mu = 0; i_mu < table.width; ++i_mu) {
       const RMu rm = transmittanceTexelConfig(ctx.sampler.domain(), table.width, table.height, i_mu, i_r);
-      table.at(i_mu, i_r) = Spectrum(opticalDepthToTop(media, rm.r, rm.mu));
+      table.at(i_mu, i_r) = Spectrum(integrateOpticalDepthToTop(media, rm.r, rm.mu));
     }
     ctx.progress.advance(1);
   }

@@ -58,7 +58,7 @@ TEST(BakePolicy, NarrowedScatteringAxesRoundTripAndEndOnTheSceneRanges) {
     }
   }
   // The irradiance table keeps the whole sun range.
-  EXPECT_NEAR(irradianceTexelConfig(narrow, config.sizes.irradiance_mu_s, config.sizes.irradiance_r, 0, 0).mu,
+  EXPECT_NEAR(irradianceTexelConfig(narrow, config.sizes.irradiance_mu_s, config.sizes.irradiance_r, 0, 0).mu_s,
               domain.mu_s_min, 1e-9);
 }
 

@@ -79,7 +79,7 @@ TEST(Transmittance, VerticalFromGroundMatchesClosedForm) {
   const BakeConfig config = builtinEarthConfig();
   const AtmosphereParameters& a = config.atmosphere;
   const SpectrumD expected = earthVerticalOpticalDepth(a);
-  const SpectrumD quadrature = opticalDepthToTop(AtmosphereMedia(a), a.bottom_radius_m, 1.0);
+  const SpectrumD quadrature = integrateOpticalDepthToTop(AtmosphereMedia(a), a.bottom_radius_m, 1.0);
 
   SilentProgress silent;
   const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
@@ -101,7 +101,7 @@ TEST(Transmittance, SlantedRaysMatchIndependentQuadrature) {
     const double r = a.bottom_radius_m + altitude;
     const double horizon_mu = -std::sqrt(1.0 - (a.bottom_radius_m / r) * (a.bottom_radius_m / r));
     for (double mu : {0.9, 0.5, 0.2, 0.05, 0.0, horizon_mu + 0.01}) {
-      const SpectrumD depth = opticalDepthToTop(media, r, mu);
+      const SpectrumD depth = integrateOpticalDepthToTop(media, r, mu);
       for (int c = 0; c < 3; ++c) {
         const double reference = independentOpticalDepth(a, c, r, mu);
         EXPECT_NEAR(std::exp(-depth[c]) / std::exp(-reference), 1.0, kTransmittanceTolerance)

@@ -99,8 +99,8 @@ TEST_F(TextureMapping, TransmittanceAndIrradianceTexelCentresRoundTrip) {
   }
   for (int i_r = 0; i_r < s.irradiance_r; ++i_r) {
     for (int i_mu_s = 0; i_mu_s < s.irradiance_mu_s; ++i_mu_s) {
-      const RMu rm = irradianceTexelConfig(domain, s.irradiance_mu_s, s.irradiance_r, i_mu_s, i_r);
-      const TextureCoord2D uv = irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, rm.r, rm.mu);
+      const RMuS rm = irradianceTexelConfig(domain, s.irradiance_mu_s, s.irradiance_r, i_mu_s, i_r);
+      const TextureCoord2D uv = irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, rm.r, rm.mu_s);
       EXPECT_NEAR(uv.u, centre(i_mu_s, s.irradiance_mu_s), kCoordTolerance);
       EXPECT_NEAR(uv.v, centre(i_r, s.irradiance_r), kCoordTolerance);
     }

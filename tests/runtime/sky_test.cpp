@@ -59,7 +59,7 @@ Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, 
         sunDiskVisibleFraction(mu_s_t - tangentZenithCosine(r_t, a.bottom_radius_m),
                                sunDiskHalfSizeAtHorizon(a.bottom_radius_m, r_t, a.sun_angular_radius_rad));
     if (visible <= 0.0) return;  // in the planet's shadow
-    const SpectrumD depth = opticalDepthAlongRay(media, r, mu, t) + opticalDepthToTop(media, r_t, mu_s_t);
+    const SpectrumD depth = integrateOpticalDepthAlongRay(media, r, mu, t) + integrateOpticalDepthToTop(media, r_t, mu_s_t);
     const double h = r_t - a.bottom_radius_m;
     const SpectrumD scattering = SpectrumD(a.rayleigh_scattering) * (media.rayleighDensity(h) * p_r) +
                                  SpectrumD(a.mie_scattering) * (media.mieDensity(h) * p_m);
@@ -232,7 +232,7 @@ TEST(Sky, TransmittanceLookupsMatchQuadrature) {
       for (double fraction : {0.1, 0.5, 1.0}) {
         const double length = fraction * distanceToOuterSphere(r, view.z, a.top_radius_m);
         const Spectrum looked_up = sky.transmittance(camera, camera + view * length);
-        const SpectrumD direct = glm::exp(-opticalDepthAlongRay(media, r, view.z, length));
+        const SpectrumD direct = glm::exp(-integrateOpticalDepthAlongRay(media, r, view.z, length));
         for (int c = 0; c < 3; ++c) {
           EXPECT_NEAR(looked_up[c] / direct[c], 1.0, 0.01)
               << "altitude " << altitude << " view " << view_zenith << " fraction " << fraction;
@@ -394,9 +394,9 @@ TEST(Sky, IrradianceLookupsEqualTheTableAtTexelCentres) {
   const Texture2D& table = sky.tables().irradiance;
   for (int i_r = 0; i_r < table.height; i_r += 3) {
     for (int i_mu_s = 0; i_mu_s < table.width; i_mu_s += 5) {
-      const RMu rm = irradianceTexelConfig(domain, table.width, table.height, i_mu_s, i_r);
+      const RMuS rm = irradianceTexelConfig(domain, table.width, table.height, i_mu_s, i_r);
       const glm::dvec3 point(0.0, 0.0, rm.r);
-      const glm::dvec3 sun(safeSqrt(1.0 - rm.mu * rm.mu), 0.0, rm.mu);
+      const glm::dvec3 sun(safeSqrt(1.0 - rm.mu_s * rm.mu_s), 0.0, rm.mu_s);
       const Spectrum sky_irradiance = sky.irradiance(point, {0.0, 0.0, 1.0}, sun).sky;
       for (int c = 0; c < 3; ++c) {
         // Bilinear weights at a texel centre are 1 and 0 up to rounding of the
