@@ -26,21 +26,11 @@
 // The rest is broad and smooth and interpolates best as it is (a constant
 // divisor).
 //
-// Measured with `skybake validate --queries quick` (day sky RMS, 680 / 550 /
-// 440 nm; Earth against 32768-path references, a Mie x100 haze against
-// 8192-path ones; before: multiple scattering stored with Rayleigh single
-// scattering, both over the Rayleigh phase at the slice's nu):
-//   before                           Earth 0.34/0.37/0.54 %  haze 20.5/18.0/14.4 %
-//   w = m_column, constant in r      Earth 1.96/1.55/1.26 %  haze 14.3/14.6/15.4 %
-//   w = m_column^2, constant in r    Earth 0.30/0.19/0.42 %  haze 11.4/10.2/8.4 %
-//   w = m_local m_column             Earth 0.83/0.41/0.43 %  haze 6.2/5.8/6.5 %
-//   w = m_local m_column^2           Earth 0.27/0.25/0.43 %  haze 3.4/3.0/3.6 %
-// A constant weight puts a peaked divisor above the haze layer, where the
-// last scattering is Rayleigh's (the sky 30 deg from the sun at 10 km came
-// out 30 % too bright); too much weight where the field is broad (Earth's
-// zenith at 680 nm) costs 2 %. Dividing the broad part by the Rayleigh phase
-// at the texel's nu instead of a constant put Earth's day sky 3 to 7 % off
-// toward and away from the sun. The peak must be divided at the texel's own
+// Of the weights tried, m_local m_column^2 interpolates best for both clear
+// Earth and a thick haze (docs/MEASUREMENTS.md, "Multiple-scattering
+// shape"): a constant weight puts a peaked divisor above the haze layer,
+// where the last scattering is Rayleigh's, and too much weight where the
+// field is broad costs accuracy there. The peak must be divided at the texel's own
 // nu: wherever nu is clamped (every zenith view, every view in the sun's
 // vertical plane) the texel holds the peak's value at that nu. Values at
 // texels are exact whatever f is; f only decides how well values between them

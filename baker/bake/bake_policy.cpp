@@ -62,11 +62,8 @@ namespace {
 // A narrowed sun axis has to be this many texels' worth finer than the whole
 // axis to be used. Its texels fall between the iteration's, so the stored
 // scattering density, interpolated from the iteration's table there, is
-// interpolated twice in the sun angle at each lookup: the flight scene's sun
-// range, 0 to 100 deg, narrows the axis by 0.3 % (a tenth of a texel) and
-// took the twilight rays toward the ground from 1.22 to 1.47 % RMS at 550 nm
-// and those to a point from 0.69 to 1.03 % (built-in Earth, sky views only,
-// 12 x 64 x 32 x 8, 524288 reference paths; docs/LEAVE_OUT.md).
+// interpolated twice in the sun angle at each lookup, which costs more than
+// a fraction of a texel gains (docs/LEAVE_OUT.md, docs/MEASUREMENTS.md).
 constexpr double kSunAxisNarrowingMinTexels = 1.0;
 
 bool sunRangeNarrowsAxis(const BakeConfig& config) {

@@ -21,10 +21,8 @@ constexpr int kPhaseTransformAzimuths = 4 * kAzimuthModes;
 // the horizon (sky to lit ground) and peaks on both sides of it, where
 // paths through the air are longest; a grid that straddles the horizon
 // smears that peak, and in twilight, when the light reaching a point comes
-// mostly from the horizon toward the sun, that was the largest error of the
-// bake (twilight sky 7.7 % RMS at 440 nm with a 32-cell uniform grid, 5.2 %
-// with these nodes; day sky 0.61 to 0.54 %; 48 nodes change neither by more
-// than 0.2 points).
+// mostly from the horizon toward the sun, it is the largest error a uniform
+// grid leaves (docs/MEASUREMENTS.md, "Scattering density").
 std::vector<IncidentZenithNode> zenithNodes(const StageContext& ctx, const Texture2D& optical_depth, double r) {
   static const GaussLegendreRule rule = gaussLegendreRule(kDensityZenithNodes / 2);
   const AtmosphereParameters& a = ctx.atmosphere;

@@ -24,11 +24,8 @@ namespace skybake {
 
 // Incident directions: 32 zenith angles (half on each side of the horizon,
 // Gauss-Legendre in theta) x 64 azimuths. Bruneton's reference implementation
-// uses 16 x 32; measured against the reference solver on the standard query
-// set (docs/ERROR_VS_TIME.md), that coarser grid misses the aureole and
-// horizon structure of the incident light and leaves the built-in Earth's day
-// sky 2 to 2.5 % RMS off, against 0.65 to 0.9 % with 32 x 64 (doubling every
-// table size instead changes nothing).
+// uses 16 x 32, which misses the aureole and horizon structure of the
+// incident light (docs/MEASUREMENTS.md, "Scattering density").
 inline constexpr int kDensityZenithNodes = 32;
 inline constexpr int kDensityAzimuths = 2 * kDensityZenithNodes;
 static_assert(kDensityZenithNodes % 2 == 0, "half the zenith nodes on each side of the horizon");

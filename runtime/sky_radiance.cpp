@@ -1,0 +1,105 @@
+// Sky radiance along a view ray, the light a viewer receives with the lit
+// ground, and the sun disk's radiance.
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "runtime/segment_radiance.h"
+#include "runtime/sky.h"
+#include "runtime/sky_lookup_start.h"
+
+namespace skybake {
+namespace {
+
+// A bake whose tables hold no rays toward the ground ([scene]
+// views_below_horizon = false) integrates such a ray at each lookup: single
+// scattering as twilight lookups do, multiple scattering from its tabulated
+// density, over this many sub-intervals of 4 Gauss nodes (more changed no
+// validated figure: docs/MEASUREMENTS.md).
+constexpr int kGroundRaySubintervals = 4;
+
+}  // namespace
+
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                          const glm::dvec3& sun_dir, double shadow_length_m) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const AtmosphereRay start = enterAtmosphere(domain, camera, view_dir);
+  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  const double r = start.r;
+  const double mu = start.mu;
+  const double mu_s = clampCosine(glm::dot(start.origin, sun_dir) / r);
+  const double nu = clampCosine(glm::dot(view_dir, sun_dir));
+  const bool ground = start.ends_on_ground;
+  const BakeTables& t = bake_.tables;
+
+  const Spectrum transmittance =
+      ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, start.length, true))
+             : glm::exp(-sampler_.opticalDepthToTop(t.optical_depth, r, mu));
+
+  // Light shafts: only the part of the ray beyond the shadow scatters, seen
+  // through the shadowed part. Without a shadow that part starts here; a
+  // shadow longer than the ray leaves nothing lit (looked up past the ray's
+  // end, the tables gave light from nowhere: 36 times the unshadowed sky).
+  const double shadow = std::clamp(shadow_length_m - start.moved, 0.0, start.length);
+  double r_p = r, mu_p = mu, mu_s_p = mu_s;
+  Spectrum shadow_transmittance(1.0f);
+  if (shadow > 0.0) {
+    r_p = std::clamp(radiusAlongRay(r, mu, shadow), domain.bottom_radius_m, domain.top_radius_m);
+    mu_p = cosineAlongRay(r, mu, shadow, r_p);
+    mu_s_p = clampCosine((r * mu_s + shadow * nu) / r_p);
+    shadow_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, shadow, ground));
+  }
+  if (ground && !domain.scattering_ground_views) {
+    // The tables hold no rays toward the ground: integrate this one.
+    return {groundRayRadiance({r, mu, mu_s, nu, ground}, shadow, start.length, {r_p, mu_p, mu_s_p, nu, ground},
+                              shadow_transmittance),
+            transmittance};
+  }
+  const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, shadow, start.length, [&] {
+    return SingleScattering{
+        sampler_.scattering(t.single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance,
+        hasSingleMie() ? sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance
+                       : Spectrum(0.0f)};
+  });
+  const Spectrum multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
+                            multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
+  const Spectrum radiance = single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
+                            single.mie * static_cast<float>(mie_phase_(nu)) +
+                            multiple;
+  return {radiance, transmittance};
+}
+
+Spectrum Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
+                                const Spectrum& to_start) const {
+  const BakeTables& t = bake_.tables;
+  const SingleScattering single = integrateSingleScattering(sampler_, t.optical_depth, atmosphere(),
+                                                            withBakedSun(ray), t_start, t_end, kGroundRaySubintervals);
+  const SunlitRay baked_from_start = withBakedSun(from_start);
+  const RadianceAndTransmittance multiple = directSegmentRadiance(
+      sampler_, t, atmosphere(), multiple_shape_, baked_from_start.r, baked_from_start.mu, baked_from_start.mu_s,
+      ray.nu, std::max(t_end - t_start, 0.0), kGroundRaySubintervals, false);
+  return single.rayleigh * static_cast<float>(rayleighPhase(ray.nu)) +
+         single.mie * static_cast<float>(mie_phase_(ray.nu)) +
+         multiple.radiance * to_start;
+}
+
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                               const glm::dvec3& sun_dir) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir);
+  const AtmosphereRay start = enterAtmosphere(domain, camera, view_dir);
+  if (!start.inside || !start.ends_on_ground) return v;
+  const glm::dvec3 ground = start.origin + view_dir * start.length;
+  const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun_dir);
+  v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
+  return v;
+}
+
+Spectrum Sky::solarRadiance() const {
+  const double alpha = atmosphere().sun_angular_radius_rad;
+  if (alpha <= 0.0) return Spectrum(0.0f);
+  const double solid_angle_sr = 2.0 * kPi * (1.0 - std::cos(alpha));
+  return atmosphere().sun_irradiance / static_cast<float>(solid_angle_sr);
+}
+
+}  // namespace skybake
