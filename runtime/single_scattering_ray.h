@@ -1,7 +1,8 @@
 // Single scattering of sunlight along one view ray, integrated from the
-// transmittance table: the bake fills its single-scattering tables with it,
-// and lookups with the sun below the horizon use it instead of those tables
-// (see Sky). Each piece of the ray between the edges of the planet's shadow
+// optical-depth table. The bake's table stage computes the same integral
+// batched over the suns of a view ray (baker/stages/single_scattering_tables.cpp;
+// a test ties the two texel by texel), and lookups with the sun below the
+// horizon use it instead of those tables (see Sky). Each piece of the ray between the edges of the planet's shadow
 // gets its own Gauss-Legendre rule, so no rule spans the jump where the sun
 // appears or disappears.
 #pragma once

@@ -55,5 +55,98 @@ TEST(SingleScattering, RayleighMatchesFlatAtmosphereClosedForm) {
 // not small against the scale height overestimates it.
 TEST(SingleScattering, MieMatchesFlatAtmosphereClosedForm) { checkAgainstClosedForm(true, 1200.0); }
 
+// The same closed form against the tables the bake stores: every ground
+// texel (r = bottom exactly at texel 0) of a sky ray whose view and sun are
+// both at least 0.2 above the horizon, where the emulated flat atmosphere's
+// curvature stays below the tolerance (see kTolerance).
+void checkTablesAgainstClosedForm(bool mie, double scale_height_m) {
+  BakeConfig config = test::flatSingleConstituent(mie, scale_height_m);
+  // Texels concentrate near the horizon, where this check does not hold:
+  // enough of them to leave a few dozen above 0.2 (28 for the thin Mie layer).
+  config.sizes.scattering_r = 2;
+  config.sizes.scattering_mu = 512;
+  config.sizes.scattering_mu_s = 32;
+  config.sizes.scattering_nu = 2;
+  const AtmosphereParameters& a = config.atmosphere;
+  SilentProgress silent;
+  const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
+  const StageContext ctx{a, sampler, silent};
+  const Texture2D optical_depth = computeOpticalDepthTable(ctx);
+  Texture4D rayleigh, mie_table;
+  computeSingleScatteringTables(ctx, optical_depth, rayleigh, mie_table);
+  const double b = (mie ? a.mie_extinction[0] : a.rayleigh_scattering[0]) * scale_height_m;
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  int checked = 0;
+  for (int i_mu = s.mu / 2; i_mu < s.mu; ++i_mu) {
+    for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) {
+      const ScatteringTexelConfig c = scatteringTexelConfig(sampler.domain(), s, 0, i_mu, i_mu_s, 0);
+      if (c.mu < 0.2 || c.mu_s < 0.2) continue;
+      const double stored = (mie ? mie_table : rayleigh).at(0, i_mu, i_mu_s, 0)[0];
+      EXPECT_NEAR(stored / (a.sun_irradiance[0] * flatSingleScattering(b, c.mu_s, c.mu)), 1.0, kTolerance)
+          << (mie ? "Mie" : "Rayleigh") << " mu_s=" << c.mu_s << " mu=" << c.mu;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 20);
+}
+
+TEST(SingleScattering, RayleighTablesMatchFlatAtmosphereClosedForm) { checkTablesAgainstClosedForm(false, 8000.0); }
+TEST(SingleScattering, MieTablesMatchFlatAtmosphereClosedForm) { checkTablesAgainstClosedForm(true, 1200.0); }
+
+// The bake fills its tables with a batched form of the runtime's ray
+// integral (integrateSingleScattering, through computeSingleScattering): the
+// nodes of a view ray are shared by every sun the planet's shadow leaves
+// alone, the exponentials are vectorized and summed in float. Texel by
+// texel the two agree to float rounding: each texel sums at most a few
+// hundred terms of relative rounding ~1e-7, so 1e-5 of the texel's value
+// (plus 1e-6 of the table's largest, for texels near 0 in the shadow) is
+// far above rounding and far below any difference of rule or geometry (a
+// rule with one sub-interval fewer moves texels by ~1e-4).
+void expectTablesMatchTheRayIntegral(const AtmosphereDomain& domain, const TextureSizes& sizes) {
+  const BakeConfig config = test::smallEarth(1);
+  const AtmosphereParameters& a = config.atmosphere;
+  SilentProgress silent;
+  const TableSampler sampler(domain, sizes);
+  const StageContext ctx{a, sampler, silent};
+  const Texture2D optical_depth = computeOpticalDepthTable(ctx);
+  Texture4D rayleigh, mie;
+  computeSingleScatteringTables(ctx, optical_depth, rayleigh, mie);
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  Spectrum largest(0.0f);
+  for (const Spectrum& v : rayleigh.texels) largest = glm::max(largest, v);
+  for (int i_r = 0; i_r < s.r; ++i_r)
+    for (int i_mu = 0; i_mu < s.mu; ++i_mu)
+      for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
+        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
+          const ScatteringTexelConfig c = scatteringTexelConfig(domain, s, i_r, i_mu, i_mu_s, i_nu);
+          const SingleScattering ray =
+              computeSingleScattering(ctx, optical_depth, c.r, c.mu, c.mu_s, c.nu, c.ray_intersects_ground);
+          for (int ch = 0; ch < a.channelCount(); ++ch) {
+            const float tolerance_rayleigh = 1e-5f * ray.rayleigh[ch] + 1e-6f * largest[ch];
+            ASSERT_NEAR(rayleigh.at(i_r, i_mu, i_mu_s, i_nu)[ch], ray.rayleigh[ch], tolerance_rayleigh)
+                << "texel " << i_r << " " << i_mu << " " << i_mu_s << " " << i_nu;
+            ASSERT_NEAR(mie.at(i_r, i_mu, i_mu_s, i_nu)[ch], ray.mie[ch], 1e-5f * ray.mie[ch] + 1e-6f * largest[ch])
+                << "texel " << i_r << " " << i_mu << " " << i_mu_s << " " << i_nu;
+          }
+        }
+}
+
+TEST(SingleScattering, TablesEqualTheRayIntegralAtEveryTexel) {
+  const BakeConfig config = test::smallEarth(1);
+  expectTablesMatchTheRayIntegral(AtmosphereDomain::fromParameters(config.atmosphere), config.sizes);
+}
+
+// A narrowed domain of twilight suns and sky views only: most rays cross the
+// planet's shadow, where the bake integrates each sun's ray piece by piece.
+TEST(SingleScattering, TablesEqualTheRayIntegralInTwilightAndOnNarrowedAxes) {
+  const BakeConfig config = test::smallEarth(1);
+  AtmosphereDomain d = AtmosphereDomain::fromParameters(config.atmosphere);
+  d.scattering_rho_max_m = d.distanceToHorizon(d.bottom_radius_m + 15000.0);
+  d.scattering_mu_s_coord_min = 0.0;
+  d.scattering_mu_s_coord_max = muSUnitCoord(d, std::cos(radiansFromDegrees(80.0)));
+  d.scattering_ground_views = false;
+  expectTablesMatchTheRayIntegral(d, config.sizes);
+}
+
 }  // namespace
 }  // namespace skybake
