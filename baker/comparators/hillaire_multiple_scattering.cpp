@@ -24,6 +24,25 @@ TextureSizes hillaireSizes() {
   return s;
 }
 
+// The midpoint ray march of Hillaire's method: `steps` equal steps over
+// [0, length] from `origin` along `dir`, calling fn(point, altitude,
+// transmittance from the origin to the step's midpoint, step length) at each
+// midpoint. Returns the optical depth of the whole segment.
+template <typename Fn>
+SpectrumD marchMidpoints(const AtmosphereMedia& media, const glm::dvec3& origin, const glm::dvec3& dir, double length,
+                         int steps, Fn&& fn) {
+  const double dt = length / steps;
+  SpectrumD depth(0.0);
+  for (int k = 0; k < steps; ++k) {
+    const glm::dvec3 p = origin + dir * ((k + 0.5) * dt);
+    const double h = glm::length(p) - media.parameters().bottom_radius_m;
+    const SpectrumD extinction = media.extinction(h);
+    fn(p, h, SpectrumD(glm::exp(-(depth + extinction * (0.5 * dt)))), dt);
+    depth += extinction * dt;
+  }
+  return depth;
+}
+
 }  // namespace
 
 HillaireMultipleScattering::HillaireMultipleScattering(const AtmosphereParameters& a)
@@ -52,28 +71,15 @@ HillaireMultipleScattering::HillaireMultipleScattering(const AtmosphereParameter
           const double r = glm::length(x);
           const bool ground = rayIntersectsSphere(r, cos_t, a_.bottom_radius_m);
           const double length = distanceToAtmosphereEnd(r, cos_t, a_.bottom_radius_m, a_.top_radius_m, ground);
-          const double dt = length / kTableRaySteps;
-          SpectrumD depth(0.0);
-          for (int k = 0; k < kTableRaySteps; ++k) {
-            const glm::dvec3 p = x + dir * ((k + 0.5) * dt);
-            const double hp = glm::length(p) - a_.bottom_radius_m;
-            const SpectrumD extinction = media.extinction(hp);
-            const SpectrumD t = glm::exp(-(depth + extinction * (0.5 * dt)));
-            depth += extinction * dt;
-            const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * media.rayleighDensity(hp) +
-                                         SpectrumD(a_.mie_scattering) * media.mieDensity(hp);
-            // Light scattered once (isotropic phase 1 / 4 pi) toward x.
-            second_order += t * scattering * SpectrumD(transmittanceToSun(p, sun)) * (dt / (4.0 * kPi));
-            transfer += t * scattering * dt;
-          }
-          if (ground) {
-            const glm::dvec3 g = x + dir * length;
-            const double g_mu_s = glm::dot(glm::normalize(g), sun);
-            if (g_mu_s > 0.0) {
-              second_order += glm::exp(-depth) * SpectrumD(a_.ground_albedo) * (g_mu_s / kPi) *
-                              SpectrumD(transmittanceToSun(g, sun));
-            }
-          }
+          const SpectrumD depth = marchMidpoints(
+              media, x, dir, length, kTableRaySteps, [&](const glm::dvec3& p, double hp, const SpectrumD& t, double dt) {
+                const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * media.rayleighDensity(hp) +
+                                             SpectrumD(a_.mie_scattering) * media.mieDensity(hp);
+                // Light scattered once (isotropic phase 1 / 4 pi) toward x.
+                second_order += t * scattering * SpectrumD(transmittanceToSun(p, sun)) * (dt / (4.0 * kPi));
+                transfer += t * scattering * dt;
+              });
+          if (ground) second_order += glm::exp(-depth) * litGround(x + dir * length, sun);
         }
       }
       // The mean over directions: second_order is the mean radiance of light
@@ -99,6 +105,12 @@ Spectrum HillaireMultipleScattering::transmittanceToSun(const glm::dvec3& p, con
   return glm::exp(-sampler_.opticalDepthToTop(optical_depth_, std::min(r, a_.top_radius_m), mu_s));
 }
 
+SpectrumD HillaireMultipleScattering::litGround(const glm::dvec3& ground_point, const glm::dvec3& sun) const {
+  const double g_mu_s = glm::dot(glm::normalize(ground_point), sun);
+  if (g_mu_s <= 0.0) return SpectrumD(0.0);
+  return SpectrumD(a_.ground_albedo) * (g_mu_s / kPi) * SpectrumD(transmittanceToSun(ground_point, sun));
+}
+
 Spectrum HillaireMultipleScattering::multipleScattering(double altitude, double mu_s) const {
   const double thickness = a_.top_radius_m - a_.bottom_radius_m;
   return sampleBilinear(multiple_, {0.5 * (mu_s + 1.0), std::clamp(altitude / thickness, 0.0, 1.0)});
@@ -114,31 +126,19 @@ RadianceAndTransmittance HillaireMultipleScattering::received(const glm::dvec3& 
   const double length = ray.length;
   const double nu = glm::dot(view, sun);
   const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a_.mie_phase_g, nu);
-  const double dt = length / kViewSteps;
-  SpectrumD depth(0.0), radiance(0.0);
-  for (int k = 0; k < kViewSteps; ++k) {
-    const glm::dvec3 p = origin + view * ((k + 0.5) * dt);
-    const double h = glm::length(p) - a_.bottom_radius_m;
-    const SpectrumD extinction = media.extinction(h);
-    const SpectrumD t = glm::exp(-(depth + extinction * (0.5 * dt)));
-    depth += extinction * dt;
+  SpectrumD radiance(0.0);
+  const SpectrumD depth = marchMidpoints(media, origin, view, length, kViewSteps, [&](const glm::dvec3& p, double h,
+                                                                                     const SpectrumD& t, double dt) {
     const double rayleigh = media.rayleighDensity(h), mie = media.mieDensity(h);
     const SpectrumD single = (SpectrumD(a_.rayleigh_scattering) * (rayleigh * p_r) + SpectrumD(a_.mie_scattering) * (mie * p_m)) *
                              SpectrumD(transmittanceToSun(p, sun));
     const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * rayleigh + SpectrumD(a_.mie_scattering) * mie;
     const SpectrumD multiple = scattering * SpectrumD(multipleScattering(h, glm::dot(glm::normalize(p), sun)));
     radiance += t * (single + multiple) * dt;
-  }
+  });
   radiance *= SpectrumD(a_.sun_irradiance);
   const SpectrumD transmittance = glm::exp(-depth);
-  if (ground) {
-    const glm::dvec3 g = origin + view * length;
-    const double g_mu_s = glm::dot(glm::normalize(g), sun);
-    if (g_mu_s > 0.0) {
-      radiance += transmittance * SpectrumD(a_.ground_albedo) * (g_mu_s / kPi) * SpectrumD(a_.sun_irradiance) *
-                  SpectrumD(transmittanceToSun(g, sun));
-    }
-  }
+  if (ground) radiance += transmittance * litGround(origin + view * length, sun) * SpectrumD(a_.sun_irradiance);
   return {Spectrum(radiance), Spectrum(transmittance)};
 }
 

@@ -22,6 +22,8 @@ class HillaireMultipleScattering final : public SkyMethod {
 
  private:
   Spectrum transmittanceToSun(const glm::dvec3& p, const glm::dvec3& sun) const;
+  // Radiance of the Lambertian ground at `ground_point` per unit sun irradiance.
+  SpectrumD litGround(const glm::dvec3& ground_point, const glm::dvec3& sun) const;
   Spectrum multipleScattering(double altitude, double mu_s) const;
 
   AtmosphereParameters a_;

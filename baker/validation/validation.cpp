@@ -64,23 +64,23 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
   ReferenceValues out;
   out.radiance.resize(queries.radiance.size());
   out.irradiance.resize(queries.irradiance.size());
-  std::vector<size_t> missing_radiance, missing_irradiance;
-  for (size_t i = 0; i < queries.radiance.size(); ++i) {
-    if (auto hit = cache.find(radianceKey(queries.radiance[i]))) {
-      out.radiance[i] = *hit;
-      ++out.cached;
-    } else {
-      missing_radiance.push_back(i);
+  // Fills the cached values of one kind of query; returns the indices of the others.
+  auto fromCache = [&](const auto& kind_queries, auto& values, auto keyOf) {
+    std::vector<size_t> missing;
+    for (size_t i = 0; i < kind_queries.size(); ++i) {
+      if (auto hit = cache.find(keyOf(kind_queries[i]))) {
+        values[i] = *hit;
+        ++out.cached;
+      } else {
+        missing.push_back(i);
+      }
     }
-  }
-  for (size_t i = 0; i < queries.irradiance.size(); ++i) {
-    if (auto hit = cache.find(irradianceKey(queries.irradiance[i]))) {
-      out.irradiance[i] = *hit;
-      ++out.cached;
-    } else {
-      missing_irradiance.push_back(i);
-    }
-  }
+    return missing;
+  };
+  const std::vector<size_t> missing_radiance =
+      fromCache(queries.radiance, out.radiance, [](const RadianceQuery& q) { return radianceKey(q); });
+  const std::vector<size_t> missing_irradiance =
+      fromCache(queries.irradiance, out.irradiance, [](const IrradianceQuery& q) { return irradianceKey(q); });
   const auto start = std::chrono::steady_clock::now();
   progress.beginStage("reference", missing_radiance.size() + missing_irradiance.size());
   // Each query has its own seed (a hash of the query), so results do not
