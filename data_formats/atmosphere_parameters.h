@@ -36,7 +36,7 @@ struct AtmosphereParameters {
   double top_radius_m = 0.0;     // top of the atmosphere
   Spectrum ground_albedo{0.0f};  // Lambertian, dimensionless
 
-  Spectrum sun_irradiance{0.0f};   // W m^-2 nm^-1 at the top of the atmosphere
+  Spectrum sun_irradiance{0.0f};  // W m^-2 nm^-1 at the top of the atmosphere
   double sun_angular_radius_rad = 0.0;
   // The lowest sun the scattering tables cover. Kept in degrees, as the config
   // key is, so that configs round-trip exactly; use sunMuSMin() in physics.

@@ -64,8 +64,7 @@ void requireWritableOutput(const std::filesystem::path& path, std::initializer_l
 void writeFileAtomically(const std::filesystem::path& path,
                          const std::function<void(const std::filesystem::path& temp)>& write) {
   const std::filesystem::path temp =
-      path.parent_path() /
-      fmt::format(".{}.tmp-{}{}", path.stem().string(), ::getpid(), path.extension().string());
+      path.parent_path() / fmt::format(".{}.tmp-{}{}", path.stem().string(), ::getpid(), path.extension().string());
   auto discard = [&] {
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);
@@ -83,8 +82,7 @@ void writeFileAtomically(const std::filesystem::path& path,
   std::filesystem::rename(temp, path, error);
   if (error) {
     discard();
-    throwBadInput(fmt::format("{}: cannot move the finished file into place: {}", path.string(),
-                              error.message()));
+    throwBadInput(fmt::format("{}: cannot move the finished file into place: {}", path.string(), error.message()));
   }
 }
 
@@ -97,8 +95,7 @@ void writeFileContentsAtomically(const std::filesystem::path& path, std::string_
     // close reports errors some file systems (NFS) only find at the end.
     const bool closed = ::close(fd) == 0;
     if (!written || !closed) {
-      throwBadInput(
-          fmt::format("{}: cannot write: {}", path.string(), std::strerror(written ? errno : write_errno)));
+      throwBadInput(fmt::format("{}: cannot write: {}", path.string(), std::strerror(written ? errno : write_errno)));
     }
   });
 }

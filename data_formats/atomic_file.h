@@ -18,8 +18,7 @@ namespace skybake {
 // this process may not create files in, or the same file as one of the
 // command's `inputs` (which the output would replace). Throws Error(BadInput)
 // "<path>: <reason>".
-void requireWritableOutput(const std::filesystem::path& path,
-                           std::initializer_list<std::filesystem::path> inputs = {});
+void requireWritableOutput(const std::filesystem::path& path, std::initializer_list<std::filesystem::path> inputs = {});
 
 // Calls write(temp) with a temporary path beside `path` (same directory, so
 // the final rename is atomic; same extension, so format-by-extension writers

@@ -55,9 +55,9 @@ struct BakeTables {
 // config the bake was made from travels beside it as provenance only.
 struct BakeContents {
   AtmosphereParameters atmosphere;
-  TextureSizes sizes;      // the stored tables' sizes; `iteration` unset
-  AtmosphereDomain domain; // what the 4D tables cover
-  SceneOutputs outputs;    // which optional parts the bake holds
+  TextureSizes sizes;       // the stored tables' sizes; `iteration` unset
+  AtmosphereDomain domain;  // what the 4D tables cover
+  SceneOutputs outputs;     // which optional parts the bake holds
   StoragePrecision precision = StoragePrecision::Float;
   bool combined_single_mie = false;  // bake.combined_single_mie as the bake applied it
   bool operator==(const BakeContents&) const = default;
@@ -118,16 +118,16 @@ bool leavesOut(const BakeContents& contents, const char* part);
 void clearLeftOutTables(const BakeContents& contents, BakeTables& tables);
 
 struct BakeFile {
-  BakeContents contents;     // what the tables hold and cover; sizes equal the tables' sizes
+  BakeContents contents;  // what the tables hold and cover; sizes equal the tables' sizes
   // Provenance: the settled config the bake was made from, canonical TOML
   // (configToToml). Readers do not parse it; tools that report how a bake
   // was made (skybake info) may.
   std::string config_toml;
-  int orders_computed = 0;   // scattering orders in the tables
+  int orders_computed = 0;  // scattering orders in the tables
   // The version the file was read from (readBakeFile); files are always
   // written at kBakeFormatVersion.
   int format_version = kBakeFormatVersion;
-  std::string report_json;   // the bake report, JSON text (opaque here)
+  std::string report_json;  // the bake report, JSON text (opaque here)
   BakeTables tables;
 };
 

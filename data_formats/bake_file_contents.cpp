@@ -117,7 +117,8 @@ class AttributeReader {
       failWith(fmt::format("attribute {} has {} numbers, not {} per layer", name, n.size(), kNumbersPerLayer));
     }
     DensityProfile layers;
-    for (size_t i = 0; i < n.size(); i += kNumbersPerLayer) layers.push_back({n[i], n[i + 1], n[i + 2], n[i + 3], n[i + 4]});
+    for (size_t i = 0; i < n.size(); i += kNumbersPerLayer)
+      layers.push_back({n[i], n[i + 1], n[i + 2], n[i + 3], n[i + 4]});
     return layers;
   }
   Imath::V2i size(const char* name) const { return value<Imf::V2iAttribute>(name); }
@@ -181,7 +182,8 @@ BakeContents readContentsAttributes(const Imf::Header& header, const std::functi
   a.wavelengths_nm = in.numbers(kAttrWavelengths);
   const int n = a.channelCount();
   if (n < 1 || n > kMaxChannels) {
-    in.failWith(fmt::format("attribute {} lists {} wavelengths; a bake has 1 to {}", kAttrWavelengths, n, kMaxChannels));
+    in.failWith(
+        fmt::format("attribute {} lists {} wavelengths; a bake has 1 to {}", kAttrWavelengths, n, kMaxChannels));
   }
   a.bottom_radius_m = in.real(kAttrBottomRadius);
   a.top_radius_m = in.real(kAttrTopRadius);
@@ -203,7 +205,8 @@ BakeContents readContentsAttributes(const Imf::Header& header, const std::functi
   const Imath::V2i irradiance = in.size(kAttrIrradianceSize);
   const Imath::V2i r_mu = in.size(kAttrScatteringSizeRMu);
   const Imath::V2i mu_s_nu = in.size(kAttrScatteringSizeMuSNu);
-  s = {optical_depth.x, optical_depth.y, irradiance.x, irradiance.y, r_mu.x, r_mu.y, mu_s_nu.x, mu_s_nu.y, std::nullopt};
+  s = {optical_depth.x, optical_depth.y, irradiance.x, irradiance.y, r_mu.x,
+       r_mu.y,          mu_s_nu.x,       mu_s_nu.y,    std::nullopt};
 
   c.outputs.radiance_to_points = false;
   c.outputs.ground_irradiance = false;

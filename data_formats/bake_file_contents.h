@@ -18,8 +18,7 @@ void insertContentsAttributes(const BakeContents& contents, Imf::Header& header)
 // Reads them back (format version 3). `fail` is called with a description of
 // the first missing, mistyped or malformed attribute and must not return.
 // The result is not yet checked for physical sense (validateContents).
-BakeContents readContentsAttributes(const Imf::Header& header,
-                                    const std::function<void(const std::string&)>& fail);
+BakeContents readContentsAttributes(const Imf::Header& header, const std::function<void(const std::string&)>& fail);
 
 // Refuses contents that no bake writes: the atmosphere and sizes as the
 // config check judges them, and a domain outside the atmosphere or with its

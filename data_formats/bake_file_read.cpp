@@ -26,11 +26,11 @@
 
 #include "bake_file.h"
 #include "bake_file_attributes.h"
+#include "bake_file_contents.h"
 #include "config.h"
 #include "error.h"
 #include "exr_header_check.h"
 #include "exr_memory_stream.h"
-#include "bake_file_contents.h"
 #include "texture_mapping.h"
 
 namespace skybake {
@@ -61,12 +61,9 @@ struct PartLayout {
 
 class Reader {
  public:
-  Reader(Imf::IStream& stream, const std::string& source)
-      : source_(source), file_(stream) {}
+  Reader(Imf::IStream& stream, const std::string& source) : source_(source), file_(stream) {}
 
-  [[noreturn]] void fail(const std::string& what) const {
-    throwBadInput(fmt::format("{}: {}", source_, what));
-  }
+  [[noreturn]] void fail(const std::string& what) const { throwBadInput(fmt::format("{}: {}", source_, what)); }
 
   int findPartOrMinusOne(const char* name) const {
     for (int i = 0; i < file_.parts(); ++i) {
@@ -84,9 +81,8 @@ class Reader {
   // channel type (the density part is always float, FORMAT.md).
   StoragePrecision storedPrecision() const {
     const Imf::ChannelList& channels = file_.header(findPart(kPartSingleRayleigh)).channels();
-    return channels.begin() != channels.end() && channels.begin().channel().type == Imf::HALF
-               ? StoragePrecision::Half
-               : StoragePrecision::Float;
+    return channels.begin() != channels.end() && channels.begin().channel().type == Imf::HALF ? StoragePrecision::Half
+                                                                                              : StoragePrecision::Float;
   }
 
   template <typename Attribute>
@@ -106,8 +102,8 @@ class Reader {
     const long long w = 1LL * window.max.x - window.min.x + 1;
     const long long ht = 1LL * window.max.y - window.min.y + 1;
     if (window.min.x != 0 || window.min.y != 0 || w != width || ht != height) {
-      fail(fmt::format("part '{}' is {}x{} texels at ({}, {}); the config says {}x{} at (0, 0)",
-                       name, w, ht, window.min.x, window.min.y, width, height));
+      fail(fmt::format("part '{}' is {}x{} texels at ({}, {}); the config says {}x{} at (0, 0)", name, w, ht,
+                       window.min.x, window.min.y, width, height));
     }
     uint64_t bytes_per_texel = 0;
     std::vector<std::string> channels;
@@ -117,8 +113,8 @@ class Reader {
       const Imf::Channel* found = h.channels().findChannel(channel);
       if (found == nullptr) fail(fmt::format("part '{}' has no channel {}", name, channel));
       if (found->xSampling != 1 || found->ySampling != 1) {
-        fail(fmt::format("part '{}' channel {} is subsampled ({}x{}); tables have one value per texel",
-                         name, channel, found->xSampling, found->ySampling));
+        fail(fmt::format("part '{}' channel {} is subsampled ({}x{}); tables have one value per texel", name, channel,
+                         found->xSampling, found->ySampling));
       }
       bytes_per_texel += pixelBytes(found->type);
     }
@@ -137,8 +133,7 @@ class Reader {
     char* base = reinterpret_cast<char*>(texels.data());
     for (int c = 0; c < a.channelCount(); ++c) {
       frame.insert(channelName(a.wavelengths_nm[c]),
-                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum),
-                              sizeof(Spectrum) * part.width));
+                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum), sizeof(Spectrum) * part.width));
     }
     if (!part.extra_channel.empty()) {
       extra_texels->assign(texels.size(), Spectrum(0.0f));
@@ -277,8 +272,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
   std::vector<Table> tables = {
       {optical_depth_part, t.optical_depth.width, t.optical_depth.height, &t.optical_depth.texels},
       {kPartIrradiance, t.irradiance.width, t.irradiance.height, &t.irradiance.texels},
-      {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(),
-       &t.single_rayleigh.texels},
+      {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(), &t.single_rayleigh.texels},
       {kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), &t.single_mie.texels},
       {kPartMultipleScattering, t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(),
        &t.multiple_scattering.texels},
@@ -298,9 +292,10 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
     stored_bytes += layouts.back().stored_bytes;
   }
   if (stored_bytes / kMaxExrExpansion > file_bytes) {
-    in.fail(fmt::format("the config's table sizes need {} bytes of pixel data, more than a file of {} "
-                        "bytes can hold: the header is corrupt",
-                        stored_bytes, file_bytes));
+    in.fail(
+        fmt::format("the config's table sizes need {} bytes of pixel data, more than a file of {} "
+                    "bytes can hold: the header is corrupt",
+                    stored_bytes, file_bytes));
   }
   for (size_t i = 0; i < layouts.size(); ++i) in.readPart(layouts[i], a, *tables[i].texels, &t.single_mie.texels);
   if (combined_mie) approximateSingleMie(a, t.single_rayleigh, t.single_mie);

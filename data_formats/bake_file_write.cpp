@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -12,7 +13,6 @@
 #include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <Imath/half.h>
 #include <fmt/format.h>
 
 #include "atomic_file.h"
@@ -61,8 +61,7 @@ bool storedAsHalf(const BakeFile& bake, const PartToWrite& part) {
 
 // Parts of a multi-part file must share one display window; each part's data
 // window is its own table size.
-Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
-                       const Imath::Box2i& display_window) {
+Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imath::Box2i& display_window) {
   const AtmosphereParameters& a = bake.contents.atmosphere;
   Imf::Header header(display_window, Imath::Box2i({0, 0}, {part.width - 1, part.height - 1}));
   header.setName(part.name);
@@ -84,8 +83,7 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part,
   return header;
 }
 
-void writeParts(const std::string& file_name, const BakeFile& bake,
-                const std::vector<PartToWrite>& parts) {
+void writeParts(const std::string& file_name, const BakeFile& bake, const std::vector<PartToWrite>& parts) {
   Imath::Box2i display_window({0, 0}, {0, 0});
   for (const PartToWrite& part : parts) {
     display_window.extendBy(Imath::V2i(part.width - 1, part.height - 1));
@@ -123,8 +121,8 @@ void writeParts(const std::string& file_name, const BakeFile& bake,
                    Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
     }
     if (part.extra_texels != nullptr) {
-      frame.insert(part.extra_channel, Imf::Slice(type, baseOf(*part.extra_texels, extra_halves), texel_bytes,
-                                                  texel_bytes * part.width));
+      frame.insert(part.extra_channel,
+                   Imf::Slice(type, baseOf(*part.extra_texels, extra_halves), texel_bytes, texel_bytes * part.width));
     }
     out.setFrameBuffer(frame);
     out.writePixels(part.height);
@@ -148,15 +146,14 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
        "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_rayleigh.texels,
        t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(), table4DSizeText(t.single_rayleigh)},
       {kPartSingleMie, "single Mie scattering radiance divided by the Mie phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_mie.texels,
-       t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), table4DSizeText(t.single_mie)},
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_mie.texels, t.single_mie.atlasWidth(),
+       t.single_mie.atlasHeight(), table4DSizeText(t.single_mie)},
       {kPartMultipleScattering,
        "scattering orders 2 and up, radiance divided by the multiple-scattering shape at the texel's r and nu",
        "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_scattering.texels,
-       t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(),
-       table4DSizeText(t.multiple_scattering)},
-      {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded",
-       "W m^-2 nm^-1", &t.irradiance.texels, t.irradiance.width, t.irradiance.height,
+       t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(), table4DSizeText(t.multiple_scattering)},
+      {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded", "W m^-2 nm^-1",
+       &t.irradiance.texels, t.irradiance.width, t.irradiance.height,
        fmt::format("mu_s={} r={}", t.irradiance.width, t.irradiance.height)},
       {kPartMultipleDensity,
        "scattering density of orders 2 and up: light scattered per unit length toward the viewer, "

@@ -20,8 +20,8 @@ class ConfigReader {
  public:
   explicit ConfigReader(std::string source) : source_(std::move(source)) {}
 
-  [[noreturn]] void fail(const toml::node* node, const std::string& key,
-                         const std::string& value, const std::string& reason) const {
+  [[noreturn]] void fail(const toml::node* node, const std::string& key, const std::string& value,
+                         const std::string& reason) const {
     std::string where = source_;
     if (node != nullptr && node->source().begin.line > 0) {
       where += fmt::format(":{}", node->source().begin.line);
@@ -41,8 +41,8 @@ class ConfigReader {
     }
   }
 
-  const toml::table* table(const toml::table& parent, const std::string& prefix,
-                           std::string_view key, bool required) const {
+  const toml::table* table(const toml::table& parent, const std::string& prefix, std::string_view key,
+                           bool required) const {
     const toml::node* node = parent.get(key);
     const std::string name = prefix + std::string(key);
     if (node == nullptr) {
@@ -67,8 +67,7 @@ class ConfigReader {
   }
 
   // Returns false when absent and not required.
-  bool number(const toml::table& t, const std::string& prefix, std::string_view key,
-              bool required, double& out) const {
+  bool number(const toml::table& t, const std::string& prefix, std::string_view key, bool required, double& out) const {
     const toml::node* node = t.get(key);
     if (node == nullptr) {
       if (required) fail(nullptr, prefix + std::string(key), "", "missing required key");
@@ -97,8 +96,8 @@ class ConfigReader {
   }
 
   // A per-channel array: exactly one number per wavelength.
-  Spectrum spectrum(const toml::table& t, const std::string& prefix, std::string_view key,
-                    bool required, int channels, Spectrum fallback) const {
+  Spectrum spectrum(const toml::table& t, const std::string& prefix, std::string_view key, bool required, int channels,
+                    Spectrum fallback) const {
     const toml::node* node = t.get(key);
     const std::string name = prefix + std::string(key);
     if (node == nullptr) {
@@ -108,8 +107,7 @@ class ConfigReader {
     const std::vector<double> values = numbers(*node, name);
     if (static_cast<int>(values.size()) != channels) {
       fail(node, name, describe(*node),
-           fmt::format("needs {} values, one per wavelength in channels.wavelengths_nm",
-                       channels));
+           fmt::format("needs {} values, one per wavelength in channels.wavelengths_nm", channels));
     }
     Spectrum s(0.0f);
     for (int c = 0; c < channels; ++c) s[c] = static_cast<float>(values[c]);
@@ -157,13 +155,12 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   try {
     root = toml::parse(toml_text, source);
   } catch (const toml::parse_error& e) {
-    throwBadInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source,
-                              e.source().begin.line, e.source().begin.column,
+    throwBadInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.source().begin.column,
                               std::string(e.description())));
   }
   const ConfigReader in(source);
-  in.rejectUnknownKeys(root, "", {"name", "channels", "planet", "sun", "rayleigh", "mie",
-                                  "absorption", "resolution", "bake", "scene"});
+  in.rejectUnknownKeys(
+      root, "", {"name", "channels", "planet", "sun", "rayleigh", "mie", "absorption", "resolution", "bake", "scene"});
   BakeConfig config;
   AtmosphereParameters& a = config.atmosphere;
 
@@ -181,8 +178,7 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   const int n = static_cast<int>(a.wavelengths_nm.size());
   if (n < 1 || n > kMaxChannels) {
     in.fail(wl, "channels.wavelengths_nm", ConfigReader::describe(*wl),
-            fmt::format("needs 1 to {} wavelengths (bake more in separate files)",
-                        kMaxChannels));
+            fmt::format("needs 1 to {} wavelengths (bake more in separate files)", kMaxChannels));
   }
 
   const toml::table* planet = in.table(root, "", "planet", true);
@@ -212,8 +208,7 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
   if (const toml::table* t = in.table(root, "", "absorption", false)) {
     in.rejectUnknownKeys(*t, "absorption.", {"extinction", "density"});
-    a.absorption_extinction =
-        in.spectrum(*t, "absorption.", "extinction", true, n, Spectrum(0.0f));
+    a.absorption_extinction = in.spectrum(*t, "absorption.", "extinction", true, n, Spectrum(0.0f));
     a.absorption_density = in.density(*t, "absorption.");
   }
 
@@ -261,8 +256,8 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   }
 
   if (const toml::table* t = in.table(root, "", "bake", false)) {
-    in.rejectUnknownKeys(*t, "bake.", {"orders", "order_tolerance", "max_orders", "precision", "tail_estimate",
-                                          "combined_single_mie"});
+    in.rejectUnknownKeys(
+        *t, "bake.", {"orders", "order_tolerance", "max_orders", "precision", "tail_estimate", "combined_single_mie"});
     auto flag = [&](const char* key, bool& out) {
       if (const toml::node* node = t->get(key)) {
         auto b = node->as_boolean();

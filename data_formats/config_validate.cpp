@@ -33,8 +33,7 @@ class Checker {
  public:
   explicit Checker(const std::string& source) : source_(source) {}
 
-  [[noreturn]] void fail(const std::string& key, const std::string& value,
-                         const std::string& reason) const {
+  [[noreturn]] void fail(const std::string& key, const std::string& value, const std::string& reason) const {
     throwBadInput(fmt::format("{}: {} = {}: {}", source_, key, value, reason));
   }
 
@@ -45,8 +44,7 @@ class Checker {
   void nonNegative(const std::string& key, const Spectrum& s, int channels) const {
     for (int c = 0; c < channels; ++c) {
       finite(fmt::format("{}[{}]", key, c), s[c]);
-      if (s[c] < 0.0f) fail(fmt::format("{}[{}]", key, c), fmt::format("{}", s[c]),
-                            "must be >= 0");
+      if (s[c] < 0.0f) fail(fmt::format("{}[{}]", key, c), fmt::format("{}", s[c]), "must be >= 0");
     }
   }
 
@@ -105,8 +103,7 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
 
   check.nonNegative("sun.irradiance", a.sun_irradiance, n);
   check.range("sun.angular_radius_rad", a.sun_angular_radius_rad, 0.0, kMaxSunAngularRadius_rad);
-  check.range("sun.max_zenith_deg", a.sun_max_zenith_deg, kMinSunMaxZenith_deg,
-              kMaxSunMaxZenith_deg);
+  check.range("sun.max_zenith_deg", a.sun_max_zenith_deg, kMinSunMaxZenith_deg, kMaxSunMaxZenith_deg);
 
   check.nonNegative("rayleigh.scattering", a.rayleigh_scattering, n);
   check.profile("rayleigh", a.rayleigh_density);
@@ -185,8 +182,7 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
   }
 
   if (config.bake.orders < 1 || config.bake.orders > kMaxOrders) {
-    check.fail("bake.orders", fmt::format("{}", config.bake.orders),
-               fmt::format("must be in [1, {}]", kMaxOrders));
+    check.fail("bake.orders", fmt::format("{}", config.bake.orders), fmt::format("must be in [1, {}]", kMaxOrders));
   }
   if (!(config.bake.order_tolerance >= kMinOrderTolerance && config.bake.order_tolerance <= kMaxOrderTolerance)) {
     check.fail("bake.order_tolerance", fmt::format("{}", config.bake.order_tolerance),

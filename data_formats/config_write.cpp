@@ -30,10 +30,9 @@ std::string profileList(const DensityProfile& layers) {
   std::string out = "[";
   for (size_t i = 0; i < layers.size(); ++i) {
     const DensityLayer& l = layers[i];
-    out += fmt::format(
-        "{}{{ width_m = {}, exp_term = {}, exp_scale = {}, linear_term = {}, constant_term = {} }}",
-        i ? ", " : "", numberText(l.width_m), numberText(l.exp_term), numberText(l.exp_scale),
-        numberText(l.linear_term), numberText(l.constant_term));
+    out += fmt::format("{}{{ width_m = {}, exp_term = {}, exp_scale = {}, linear_term = {}, constant_term = {} }}",
+                       i ? ", " : "", numberText(l.width_m), numberText(l.exp_term), numberText(l.exp_scale),
+                       numberText(l.linear_term), numberText(l.constant_term));
   }
   return out + "]";
 }
@@ -85,15 +84,13 @@ std::string configToToml(const BakeConfig& config) {
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
       "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n{}\n"
       "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}{}",
-      name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
-      spectrumList(a.ground_albedo, n), spectrumList(a.sun_irradiance, n),
-      numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
-      spectrumList(a.rayleigh_scattering, n), profileList(a.rayleigh_density),
-      spectrumList(a.mie_scattering, n), spectrumList(a.mie_extinction, n),
-      numberText(a.mie_phase_g), profileList(a.mie_density),
-      spectrumList(a.absorption_extinction, n), profileList(a.absorption_density),
-      s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r,
-      s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
+      name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m), spectrumList(a.ground_albedo, n),
+      spectrumList(a.sun_irradiance, n), numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
+      spectrumList(a.rayleigh_scattering, n), profileList(a.rayleigh_density), spectrumList(a.mie_scattering, n),
+      spectrumList(a.mie_extinction, n), numberText(a.mie_phase_g), profileList(a.mie_density),
+      spectrumList(a.absorption_extinction, n), profileList(a.absorption_density), s.transmittance_mu,
+      s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r, s.scattering_mu, s.scattering_mu_s,
+      s.scattering_nu,
       s.iteration ? fmt::format("iteration = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n", (*s.iteration)[0],
                                 (*s.iteration)[1], (*s.iteration)[2], (*s.iteration)[3])
                   : std::string(),
@@ -108,7 +105,7 @@ std::string configToToml(const BakeConfig& config) {
       // Written only when the scene leaves an output out or narrows the
       // domain, for the same reason.
       config.scene.all() && !config.scene_ranges.narrows() ? std::string()
-                                                            : sceneTable(config.scene, config.scene_ranges));
+                                                           : sceneTable(config.scene, config.scene_ranges));
 }
 
 }  // namespace skybake

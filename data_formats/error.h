@@ -19,8 +19,7 @@ enum class ErrorKind {
 
 class Error : public std::runtime_error {
  public:
-  Error(ErrorKind kind, const std::string& message)
-      : std::runtime_error(message), kind_(kind) {}
+  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
   ErrorKind kind() const { return kind_; }
 
  private:
@@ -29,8 +28,6 @@ class Error : public std::runtime_error {
 
 // A message of the form "<where>: <what> = <value>: <reason>", the shape every
 // input error takes so users can find the offending line.
-[[noreturn]] inline void throwBadInput(const std::string& message) {
-  throw Error(ErrorKind::BadInput, message);
-}
+[[noreturn]] inline void throwBadInput(const std::string& message) { throw Error(ErrorKind::BadInput, message); }
 
 }  // namespace skybake

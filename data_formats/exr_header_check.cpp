@@ -29,8 +29,8 @@ void keepFirstError(exr_const_context_t context, exr_result_t, const char* messa
   if (s.message.empty() && message != nullptr) s.message = message;
 }
 
-int64_t readFromMemory(exr_const_context_t, void* user_data, void* buffer, uint64_t size,
-                       uint64_t offset, exr_stream_error_func_ptr_t) {
+int64_t readFromMemory(exr_const_context_t, void* user_data, void* buffer, uint64_t size, uint64_t offset,
+                       exr_stream_error_func_ptr_t) {
   const std::span<const std::byte> bytes = static_cast<CoreSession*>(user_data)->bytes;
   if (offset >= bytes.size()) return 0;  // end of file, as pread reports it
   const uint64_t n = std::min<uint64_t>(size, bytes.size() - offset);

@@ -22,8 +22,8 @@ BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& do
 std::vector<LeftOutPart> leftOutParts(const BakeContents& c) {
   const TextureSizes& s = c.sizes;
   const uint64_t value_bytes = (c.precision == StoragePrecision::Half ? 2 : 4) * c.atmosphere.channelCount();
-  const uint64_t table_4d = static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s *
-                            s.scattering_nu * value_bytes;
+  const uint64_t table_4d =
+      static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu * value_bytes;
   std::vector<LeftOutPart> out;
   if (!bakeStoresSingleMie(c.atmosphere)) {
     out.push_back({bake_file::kPartSingleMie, "no Mie scattering", table_4d});

@@ -28,8 +28,7 @@ double muSFromUnitCoord(const AtmosphereDomain& d, double x) {
   return dist == 0.0 ? 1.0 : clampCosine((H * H - dist * dist) / (2.0 * d.bottom_radius_m * dist));
 }
 
-RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r, int i_mu,
-                             int i_r) {
+RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r, int i_mu, int i_r) {
   const double x_mu = unitRangeFromTextureCoord(texelCentre(i_mu, size_mu), size_mu);
   const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
   const double H = d.horizonToTopDistance();
@@ -41,11 +40,9 @@ RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r,
   return {r, muFromDistanceToTop(r, dist, rho, H)};
 }
 
-RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
-                          int i_r) {
+RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s, int i_r) {
   const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
-  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m),
-          muSFromIrradianceTexel(d, size_mu_s, i_mu_s)};
+  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m), muSFromIrradianceTexel(d, size_mu_s, i_mu_s)};
 }
 
 double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r) {
@@ -55,16 +52,16 @@ double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s,
 
 double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_mu_s) {
   const double x = unitRangeFromTextureCoord(texelCentre(i_mu_s, s.mu_s), s.mu_s);
-  return muSFromUnitCoord(d, d.scattering_mu_s_coord_min +
-                                 x * (d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min));
+  return muSFromUnitCoord(
+      d, d.scattering_mu_s_coord_min + x * (d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min));
 }
 
 double muSFromIrradianceTexel(const AtmosphereDomain& d, int size, int i_mu_s) {
   return muSFromUnitCoord(d, unitRangeFromTextureCoord(texelCentre(i_mu_s, size), size));
 }
 
-ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s,
-                                            int i_r, int i_mu, int i_mu_s, int i_nu) {
+ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r, int i_mu,
+                                            int i_mu_s, int i_nu) {
   const double H = d.horizonToTopDistance();
   const double r = rFromScatteringTexel(d, s, i_r);
   const double rho = d.distanceToHorizon(r);

@@ -60,27 +60,19 @@ struct AtmosphereDomain {
     return std::sqrt(top_radius_m * top_radius_m - bottom_radius_m * bottom_radius_m);
   }
   // rho: the distance to the horizon from radius r.
-  double distanceToHorizon(double r) const {
-    return safeSqrt(r * r - bottom_radius_m * bottom_radius_m);
-  }
+  double distanceToHorizon(double r) const { return safeSqrt(r * r - bottom_radius_m * bottom_radius_m); }
   double radiusAtDistanceToHorizon(double rho) const {
     return std::sqrt(rho * rho + bottom_radius_m * bottom_radius_m);
   }
 };
 
 // [0, 1] -> texture coordinate whose texel centres hit 0 and 1 exactly.
-inline double textureCoordFromUnitRange(double x, int size) {
-  return 0.5 / size + x * (1.0 - 1.0 / size);
-}
-inline double unitRangeFromTextureCoord(double u, int size) {
-  return (u - 0.5 / size) / (1.0 - 1.0 / size);
-}
+inline double textureCoordFromUnitRange(double x, int size) { return 0.5 / size + x * (1.0 - 1.0 / size); }
+inline double unitRangeFromTextureCoord(double u, int size) { return (u - 0.5 / size) / (1.0 - 1.0 / size); }
 
 // Guards 0/0 where a range degenerates to a point (r = bottom in the ground
 // half, r = top in the sky half): the position in an empty range is 0.
-inline double fractionOfRange(double value, double lo, double hi) {
-  return hi > lo ? (value - lo) / (hi - lo) : 0.0;
-}
+inline double fractionOfRange(double value, double lo, double hi) { return hi > lo ? (value - lo) / (hi - lo) : 0.0; }
 
 // ---- transmittance (2D: u = mu across, v = r down) ----
 
@@ -110,8 +102,7 @@ struct TransmittanceMuCoordAtR {
 
 // The mu coordinate alone, for callers that hold rho = distanceToHorizon(r)
 // and H = horizonToTopDistance() for many directions from one r.
-inline double transmittanceCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho,
-                                   double H, double mu) {
+inline double transmittanceCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho, double H, double mu) {
   return TransmittanceMuCoordAtR::of(d, size_mu, r, rho, H)(mu);
 }
 
@@ -120,13 +111,12 @@ inline double transmittanceCoordR(const AtmosphereDomain& d, int size_r, double 
   return textureCoordFromUnitRange(rho / d.horizonToTopDistance(), size_r);
 }
 
-inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int size_mu, int size_r,
-                                                double r, double mu) {
+inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int size_mu, int size_r, double r,
+                                                double mu) {
   const double H = d.horizonToTopDistance();
   const double rho = d.distanceToHorizon(r);
   return {transmittanceCoordMu(d, size_mu, r, rho, H, mu), transmittanceCoordR(d, size_r, rho)};
 }
-
 
 // ---- scattering (4D) ----
 
@@ -174,7 +164,7 @@ struct MuSUnitCoordMap {
   static MuSUnitCoordMap of(const AtmosphereDomain& d) {
     const MuSDistanceRange range = MuSDistanceRange::of(d);
     const double A = range.fraction(d, d.mu_s_min);
-    return {d.bottom_radius_m, d.top_radius_m, range.d_min, 1.0 / (range.d_max - range.d_min),
+    return {d.bottom_radius_m,       d.top_radius_m,     range.d_min, 1.0 / (range.d_max - range.d_min),
             A > 0.0 ? 1.0 / A : 0.0, A > 0.0 ? 1.0 : 0.0};
   }
   double operator()(double mu_s) const {
@@ -213,8 +203,8 @@ inline double scatteringCoordR(const AtmosphereDomain& d, int size_r, double rho
 }
 
 // The mu coordinate alone (see transmittanceCoordMu).
-inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho, double H,
-                                double mu, bool ray_intersects_ground) {
+inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho, double H, double mu,
+                                bool ray_intersects_ground) {
   const double r_mu = r * mu;
   const double discriminant = r_mu * r_mu - r * r + d.bottom_radius_m * d.bottom_radius_m;
   if (!d.scattering_ground_views) {
@@ -240,16 +230,14 @@ inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r
 // mu_s uses the scattering table's coordinate (dense near the horizon, ending
 // at mu_s_min): across the terminator irradiance falls tenfold within a few
 // degrees, which a coordinate linear in mu_s would straddle with one texel.
-inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s,
-                                              int size_r, double r, double mu_s) {
+inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s, int size_r, double r,
+                                              double mu_s) {
   const double x_r = (r - d.bottom_radius_m) / (d.top_radius_m - d.bottom_radius_m);
   return {textureCoordFromUnitRange(muSUnitCoord(d, mu_s), size_mu_s), textureCoordFromUnitRange(x_r, size_r)};
 }
 
-inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
-                                                   const ScatteringSizes& s, double r, double mu,
-                                                   double mu_s, double nu,
-                                                   bool ray_intersects_ground) {
+inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d, const ScatteringSizes& s, double r,
+                                                   double mu, double mu_s, double nu, bool ray_intersects_ground) {
   const double H = d.horizonToTopDistance();
   const double rho = d.distanceToHorizon(r);
   return {(nu + 1.0) * 0.5, scatteringCoordMuS(d, s.mu_s, mu_s),
@@ -261,12 +249,8 @@ inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d,
 // split: density depends on the direction only, not on where the ray ends,
 // and is smooth through the horizon. (In the split layout the ground half is
 // degenerate at r = bottom, where every ground ray points straight down.)
-inline double densityCoordMu(double mu, int size_mu) {
-  return textureCoordFromUnitRange((mu + 1.0) * 0.5, size_mu);
-}
-inline double muFromDensityTexel(int i_mu, int size_mu) {
-  return clampCosine(-1.0 + 2.0 * i_mu / (size_mu - 1));
-}
+inline double densityCoordMu(double mu, int size_mu) { return textureCoordFromUnitRange((mu + 1.0) * 0.5, size_mu); }
+inline double muFromDensityTexel(int i_mu, int size_mu) { return clampCosine(-1.0 + 2.0 * i_mu / (size_mu - 1)); }
 
 // The configuration at the centre of a texel.
 struct ScatteringTexelConfig {
@@ -282,8 +266,8 @@ double muSFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& 
 // mu_s at the centre of texel i_mu_s of the irradiance table's mu_s axis of
 // `size` texels (the whole sun range; the 4D tables' axis may be narrower).
 double muSFromIrradianceTexel(const AtmosphereDomain& d, int size, int i_mu_s);
-ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s,
-                                            int i_r, int i_mu, int i_mu_s, int i_nu);
+ScatteringTexelConfig scatteringTexelConfig(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r, int i_mu,
+                                            int i_mu_s, int i_nu);
 
 struct RMu {
   double r;
@@ -296,13 +280,10 @@ struct RMuS {
   double mu_s;
 };
 // (r, mu_s) at an irradiance texel centre.
-RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s,
-                          int i_r);
+RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s, int i_r);
 
 // The nu a slice of the 4D tables stands for: -1 + 2 i / (nu_size - 1).
-inline double nuOfScatteringSlice(int i_nu, int nu_size) {
-  return clampCosine(-1.0 + 2.0 * i_nu / (nu_size - 1));
-}
+inline double nuOfScatteringSlice(int i_nu, int nu_size) { return clampCosine(-1.0 + 2.0 * i_nu / (nu_size - 1)); }
 
 // The range of nu a direction with zenith cosine mu can make with a sun at
 // zenith cosine mu_s; texels outside it describe impossible geometry and are

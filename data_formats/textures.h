@@ -31,7 +31,10 @@ struct Texture4D {
 
   Texture4D() = default;
   Texture4D(int r, int mu, int mu_s, int nu)
-      : r_size(r), mu_size(mu), mu_s_size(mu_s), nu_size(nu),
+      : r_size(r),
+        mu_size(mu),
+        mu_s_size(mu_s),
+        nu_size(nu),
         texels(static_cast<size_t>(r) * mu * mu_s * nu, Spectrum(0.0f)) {}
   int atlasWidth() const { return nu_size * mu_s_size; }
   int atlasHeight() const { return r_size * mu_size; }

@@ -34,9 +34,9 @@ constexpr CodePointRange kMisreadCodePoints[] = {
 
 // The non-ASCII code points toml++ 3.3 takes for horizontal whitespace: it
 // skips them after a line-ending backslash as it skips spaces.
-constexpr CodePointRange kNonAsciiHorizontalWhitespace[] = {
-    {0x00A0, 0x00A0}, {0x1680, 0x1680}, {0x180E, 0x180E}, {0x2000, 0x200B},
-    {0x202F, 0x202F}, {0x205F, 0x2060}, {0x3000, 0x3000}, {0xFEFF, 0xFEFF}};
+constexpr CodePointRange kNonAsciiHorizontalWhitespace[] = {{0x00A0, 0x00A0}, {0x1680, 0x1680}, {0x180E, 0x180E},
+                                                            {0x2000, 0x200B}, {0x202F, 0x202F}, {0x205F, 0x2060},
+                                                            {0x3000, 0x3000}, {0xFEFF, 0xFEFF}};
 
 bool isAscii(char c) { return static_cast<unsigned char>(c) < 0x80; }
 bool isTomlWhitespaceOrNewline(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
@@ -149,23 +149,36 @@ class Scanner {
     }
     const bool in_array = !brackets_.empty() && brackets_.back() == Bracket::Array;
     switch (c) {
-      case '#': context_ = Context::Comment; break;
-      case '\n': if (brackets_.empty()) reading_key_ = true; break;
-      case '=': reading_key_ = false; break;
-      case ',': reading_key_ = !in_array; break;
-      case '{': brackets_.push_back(Bracket::InlineTable); reading_key_ = true; break;
+      case '#':
+        context_ = Context::Comment;
+        break;
+      case '\n':
+        if (brackets_.empty()) reading_key_ = true;
+        break;
+      case '=':
+        reading_key_ = false;
+        break;
+      case ',':
+        reading_key_ = !in_array;
+        break;
+      case '{':
+        brackets_.push_back(Bracket::InlineTable);
+        reading_key_ = true;
+        break;
       case '[':
         brackets_.push_back(reading_key_ && (brackets_.empty() || brackets_.back() == Bracket::TableHeader)
                                 ? Bracket::TableHeader
                                 : Bracket::Array);
         break;
-      case ']': case '}': {
+      case ']':
+      case '}': {
         const bool closes_header = !brackets_.empty() && brackets_.back() == Bracket::TableHeader;
         if (!brackets_.empty()) brackets_.pop_back();
         if (!closes_header) reading_key_ = false;  // the array or inline table was a value
         break;
       }
-      default: break;
+      default:
+        break;
     }
     advance();
   }
@@ -201,9 +214,10 @@ class Scanner {
       }
       if (!inRanges(next.code, kMisreadCodePoints)) return;
       const auto code = static_cast<uint32_t>(next.code);
-      fail(fmt::format("in a multi-line string, the text after a line-ending backslash cannot start "
-                       "with U+{:04X}, which the TOML parser misreads there; write it as \\u{:04X}",
-                       code, code));
+      fail(
+          fmt::format("in a multi-line string, the text after a line-ending backslash cannot start "
+                      "with U+{:04X}, which the TOML parser misreads there; write it as \\u{:04X}",
+                      code, code));
     }
   }
 
@@ -218,7 +232,7 @@ class Scanner {
         return stepOutside(c);
       case Context::BasicString:
         advance();
-        if (c == '\\' && !atEnd()) advance();  // an escaped quote does not end the string
+        if (c == '\\' && !atEnd()) advance();      // an escaped quote does not end the string
         if (c == '"' || c == '\n') closeString();  // a newline is the parser's error
         return;
       case Context::LiteralString:
@@ -240,7 +254,7 @@ class Scanner {
   std::string_view text_;
   const std::string& source_;
   Context context_ = Context::Outside;
-  bool reading_key_ = true;  // a document starts with keys
+  bool reading_key_ = true;      // a document starts with keys
   bool in_value_token_ = false;  // inside a bare value, or after a string in one
   std::vector<Bracket> brackets_;
   size_t position_ = 0;
@@ -250,8 +264,6 @@ class Scanner {
 
 }  // namespace
 
-void checkTomlCharacters(std::string_view text, const std::string& source) {
-  Scanner(text, source).scan();
-}
+void checkTomlCharacters(std::string_view text, const std::string& source) { Scanner(text, source).scan(); }
 
 }  // namespace skybake

@@ -12,19 +12,20 @@
 namespace skybake {
 
 struct AtmosphereRay {
-  bool inside = false;     // false: the ray misses the atmosphere
-  glm::dvec3 origin;       // in the atmosphere (moved in from space if needed)
+  bool inside = false;  // false: the ray misses the atmosphere
+  glm::dvec3 origin;    // in the atmosphere (moved in from space if needed)
   glm::dvec3 dir;
-  double r = 0.0;          // |origin|
-  double mu = 0.0;         // zenith cosine of dir at origin
-  double length = 0.0;     // to its end: the ground, the top or a distance limit
+  double r = 0.0;       // |origin|
+  double mu = 0.0;      // zenith cosine of dir at origin
+  double length = 0.0;  // to its end: the ground, the top or a distance limit
   bool ends_on_ground = false;
-  double moved = 0.0;      // distance from the given start to origin
+  double moved = 0.0;  // distance from the given start to origin
 };
 
 // The ray from `start` along unit `dir`, limited to `max_length` (<= 0: none).
 // A start below the ground is put on the ground directly above.
-inline AtmosphereRay atmosphereRay(double bottom, double top, glm::dvec3 start, const glm::dvec3& dir, double max_length) {
+inline AtmosphereRay atmosphereRay(double bottom, double top, glm::dvec3 start, const glm::dvec3& dir,
+                                   double max_length) {
   AtmosphereRay ray;
   double r = glm::length(start);
   if (r < bottom) {

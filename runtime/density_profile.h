@@ -11,8 +11,8 @@ namespace skybake {
 
 // Dimensionless density in [0, 1] at altitude_m above the ground.
 inline double layerDensity(const DensityLayer& layer, double altitude_m) {
-  const double value = layer.exp_term * std::exp(layer.exp_scale * altitude_m) +
-                       layer.linear_term * altitude_m + layer.constant_term;
+  const double value =
+      layer.exp_term * std::exp(layer.exp_scale * altitude_m) + layer.linear_term * altitude_m + layer.constant_term;
   return std::clamp(value, 0.0, 1.0);
 }
 

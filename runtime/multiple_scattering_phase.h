@@ -104,9 +104,7 @@ class MultipleScatteringPhase {
 
   // f for a peak weight w (from peakWeightAt) at nu, per channel, sr^-1;
   // always > 0.
-  Spectrum operator()(const SpectrumD& peak_weight, double nu) const {
-    return withPeak(peak_weight, peakAt(nu));
-  }
+  Spectrum operator()(const SpectrumD& peak_weight, double nu) const { return withPeak(peak_weight, peakAt(nu)); }
 
   // The same in two steps, for loops where nu is fixed and the weight varies.
   double peakAt(double nu) const { return cornetteShanksPhase(g_, nu); }

@@ -24,8 +24,8 @@ struct ShadowCrossings {
 // Crossings of the shadow's edge by the segment origin + t dir, t in
 // (0, length); `sun` is the unit vector toward the sun, positions are
 // relative to the planet's centre.
-inline ShadowCrossings planetShadowCrossings(const glm::dvec3& origin, const glm::dvec3& dir,
-                                             const glm::dvec3& sun, double bottom_radius, double length) {
+inline ShadowCrossings planetShadowCrossings(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& sun,
+                                             double bottom_radius, double length) {
   ShadowCrossings out;
   // Distance to the axis: |p - (p.s) s|^2 = R^2, a quadratic in t.
   const double origin_along = glm::dot(origin, sun), dir_along = glm::dot(dir, sun);

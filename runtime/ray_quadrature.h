@@ -12,10 +12,10 @@ namespace skybake {
 
 inline constexpr int kGaussNodes = 4;
 // Nodes on [-1, 1] and their weights.
-inline constexpr double kGaussAbscissa[kGaussNodes] = {-0.8611363115940526, -0.3399810435848563,
-                                                       0.3399810435848563, 0.8611363115940526};
-inline constexpr double kGaussWeight[kGaussNodes] = {0.3478548451374538, 0.6521451548625461,
-                                                     0.6521451548625461, 0.3478548451374538};
+inline constexpr double kGaussAbscissa[kGaussNodes] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                                                       0.8611363115940526};
+inline constexpr double kGaussWeight[kGaussNodes] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                                                     0.3478548451374538};
 
 // Calls node(t, weight) for every node of a composite rule over [a, b] with
 // `segments` equal sub-intervals; sum of weight * f(t) approximates the integral.
@@ -29,7 +29,6 @@ inline void forEachQuadratureNode(double a, double b, int segments, NodeFn&& nod
     }
   }
 }
-
 
 // Splitting sub-intervals that are optically thick. Composite rules with a
 // fixed number of sub-intervals assume the transmittance changes little
@@ -116,23 +115,24 @@ template <typename Value, typename RateFn, typename LargestFn, typename NodeFn>
 inline Value forEachOpticallyThinNodeWithIntegral(double length, int segments, double lowest_t, RateFn&& rate,
                                                   LargestFn&& largest, NodeFn&& node) {
   Value before(0.0);
-  forEachOpticallyThinPiece(0.0, length, segments, lowest_t, [&](double t) { return largest(rate(t)); },
-                            [&](double start, double end) {
-                              const double h = end - start;
-                              Value whole(0.0);
-                              for (int k = 0; k < kGaussNodes; ++k) {
-                                const double t = start + 0.5 * h * (1.0 + kGaussAbscissa[k]);
-                                const double partial_length = t - start;
-                                Value partial(0.0);
-                                for (int j = 0; j < kGaussNodes; ++j) {
-                                  partial += rate(start + 0.5 * partial_length * (1.0 + kGaussAbscissa[j])) *
-                                             (0.5 * partial_length * kGaussWeight[j]);
-                                }
-                                whole += rate(t) * (0.5 * h * kGaussWeight[k]);
-                                node(t, 0.5 * h * kGaussWeight[k], before + partial);
-                              }
-                              before += whole;
-                            });
+  forEachOpticallyThinPiece(
+      0.0, length, segments, lowest_t, [&](double t) { return largest(rate(t)); },
+      [&](double start, double end) {
+        const double h = end - start;
+        Value whole(0.0);
+        for (int k = 0; k < kGaussNodes; ++k) {
+          const double t = start + 0.5 * h * (1.0 + kGaussAbscissa[k]);
+          const double partial_length = t - start;
+          Value partial(0.0);
+          for (int j = 0; j < kGaussNodes; ++j) {
+            partial += rate(start + 0.5 * partial_length * (1.0 + kGaussAbscissa[j])) *
+                       (0.5 * partial_length * kGaussWeight[j]);
+          }
+          whole += rate(t) * (0.5 * h * kGaussWeight[k]);
+          node(t, 0.5 * h * kGaussWeight[k], before + partial);
+        }
+        before += whole;
+      });
   return before;
 }
 

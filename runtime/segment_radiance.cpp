@@ -27,8 +27,7 @@ RadianceAndTransmittance directSegmentRadiance(const TableSampler& sampler, cons
   };
   Spectrum sum(0.0f);
   const SpectrumD depth = forEachOpticallyThinNodeWithIntegral<SpectrumD>(
-      length, subintervals, -r * mu, [&](double d) { return media.extinction(altitudeAt(d)); },
-      largestChannel,
+      length, subintervals, -r * mu, [&](double d) { return media.extinction(altitudeAt(d)); }, largestChannel,
       [&](double d, double w, const SpectrumD& depth_to_d) {
         const double r_d = domain.bottom_radius_m + altitudeAt(d);
         const double mu_d = cosineAlongRay(r, mu, d, r_d);

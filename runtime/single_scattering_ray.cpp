@@ -32,8 +32,7 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     rayleigh += light * (w * media.rayleighDensity(altitude));
     mie += light * (w * media.mieDensity(altitude));
   };
-  const ShadowCrossings crossings =
-      planetShadowCrossings(r, mu, ray.mu_s, ray.nu, a.bottom_radius_m, t_end);
+  const ShadowCrossings crossings = planetShadowCrossings(r, mu, ray.mu_s, ray.nu, a.bottom_radius_m, t_end);
   const double length = t_end - t_start;
   double piece_start = t_start;
   for (int i = 0; i <= crossings.count; ++i) {
@@ -41,9 +40,9 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     const double piece_end = last ? t_end : std::clamp(crossings.distance[i], t_start, t_end);
     if (!last && !(piece_end > piece_start)) continue;
     const int piece_segments = segmentsForPiece(segments, piece_end - piece_start, length);
-    forEachOpticallyThinNode(piece_start, piece_end, piece_segments, -r * mu,
-                             [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
-                             node);
+    forEachOpticallyThinNode(
+        piece_start, piece_end, piece_segments, -r * mu,
+        [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); }, node);
     piece_start = piece_end;
   }
   return {Spectrum(rayleigh) * a.sun_irradiance * a.rayleigh_scattering,

@@ -55,7 +55,6 @@ Sky::Sky(BakeFile bake)
       baked_mu_s_min_(std::cos(radiansFromDegrees(ranges_.sun_zenith_max_deg))),
       baked_mu_s_max_(std::cos(radiansFromDegrees(ranges_.sun_zenith_min_deg))) {}
 
-
 SunlitRay Sky::withBakedSun(const SunlitRay& ray) const {
   SunlitRay baked = ray;
   baked.mu_s = std::clamp(ray.mu_s, baked_mu_s_min_, baked_mu_s_max_);

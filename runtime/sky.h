@@ -102,8 +102,8 @@ class Sky {
   // The ground's own reflected light is not included (see groundRadiance).
   // shadow_length_m: the length of the ray's first part that lies in the
   // shadow of scene geometry (0 for none), for light shafts.
-  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                       const glm::dvec3& sun_dir, double shadow_length_m = 0.0) const;
+  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
+                                       double shadow_length_m = 0.0) const;
 
   // What a viewer receives along the ray, the sun disk aside: skyRadiance
   // plus, for a ray that ends on the ground, the transmitted radiance of the
@@ -113,15 +113,13 @@ class Sky {
 
   // Radiance scattered toward `camera` between it and `point` (aerial
   // perspective), and the transmittance between them.
-  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
-                                           const glm::dvec3& sun_dir,
+  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point, const glm::dvec3& sun_dir,
                                            double shadow_length_m = 0.0) const;
 
   // Sun and sky irradiance on a surface at `point` with unit `normal`. The sky
   // part assumes the surface sees the sky hemisphere around its normal as a
   // horizontal surface would, scaled by (1 + normal . up) / 2.
-  SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal,
-                                 const glm::dvec3& sun_dir) const;
+  SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const;
 
   // Radiance of the sun disk at the top of the atmosphere: irradiance over the
   // disk's solid angle. Multiply by the transmittance along the view ray.
@@ -133,9 +131,8 @@ class Sky {
   Spectrum transmittance(const glm::dvec3& a, const glm::dvec3& b) const;
 
   // skyRadiance for many view directions at once; same results.
-  void skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir,
-                        const ViewRayBatch& rays, SpectrumBatch radiance,
-                        SpectrumBatch transmittance) const;
+  void skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
+                        SpectrumBatch radiance, SpectrumBatch transmittance) const;
 
   const TableSampler& sampler() const { return sampler_; }
   // False for a bake without Mie scattering, which stores no single Mie table.
@@ -152,8 +149,8 @@ class Sky {
  private:
   // In-scattering over [0, d - shadow] of the ray (r, mu) as the difference of
   // two lookups (see radianceToPoint).
-  Spectrum differenceSegmentRadiance(double r, double mu, double mu_s, double nu, double d, double shadow,
-                                     bool ground, const Spectrum& transmittance) const;
+  Spectrum differenceSegmentRadiance(double r, double mu, double mu_s, double nu, double d, double shadow, bool ground,
+                                     const Spectrum& transmittance) const;
 
   // Single scattering (each part without its phase function) of the ray's
   // part [t_start, t_end]: from the tables (`from_tables()`, not called where

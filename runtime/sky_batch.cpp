@@ -66,8 +66,8 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
   const Blend blend = radianceBlend(mu_s);
   const Texture4D rayleigh = sliceAt(t.single_rayleigh, r_lerp, mu_s_lerp, blend);
   // Without Mie scattering the bake stores no single Mie table: a slice of zeros.
-  const Texture4D mie = hasSingleMie() ? sliceAt(t.single_mie, r_lerp, mu_s_lerp, blend)
-                                       : Texture4D(1, ss.mu, 1, ss.nu);
+  const Texture4D mie =
+      hasSingleMie() ? sliceAt(t.single_mie, r_lerp, mu_s_lerp, blend) : Texture4D(1, ss.mu, 1, ss.nu);
   const Texture4D multiple = sliceAt(t.multiple_scattering, r_lerp, mu_s_lerp, blend);
   const SpectrumD multiple_peak_weight = multiple_shape_.peakWeightAt(r - d.bottom_radius_m);
   const int channels = channelCount();
@@ -86,20 +86,20 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
     }
     const AxisLerp mu_lerp = axisLerpFromTextureCoord(scatteringCoordMu(d, ss.mu, r, rho, H, mu, ground), ss.mu);
     const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, ss.nu);
-    const SingleScattering single =
-        singleScattering({r, mu, mu_s, nu, ground}, 0.0,
-                         distanceToAtmosphereEnd(r, mu, d.bottom_radius_m, d.top_radius_m, ground), [&] {
-                           return SingleScattering{sampleSlice(rayleigh, mu_lerp, nu_lerp, blend),
-                                                   sampleSlice(mie, mu_lerp, nu_lerp, blend)};
-                         });
+    const SingleScattering single = singleScattering(
+        {r, mu, mu_s, nu, ground}, 0.0, distanceToAtmosphereEnd(r, mu, d.bottom_radius_m, d.top_radius_m, ground), [&] {
+          return SingleScattering{sampleSlice(rayleigh, mu_lerp, nu_lerp, blend),
+                                  sampleSlice(mie, mu_lerp, nu_lerp, blend)};
+        });
     const Spectrum l = single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
                        single.mie * static_cast<float>(mie_phase_(nu)) +
                        sampleSlice(multiple, mu_lerp, nu_lerp, blend) * multiple_shape_(multiple_peak_weight, nu);
     // As TableSampler::opticalDepthAlongRay takes a ray to the ground: both legs reversed.
     const Spectrum tau =
         ground ? TableSampler::depthBetween(
-                     depth_at_ground.toTop(t.optical_depth, -cosineAlongRay(r, mu, distanceToInnerSphere(r, mu, d.bottom_radius_m),
-                                                                            d.bottom_radius_m)),
+                     depth_at_ground.toTop(
+                         t.optical_depth,
+                         -cosineAlongRay(r, mu, distanceToInnerSphere(r, mu, d.bottom_radius_m), d.bottom_radius_m)),
                      depth_here.toTop(t.optical_depth, -mu))
                : depth_here.toTop(t.optical_depth, mu);
     Spectrum t_out(0.0f);

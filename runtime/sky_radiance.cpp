@@ -64,23 +64,21 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
   const Spectrum multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
                             multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
   const Spectrum radiance = single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-                            single.mie * static_cast<float>(mie_phase_(nu)) +
-                            multiple;
+                            single.mie * static_cast<float>(mie_phase_(nu)) + multiple;
   return {radiance, transmittance};
 }
 
 Spectrum Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
                                 const Spectrum& to_start) const {
   const BakeTables& t = bake_.tables;
-  const SingleScattering single = integrateSingleScattering(sampler_, t.optical_depth, atmosphere(),
-                                                            withBakedSun(ray), t_start, t_end, kGroundRaySubintervals);
+  const SingleScattering single = integrateSingleScattering(sampler_, t.optical_depth, atmosphere(), withBakedSun(ray),
+                                                            t_start, t_end, kGroundRaySubintervals);
   const SunlitRay baked_from_start = withBakedSun(from_start);
   const RadianceAndTransmittance multiple = directSegmentRadiance(
       sampler_, t, atmosphere(), multiple_shape_, baked_from_start.r, baked_from_start.mu, baked_from_start.mu_s,
       ray.nu, std::max(t_end - t_start, 0.0), kGroundRaySubintervals, false);
   return single.rayleigh * static_cast<float>(rayleighPhase(ray.nu)) +
-         single.mie * static_cast<float>(mie_phase_(ray.nu)) +
-         multiple.radiance * to_start;
+         single.mie * static_cast<float>(mie_phase_(ray.nu)) + multiple.radiance * to_start;
 }
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,

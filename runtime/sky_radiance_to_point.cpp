@@ -50,21 +50,18 @@ struct SegmentScattering {
 // In-scattering over [0, d] of the ray (r, mu): the scattering to the ray's
 // end seen from its start minus that seen from the point at d, attenuated.
 SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTables& t,
-                                    const MultipleScatteringPhase& multiple_shape, double r, double mu,
-                                    double mu_s, double nu, double d, double shadow, bool ground,
-                                    const Spectrum& transmittance) {
+                                    const MultipleScatteringPhase& multiple_shape, double r, double mu, double mu_s,
+                                    double nu, double d, double shadow, bool ground, const Spectrum& transmittance) {
   const AtmosphereDomain& domain = sampler.domain();
   const double d_p = std::max(d - shadow, 0.0);
   const double r_p = std::clamp(radiusAlongRay(r, mu, d_p), domain.bottom_radius_m, domain.top_radius_m);
   const double mu_p = cosineAlongRay(r, mu, d_p, r_p);
   const double mu_s_p = clampCosine((r * mu_s + d_p * nu) / r_p);
   const Spectrum shadow_transmittance =
-      shadow == 0.0 ? transmittance
-                    : glm::exp(-sampler.opticalDepthAlongRay(t.optical_depth, r, mu, d_p, ground));
+      shadow == 0.0 ? transmittance : glm::exp(-sampler.opticalDepthAlongRay(t.optical_depth, r, mu, d_p, ground));
   auto difference = [&](const Texture4D& table, const Spectrum& scale_here, const Spectrum& scale_there) {
     return glm::max(sampler.scattering(table, r, mu, mu_s, nu, ground) * scale_here -
-                        shadow_transmittance * scale_there *
-                            sampler.scattering(table, r_p, mu_p, mu_s_p, nu, ground),
+                        shadow_transmittance * scale_there * sampler.scattering(table, r_p, mu_p, mu_s_p, nu, ground),
                     Spectrum(0.0f));
   };
   const Spectrum one(1.0f);
@@ -99,13 +96,13 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
 
   const bool ground = start.ends_on_ground;
   const double scattering_length = std::max(d - shadow, 0.0);
-  const double direct_weight = std::max(
-      std::clamp((kDirectSegmentMaxLength_m - scattering_length) /
-                     (kDirectSegmentMaxLength_m - kDifferenceSegmentMinLength_m),
-                 0.0, 1.0),
-      ground && !domain.scattering_ground_views
-          ? 1.0
-          : integratedSingleScatteringWeight(withBakedSun({r, mu, mu_s, nu, ground}).mu_s));
+  const double direct_weight =
+      std::max(std::clamp((kDirectSegmentMaxLength_m - scattering_length) /
+                              (kDirectSegmentMaxLength_m - kDifferenceSegmentMinLength_m),
+                          0.0, 1.0),
+               ground && !domain.scattering_ground_views
+                   ? 1.0
+                   : integratedSingleScatteringWeight(withBakedSun({r, mu, mu_s, nu, ground}).mu_s));
   Spectrum radiance(0.0f);
   Spectrum transmittance(0.0f);
   if (direct_weight > 0.0) {
@@ -116,7 +113,8 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
     radiance += direct.radiance * w;
     // With a shadow the segment to the point is longer than the lit part.
     transmittance += (shadow > 0.0 ? glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, d, ground))
-                                   : direct.transmittance) * w;
+                                   : direct.transmittance) *
+                     w;
   }
   if (direct_weight < 1.0) {
     const float w = static_cast<float>(1.0 - direct_weight);
@@ -150,8 +148,8 @@ Spectrum Sky::differenceSegmentRadiance(double r, double mu, double mu_s, double
   const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, 0.0, std::max(d - shadow, 0.0), [&] {
     return SingleScattering{s.rayleigh, s.mie * static_cast<float>(mie_fade * mie_fade * (3.0 - 2.0 * mie_fade))};
   });
-  return single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-         single.mie * static_cast<float>(mie_phase_(nu)) + s.multiple;
+  return single.rayleigh * static_cast<float>(rayleighPhase(nu)) + single.mie * static_cast<float>(mie_phase_(nu)) +
+         s.multiple;
 }
 
 }  // namespace skybake

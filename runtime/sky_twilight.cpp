@@ -31,8 +31,8 @@ double Sky::integratedSingleScatteringWeight(double mu_s) {
 
 void Sky::blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, double weight,
                                             SingleScattering& s) const {
-  const SingleScattering integrated = integrateSingleScattering(sampler_, bake_.tables.optical_depth, atmosphere(),
-                                                                ray, t_start, t_end, kLookupSingleScatteringSegments);
+  const SingleScattering integrated = integrateSingleScattering(sampler_, bake_.tables.optical_depth, atmosphere(), ray,
+                                                                t_start, t_end, kLookupSingleScatteringSegments);
   const float w = static_cast<float>(weight);
   s.rayleigh += (integrated.rayleigh - s.rayleigh) * w;
   s.mie += (integrated.mie - s.mie) * w;

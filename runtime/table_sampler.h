@@ -70,9 +70,7 @@ inline constexpr float kGeometricBlendRatio = 1.5f;
 // a^(1-w) b^w for positive a and b, in logarithms: the ratio b / a of a
 // normal and a denormal number (thick or dark atmospheres reach 1e-40)
 // overflows to infinity, and a * (b / a)^w then gives inf or NaN.
-inline float geometricBlend(float a, float b, float w) {
-  return std::exp((1.0f - w) * std::log(a) + w * std::log(b));
-}
+inline float geometricBlend(float a, float b, float w) { return std::exp((1.0f - w) * std::log(a) + w * std::log(b)); }
 
 inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, float w) {
   Spectrum out = a + (b - a) * w;
@@ -86,12 +84,15 @@ inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, f
 
 template <Blend blend>
 inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w) {
-  if constexpr (blend == Blend::Linear) return a + (b - a) * w;
-  else return blendGeometricWhereSteep(a, b, w);
+  if constexpr (blend == Blend::Linear)
+    return a + (b - a) * w;
+  else
+    return blendGeometricWhereSteep(a, b, w);
 }
 
 inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w, Blend blend) {
-  return blend == Blend::Linear ? blendAcross<Blend::Linear>(a, b, w) : blendAcross<Blend::GeometricWhereSteep>(a, b, w);
+  return blend == Blend::Linear ? blendAcross<Blend::Linear>(a, b, w)
+                                : blendAcross<Blend::GeometricWhereSteep>(a, b, w);
 }
 
 // The blend for a radiance lookup with the sun at zenith cosine mu_s.
@@ -176,10 +177,9 @@ class TableSampler {
     const double r_d = std::clamp(radiusAlongRay(r, mu, d), domain_.bottom_radius_m, domain_.top_radius_m);
     const double mu_d = cosineAlongRay(r, mu, d, r_d);
     const bool reversed = ray_intersects_ground || d <= -r * mu;
-    return reversed ? depthBetween(opticalDepthToTop(optical_depth, r_d, -mu_d),
-                                   opticalDepthToTop(optical_depth, r, -mu))
-                    : depthBetween(opticalDepthToTop(optical_depth, r, mu),
-                                   opticalDepthToTop(optical_depth, r_d, mu_d));
+    return reversed
+               ? depthBetween(opticalDepthToTop(optical_depth, r_d, -mu_d), opticalDepthToTop(optical_depth, r, -mu))
+               : depthBetween(opticalDepthToTop(optical_depth, r, mu), opticalDepthToTop(optical_depth, r_d, mu_d));
   }
   // The optical depth between two points on one ray from the depths to the
   // top at the nearer (`from_nearer`) and the farther point, as seen looking
@@ -191,8 +191,7 @@ class TableSampler {
   // Transmittance to the sun from radius r with sun zenith cosine mu_s,
   // including the part of the sun disk above the horizon (linear ramp over the
   // disk's angular diameter).
-  Spectrum transmittanceToSun(const Texture2D& optical_depth, double r, double mu_s,
-                              double sun_angular_radius) const {
+  Spectrum transmittanceToSun(const Texture2D& optical_depth, double r, double mu_s, double sun_angular_radius) const {
     const SunFromR sun(*this, r, sun_angular_radius);
     const double visible = sun.visibleFraction(mu_s);
     if (visible <= 0.0) return Spectrum(0.0f);
@@ -206,8 +205,7 @@ class TableSampler {
    public:
     OpticalDepthFromR(const TableSampler& sampler, double r)
         : rho_(sampler.domain_.distanceToHorizon(r)),
-          mu_coord_(TransmittanceMuCoordAtR::of(sampler.domain_, sampler.sizes_.transmittance_mu, r, rho_,
-                                                sampler.H_)),
+          mu_coord_(TransmittanceMuCoordAtR::of(sampler.domain_, sampler.sizes_.transmittance_mu, r, rho_, sampler.H_)),
           r_lerp_(axisLerpFromTextureCoord(textureCoordFromUnitRange(rho_ / sampler.H_, sampler.sizes_.transmittance_r),
                                            sampler.sizes_.transmittance_r)) {}
     double muCoord(double mu) const { return mu_coord_(mu); }
@@ -215,9 +213,7 @@ class TableSampler {
     Spectrum opticalDepth(const Texture2D& optical_depth, double u_mu) const {
       return sampleBilinear(optical_depth, axisLerpFromTextureCoord(u_mu, optical_depth.width), r_lerp_);
     }
-    Spectrum toTop(const Texture2D& optical_depth, double mu) const {
-      return opticalDepth(optical_depth, muCoord(mu));
-    }
+    Spectrum toTop(const Texture2D& optical_depth, double mu) const { return opticalDepth(optical_depth, muCoord(mu)); }
 
    private:
     double rho_;  // distanceToHorizon(r)
@@ -240,10 +236,8 @@ class TableSampler {
     double tangent_mu_, disk_half_size_;
   };
 
-  ScatteringCoord scatteringCoord(double r, double mu, double mu_s, double nu,
-                                  bool ray_intersects_ground) const {
-    return scatteringCoordFromRMuMuSNu(domain_, scattering_sizes_, r, mu, mu_s, nu,
-                                       ray_intersects_ground);
+  ScatteringCoord scatteringCoord(double r, double mu, double mu_s, double nu, bool ray_intersects_ground) const {
+    return scatteringCoordFromRMuMuSNu(domain_, scattering_sizes_, r, mu, mu_s, nu, ray_intersects_ground);
   }
 
   Spectrum scattering(const Texture4D& table, double r, double mu, double mu_s, double nu,
@@ -267,8 +261,7 @@ class TableSampler {
   // interpolation follows an exponential exactly. Where a neighbour is 0
   // (night), linear.
   Spectrum irradiance(const Texture2D& irradiance, double r, double mu_s) const {
-    const TextureCoord2D uv =
-        irradianceCoordFromRMuS(domain_, sizes_.irradiance_mu_s, sizes_.irradiance_r, r, mu_s);
+    const TextureCoord2D uv = irradianceCoordFromRMuS(domain_, sizes_.irradiance_mu_s, sizes_.irradiance_r, r, mu_s);
     const AxisLerp x = axisLerpFromTextureCoord(uv.u, irradiance.width);
     const AxisLerp y = axisLerpFromTextureCoord(uv.v, irradiance.height);
     auto row = [&](int i_r) {
@@ -277,8 +270,8 @@ class TableSampler {
     const Spectrum low = row(y.i0), high = row(y.i1);
     Spectrum out;
     for (int c = 0; c < kMaxChannels; ++c) {
-      out[c] = low[c] > 0.0f && high[c] > 0.0f ? geometricBlend(low[c], high[c], y.w1)
-                                               : low[c] + (high[c] - low[c]) * y.w1;
+      out[c] =
+          low[c] > 0.0f && high[c] > 0.0f ? geometricBlend(low[c], high[c], y.w1) : low[c] + (high[c] - low[c]) * y.w1;
     }
     return out;
   }

@@ -13,6 +13,8 @@ packages=(
   # The fuzz targets (tests/fuzz) build with Clang: libFuzzer is in
   # libclang-rt, and the Clang build configures OpenMP through libomp.
   clang libclang-rt-14-dev libomp-dev
+  # tests/CMakeLists.txt's format_check: the code follows .clang-format.
+  clang-format
   python3 python3-numpy python3-matplotlib snakemake
 )
 
@@ -28,5 +30,5 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --preset release >/dev/null
 cmake --build build -j"$(nproc)"

@@ -6,16 +6,16 @@
 #include <limits>
 #include <optional>
 
-#include "baker/stages/order_shapes.h"
-#include "baker/stages/scene_tables.h"
-#include "baker/stages/scattering_density_kernel.h"
-#include "baker/stages/optical_depth_table.h"
 #include "baker/stages/direct_irradiance_table.h"
-#include "baker/stages/single_scattering_tables.h"
-#include "baker/stages/scattering_density_table.h"
 #include "baker/stages/indirect_irradiance_table.h"
 #include "baker/stages/multiple_scattering_table.h"
 #include "baker/stages/openmp_threads.h"
+#include "baker/stages/optical_depth_table.h"
+#include "baker/stages/order_shapes.h"
+#include "baker/stages/scattering_density_kernel.h"
+#include "baker/stages/scattering_density_table.h"
+#include "baker/stages/scene_tables.h"
+#include "baker/stages/single_scattering_tables.h"
 
 #include <fmt/format.h>
 
@@ -28,8 +28,7 @@ namespace {
 double processCpuSeconds() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
-         1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
 double peakMemoryMiB() {
@@ -45,8 +44,8 @@ Spectrum meanOf(const std::vector<Spectrum>& texels) {
 }
 
 // Mean single-scattering radiance over all texels, phase functions applied.
-Spectrum meanSingleScatteringRadiance(const TableSampler& sampler, const Texture4D& rayleigh,
-                                      const Texture4D& mie, double g) {
+Spectrum meanSingleScatteringRadiance(const TableSampler& sampler, const Texture4D& rayleigh, const Texture4D& mie,
+                                      double g) {
   const ScatteringSizes& s = sampler.scatteringSizes();
   SpectrumD sum(0.0);
   for (int i_r = 0; i_r < s.r; ++i_r)
@@ -159,12 +158,10 @@ class StageRunner {
 
   template <typename Fn>
   auto run(const std::string& stage, int order, size_t work_units, Fn&& fn) {
-    progress_.beginStage(order > 1 ? stage + " (order " + std::to_string(order) + ")" : stage,
-                         work_units);
+    progress_.beginStage(order > 1 ? stage + " (order " + std::to_string(order) + ")" : stage, work_units);
     const auto start = std::chrono::steady_clock::now();
     auto finish = [&] {
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       report_.stages.push_back({stage, order, seconds});
       progress_.endStage(seconds);
     };
@@ -205,15 +202,13 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
   StageRunner stage(progress, report);
 
   BakeTables& tables = out.file.tables;
-  tables.optical_depth = stage.run("transmittance", 0, config.sizes.transmittance_r,
-                                   [&] { return computeOpticalDepthTable(ctx); });
+  tables.optical_depth =
+      stage.run("transmittance", 0, config.sizes.transmittance_r, [&] { return computeOpticalDepthTable(ctx); });
   const Texture2D& optical_depth = tables.optical_depth;
-  Texture2D delta_irradiance = stage.run("direct_irradiance", 1, config.sizes.irradiance_r, [&] {
-    return computeDirectIrradianceTable(ctx, optical_depth);
-  });
-  stage.run("single_scattering", 1, rows_4d, [&] {
-    computeSingleScatteringTables(ctx, optical_depth, tables.single_rayleigh, tables.single_mie);
-  });
+  Texture2D delta_irradiance = stage.run("direct_irradiance", 1, config.sizes.irradiance_r,
+                                         [&] { return computeDirectIrradianceTable(ctx, optical_depth); });
+  stage.run("single_scattering", 1, rows_4d,
+            [&] { computeSingleScatteringTables(ctx, optical_depth, tables.single_rayleigh, tables.single_mie); });
   report.orders.push_back(
       {1, meanSingleScatteringRadiance(sampler, tables.single_rayleigh, tables.single_mie, a.mie_phase_g),
        Spectrum(0.0f)});
@@ -268,9 +263,8 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
       addReshaped(scene->sampler, TexelLayout::Density, scene->last, order_shape, stored_shape, Spectrum(1.0f),
                   scene->sum);
     }
-    delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
-      return computeIndirectIrradianceTable(ctx, previous);
-    });
+    delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r,
+                                 [&] { return computeIndirectIrradianceTable(ctx, previous); });
     addScaled(tables.irradiance.texels, delta_irradiance.texels, Spectrum(1.0f));
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 
@@ -293,8 +287,8 @@ BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink
     report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density, last_shape,
                                   stored_shape, delta_irradiance, tables);
     if (scene && report.tail.applied) {
-      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape,
-                  tailScale(report.tail), scene->sum);
+      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape, tailScale(report.tail),
+                  scene->sum);
     }
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";

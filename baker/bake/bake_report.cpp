@@ -26,13 +26,15 @@ std::string BakeReport::toJson(bool with_run_facts) const {
     for (const StageTiming& t : stages) {
       per_stage.push_back({{"stage", t.stage}, {"order", t.order}, {"seconds", t.seconds}});
     }
-  j["stages"] = per_stage;
+    j["stages"] = per_stage;
   }
   nlohmann::ordered_json orders_json = nlohmann::ordered_json::array();
   for (const OrderContribution& o : orders) {
-    orders_json.push_back({{"order", o.order},
-                           {"mean_radiance", {o.mean_radiance[0], o.mean_radiance[1], o.mean_radiance[2], o.mean_radiance[3]}},
-                           {"mean_irradiance", {o.mean_irradiance[0], o.mean_irradiance[1], o.mean_irradiance[2], o.mean_irradiance[3]}}});
+    orders_json.push_back(
+        {{"order", o.order},
+         {"mean_radiance", {o.mean_radiance[0], o.mean_radiance[1], o.mean_radiance[2], o.mean_radiance[3]}},
+         {"mean_irradiance",
+          {o.mean_irradiance[0], o.mean_irradiance[1], o.mean_irradiance[2], o.mean_irradiance[3]}}});
   }
   j["orders"] = orders_json;
   nlohmann::ordered_json decision = {{"orders_used", static_cast<int>(orders.size())},

@@ -67,11 +67,11 @@ std::optional<uint64_t> cgroupLeft() {
     const char* stat;
     const char* inactive_file;
   };
-  for (const Layout& l : {Layout{"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current",
-                                 "/sys/fs/cgroup/memory.stat", "inactive_file"},
-                          Layout{"/sys/fs/cgroup/memory/memory.limit_in_bytes",
-                                 "/sys/fs/cgroup/memory/memory.usage_in_bytes", "/sys/fs/cgroup/memory/memory.stat",
-                                 "total_inactive_file"}}) {
+  for (const Layout& l :
+       {Layout{"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current", "/sys/fs/cgroup/memory.stat",
+               "inactive_file"},
+        Layout{"/sys/fs/cgroup/memory/memory.limit_in_bytes", "/sys/fs/cgroup/memory/memory.usage_in_bytes",
+               "/sys/fs/cgroup/memory/memory.stat", "total_inactive_file"}}) {
     const std::optional<uint64_t> limit = readNumber(l.limit);
     const std::optional<uint64_t> usage = readNumber(l.usage);
     if (!limit || !usage || *limit >= kNoLimitFrom) continue;

@@ -13,15 +13,15 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include "baker/bake/bake.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/cli/available_memory.h"
-#include "baker/bake/bake.h"
 #include "baker/cli/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
-#include "baker/cli/terminal_progress.h"
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/size_choice.h"
+#include "baker/cli/terminal_progress.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
@@ -33,13 +33,13 @@ namespace {
 struct BakeOptions {
   std::string config_path;  // empty: the built-in Earth
   std::string output_path;
-  std::string orders;  // empty: from the config; "auto" or a count
-  std::optional<double> order_tolerance;  // absent: from the config
-  int threads = 0;     // 0: all cores (OpenMP's default)
-  std::string precision;  // empty: from the config
-  std::vector<std::string> outputs;  // empty: from the config
-  std::string altitude_range;        // "LOW:HIGH" metres; empty: from the config
-  std::string sun_zenith_range;      // "LOW:HIGH" degrees; empty: from the config
+  std::string orders;                       // empty: from the config; "auto" or a count
+  std::optional<double> order_tolerance;    // absent: from the config
+  int threads = 0;                          // 0: all cores (OpenMP's default)
+  std::string precision;                    // empty: from the config
+  std::vector<std::string> outputs;         // empty: from the config
+  std::string altitude_range;               // "LOW:HIGH" metres; empty: from the config
+  std::string sun_zenith_range;             // "LOW:HIGH" degrees; empty: from the config
   std::optional<std::string> target_error;  // "0.5%" or "0.5"; absent: the config's sizes
   bool reproducible = false;
   bool combined_single_mie = false;  // false: from the config
@@ -48,8 +48,8 @@ struct BakeOptions {
 
 std::string stageSummary(const BakeReport& report) {
   std::string text;
-  for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering",
-                            "scattering_density", "indirect_irradiance", "multiple_scattering"}) {
+  for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering", "scattering_density",
+                            "indirect_irradiance", "multiple_scattering"}) {
     text += fmt::format("{}{} {:.2f} s", text.empty() ? "" : ", ", stage, report.stageSeconds(stage));
   }
   if (const double scene = report.stageSeconds("scene_tables"); scene > 0.0) {
@@ -131,10 +131,9 @@ void runBake(const BakeOptions& o) {
   requireWritableOutput(reportSidecarPath(output), {o.config_path});
   const BakeMemoryEstimate memory = estimateBakeMemory(config);
   const TextureSizes& s = config.sizes;
-  const std::string kernel =
-      memory.density_kernel_bytes > 0
-          ? fmt::format(" and the scattering density's {} kernel", formatBytes(memory.density_kernel_bytes))
-          : "";
+  const std::string kernel = memory.density_kernel_bytes > 0 ? fmt::format(" and the scattering density's {} kernel",
+                                                                           formatBytes(memory.density_kernel_bytes))
+                                                             : "";
   requireMemoryAvailable(fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {} "
                                      "alive at once{})",
                                      source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
@@ -147,8 +146,8 @@ void runBake(const BakeOptions& o) {
                "skybake: --target-error {}: {:g}x the default sizes (scattering {} x {} x {} x {}), where the sweep of "
                "the built-in Earth measured {:.2f} % sky radiance RMS (worst channel, day and low sun) and {:.1f} s on "
                "2 threads (docs/ERROR_VS_TIME.md); `skybake validate` measures this bake\n",
-               *o.target_error, size_choice->scale, c.scattering_r, c.scattering_mu, c.scattering_mu_s,
-               c.scattering_nu, size_choice->predicted_percent, size_choice->predicted_bake_seconds);
+               *o.target_error, size_choice->scale, c.scattering_r, c.scattering_mu, c.scattering_mu_s, c.scattering_nu,
+               size_choice->predicted_percent, size_choice->predicted_bake_seconds);
   }
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
@@ -169,19 +168,19 @@ void runBake(const BakeOptions& o) {
                                 {"scale_of_default_sizes", size_choice->scale},
                                 {"predicted_error_percent", size_choice->predicted_percent},
                                 {"predicted_bake_seconds_2_threads", size_choice->predicted_bake_seconds},
-                                {"model", "sky radiance RMS, worst channel of the day and low-sun bands, "
-                                          "as measured in the sweep of the built-in Earth "
-                                          "(docs/ERROR_VS_TIME.md)"}};
+                                {"model",
+                                 "sky radiance RMS, worst channel of the day and low-sun bands, "
+                                 "as measured in the sweep of the built-in Earth "
+                                 "(docs/ERROR_VS_TIME.md)"}};
     }
     writeReportSidecar(output, sidecar);
   });
   const OrdersDecision& decision = bake.report.orders_decision;
   const std::string orders_note =
-      !decision.automatic ? ""
-      : decision.converged
-          ? fmt::format(", automatic: last order {:.2g} of the total", decision.last_order_share)
-          : fmt::format(", automatic: NOT converged, last order {:.2g} of the total at the cap of {}",
-                        decision.last_order_share, decision.cap);
+      !decision.automatic  ? ""
+      : decision.converged ? fmt::format(", automatic: last order {:.2g} of the total", decision.last_order_share)
+                           : fmt::format(", automatic: NOT converged, last order {:.2g} of the total at the cap of {}",
+                                         decision.last_order_share, decision.cap);
   fmt::print(stderr, "skybake: baked '{}' ({} orders{}) into {} ({:.1f} MiB) in {:.2f} s on {} threads: {}\n",
              config.name, bake.file.orders_computed, orders_note, o.output_path, bytes / (1024.0 * 1024.0),
              bake.report.wall_seconds, bake.report.threads, stageSummary(bake.report));
@@ -215,8 +214,7 @@ Command addBakeCommand(CLI::App& app) {
                                   "of the total (overrides bake.order_tolerance)."),
                   kMinOrderTolerance, kMaxOrderTolerance);
   addThreadsOption(*cmd, options->threads);
-  cmd->add_option("--precision", options->precision,
-                  "Storage precision in the file (overrides bake.precision).")
+  cmd->add_option("--precision", options->precision, "Storage precision in the file (overrides bake.precision).")
       ->check(CLI::IsMember({"half", "float"}));
   cmd->add_option("--outputs", options->outputs,
                   "What the scene uses, comma separated: sky_radiance (always), radiance_to_points, "

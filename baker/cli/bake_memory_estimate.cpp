@@ -1,5 +1,5 @@
-#include "baker/bake/bake_policy.h"
 #include "baker/cli/bake_memory_estimate.h"
+#include "baker/bake/bake_policy.h"
 
 #include <algorithm>
 #include <initializer_list>

@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "baker/cli/available_memory.h"
 #include "baker/bake/bake.h"
+#include "baker/cli/available_memory.h"
 #include "baker/cli/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
@@ -41,15 +41,16 @@ class BakedSky final : public SkyMethod {
   BakedSky(std::string name, BakeOutput bake)
       : name_(std::move(name)), seconds_(bake.report.wall_seconds), sky_(std::move(bake.file)) {}
   std::string name() const override { return name_; }
-  RadianceAndTransmittance received(const glm::dvec3& camera, const glm::dvec3& view, const glm::dvec3& sun) const override {
+  RadianceAndTransmittance received(const glm::dvec3& camera, const glm::dvec3& view,
+                                    const glm::dvec3& sun) const override {
     return sky_.receivedRadiance(camera, view, sun);
   }
   double precomputeSeconds() const override { return seconds_; }
   size_t memoryBytes() const override {
     const BakeTables& t = sky_.tables();
     size_t texels = 0;
-    for (const auto* v : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
-                          &t.multiple_density.texels}) {
+    for (const auto* v : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels,
+                          &t.single_mie.texels, &t.multiple_scattering.texels, &t.multiple_density.texels}) {
       texels += v->size();
     }
     return texels * sizeof(float) * sky_.channelCount();
@@ -134,8 +135,9 @@ std::vector<BakeConfig> scaledConfigs(const BakeConfig& config, const std::strin
   }
   std::string list;
   for (double factor : factors) list += fmt::format("{}{}", list.empty() ? "" : ",", factor);
-  requireMemoryAvailable(fmt::format("{}: --resolutions = {}: the comparison (every bake kept to the end)", source, list),
-                         kept_bytes + largest_extra_bytes);
+  requireMemoryAvailable(
+      fmt::format("{}: --resolutions = {}: the comparison (every bake kept to the end)", source, list),
+      kept_bytes + largest_extra_bytes);
   return scaled;
 }
 
@@ -166,15 +168,16 @@ void runCompare(const CompareOptions& o) {
     const TextureSizes& s = scaled_config.sizes;
     SilentProgress silent;
     fmt::print(stderr, "baking at {}x the configured sizes ...\n", o.resolutions[i]);
-    methods.push_back(std::make_unique<BakedSky>(
-        fmt::format("skybake {}x{}x{}x{}, {} orders", s.scattering_r, s.scattering_mu, s.scattering_mu_s,
-                    s.scattering_nu, config.bake.orders),
-        bakeAtmosphere(scaled_config, 0, silent)));
+    methods.push_back(
+        std::make_unique<BakedSky>(fmt::format("skybake {}x{}x{}x{}, {} orders", s.scattering_r, s.scattering_mu,
+                                               s.scattering_mu_s, s.scattering_nu, config.bake.orders),
+                                   bakeAtmosphere(scaled_config, 0, silent)));
   }
 
-  fmt::print("compare on '{}' ({} sky and ground rays; reference {} paths per query); errors: RMS / p95 / max %, "
-             "worst channel; {} cores\n\n",
-             queries.name, queries.radiance.size(), settings.paths, omp_get_num_procs());
+  fmt::print(
+      "compare on '{}' ({} sky and ground rays; reference {} paths per query); errors: RMS / p95 / max %, "
+      "worst channel; {} cores\n\n",
+      queries.name, queries.radiance.size(), settings.paths, omp_get_num_procs());
   fmt::print("{:<62} {:>10} {:>9} {:>9}  {:>16} {:>16} {:>16}  {:>16}\n", "method", "precomp s", "us/ray", "MiB",
              "sky day", "sky low sun", "sky twilight", "ground day");
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
@@ -193,8 +196,8 @@ void runCompare(const CompareOptions& o) {
     rows.push_back(row);
   }
   if (!o.json_path.empty()) {
-    writeFileContentsAtomically(o.json_path,
-                            nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) + "\n");
+    writeFileContentsAtomically(
+        o.json_path, nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) + "\n");
   }
 }
 
@@ -209,10 +212,10 @@ Command addCompareCommand(CLI::App& app) {
   requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
                      ->capture_default_str(),
                  1, kMaxReferencePaths);
-  requireFiniteIn(cmd->add_option("--resolutions", o->resolutions,
-                                  "Bake at these multiples of the configured table sizes.")
-                      ->delimiter(','),
-                  kMinResolutionFactor, kMaxResolutionFactor);
+  requireFiniteIn(
+      cmd->add_option("--resolutions", o->resolutions, "Bake at these multiples of the configured table sizes.")
+          ->delimiter(','),
+      kMinResolutionFactor, kMaxResolutionFactor);
   cmd->add_option("--json", o->json_path, "Also write the table as JSON here.");
   cmd->add_option("--cache-dir", o->cache_dir, "Reference cache directory (see validate).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");

@@ -1,6 +1,6 @@
 // skybake info FILE.exr: what a bake holds, from its header.
-#include <nlohmann/json.hpp>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "baker/bake/bake_policy.h"
 #include "baker/cli/commands.h"
@@ -31,25 +31,28 @@ void runInfo(const std::string& path) {
   fmt::print("precision:     {}\n", c.precision == StoragePrecision::Half ? "half" : "float");
   fmt::print("optical depth: {} mu x {} r\n", s.transmittance_mu, s.transmittance_r);
   fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
-  fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu,
-             s.scattering_mu_s, s.scattering_nu);
+  fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu, s.scattering_mu_s,
+             s.scattering_nu);
   const AtmosphereDomain& d = c.domain;
   if (d.narrowed()) {
     const BakedRanges ranges = Sky(bake).bakedRanges();
     const TextureSizes it = iterationTextureSizes(made_from);
-    fmt::print("scene ranges:  altitude {:g} to {:g} m, sun zenith {:g} to {:.2f} deg (the scattering tables; the "
-               "orders iterated over the whole atmosphere at {} r x {} mu x {} mu_s x {} nu)\n",
-               ranges.altitude_min_m, ranges.altitude_max_m, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg,
-               it.scattering_r, it.scattering_mu, it.scattering_mu_s, it.scattering_nu);
+    fmt::print(
+        "scene ranges:  altitude {:g} to {:g} m, sun zenith {:g} to {:.2f} deg (the scattering tables; the "
+        "orders iterated over the whole atmosphere at {} r x {} mu x {} mu_s x {} nu)\n",
+        ranges.altitude_min_m, ranges.altitude_max_m, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg,
+        it.scattering_r, it.scattering_mu, it.scattering_mu_s, it.scattering_nu);
     // What narrowing buys at these sizes: texels closer together in the
     // axes' own coordinates than a whole-domain bake's.
-    fmt::print("               texels {:.2f}x closer in altitude and {:.2f}x in sun angle than a whole-domain bake "
-               "of these sizes\n",
-               d.horizonToTopDistance() / (d.scattering_rho_max_m - d.scattering_rho_min_m),
-               1.0 / (d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min));
+    fmt::print(
+        "               texels {:.2f}x closer in altitude and {:.2f}x in sun angle than a whole-domain bake "
+        "of these sizes\n",
+        d.horizonToTopDistance() / (d.scattering_rho_max_m - d.scattering_rho_min_m),
+        1.0 / (d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min));
     if (!d.scattering_ground_views) {
-      fmt::print("               no views below the horizon: the mu axis holds only the sky, 2x as densely; rays "
-                 "toward the ground are integrated at lookup (about 20 times slower)\n");
+      fmt::print(
+          "               no views below the horizon: the mu axis holds only the sky, 2x as densely; rays "
+          "toward the ground are integrated at lookup (about 20 times slower)\n");
     }
   }
   double left_out_mib = 0.0;
@@ -58,16 +61,17 @@ void runInfo(const std::string& path) {
     left_out_mib += p.bytes / (1024.0 * 1024.0);
   }
   if (left_out_mib > 0.0) {
-    fmt::print("               {:.1f} MiB uncompressed saved in all; no bake time (the orders need every table "
-               "while iterating)\n",
-               left_out_mib);
+    fmt::print(
+        "               {:.1f} MiB uncompressed saved in all; no bake time (the orders need every table "
+        "while iterating)\n",
+        left_out_mib);
   }
 
   const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report_json, nullptr, false);
   if (report.is_object() && report.contains("wall_seconds")) {
     fmt::print("bake time:     {:.2f} s wall, {:.2f} s CPU, {} threads, peak memory {:.0f} MiB\n",
-               report.value("wall_seconds", 0.0), report.value("cpu_seconds", 0.0),
-               report.value("threads", 0), report.value("peak_memory_mib", 0.0));
+               report.value("wall_seconds", 0.0), report.value("cpu_seconds", 0.0), report.value("threads", 0),
+               report.value("peak_memory_mib", 0.0));
     if (report.contains("stage_seconds")) {
       for (const auto& [stage, seconds] : report["stage_seconds"].items()) {
         fmt::print("  {:<22} {:8.3f} s\n", stage, seconds.get<double>());

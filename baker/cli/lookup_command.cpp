@@ -76,8 +76,7 @@ void requireInsideRanges(const CsvTable& q, size_t row, const RadianceQueryColum
     const glm::dvec3 camera = cameraAtAltitude(a.bottom_radius_m, q.value(row, columns.altitude_m));
     const glm::dvec3 view =
         directionFromZenithAzimuthDeg(q.value(row, columns.view_zenith_deg), q.value(row, columns.view_azimuth_deg));
-    const double point_altitude_m =
-        glm::length(camera + view * q.value(row, *columns.distance_m)) - a.bottom_radius_m;
+    const double point_altitude_m = glm::length(camera + view * q.value(row, *columns.distance_m)) - a.bottom_radius_m;
     if (!ranges.containsAltitude(point_altitude_m)) {
       q.failCell(row, *columns.distance_m,
                  fmt::format("m away puts the point at altitude {:.0f} m, {}", point_altitude_m, altitudes));
@@ -139,8 +138,7 @@ void runIrradiance(const LookupOptions& o) {
   writeCsvOutput(o.output_path, out);
 }
 
-CLI::App* addLookupKind(CLI::App& lookup, const char* name, const char* description,
-                        LookupOptions& options) {
+CLI::App* addLookupKind(CLI::App& lookup, const char* name, const char* description, LookupOptions& options) {
   CLI::App* cmd = lookup.add_subcommand(name, description);
   cmd->add_option("file", options.bake_path, "Bake file (.exr).")->required();
   cmd->add_option("--queries", options.queries_path, "Query CSV (columns above).")->required();
@@ -155,15 +153,17 @@ Command addLookupCommand(CLI::App& app) {
   lookup->require_subcommand(1);
   auto radiance = std::make_shared<LookupOptions>();
   auto irradiance = std::make_shared<LookupOptions>();
-  CLI::App* radiance_cmd = addLookupKind(*lookup, "radiance",
-                "Sky radiance and transmittance. Columns: altitude_m, sun_zenith_deg, view_zenith_deg, "
-                "view_azimuth_deg (from the sun's azimuth), optional distance_m (> 0: radiance to the point "
-                "at that distance). Adds radiance_<nm> (W m^-2 sr^-1 nm^-1) and transmittance_<nm>.",
-                *radiance);
-  CLI::App* irradiance_cmd = addLookupKind(*lookup, "irradiance",
-                "Irradiance on a horizontal surface. Columns: altitude_m, sun_zenith_deg. Adds "
-                "sky_irradiance_<nm> and sun_irradiance_<nm> (W m^-2 nm^-1).",
-                *irradiance);
+  CLI::App* radiance_cmd =
+      addLookupKind(*lookup, "radiance",
+                    "Sky radiance and transmittance. Columns: altitude_m, sun_zenith_deg, view_zenith_deg, "
+                    "view_azimuth_deg (from the sun's azimuth), optional distance_m (> 0: radiance to the point "
+                    "at that distance). Adds radiance_<nm> (W m^-2 sr^-1 nm^-1) and transmittance_<nm>.",
+                    *radiance);
+  CLI::App* irradiance_cmd =
+      addLookupKind(*lookup, "irradiance",
+                    "Irradiance on a horizontal surface. Columns: altitude_m, sun_zenith_deg. Adds "
+                    "sky_irradiance_<nm> and sun_irradiance_<nm> (W m^-2 nm^-1).",
+                    *irradiance);
   return {lookup, [=] {
             if (radiance_cmd->parsed()) runRadiance(*radiance);
             if (irradiance_cmd->parsed()) runIrradiance(*irradiance);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "data_formats/bake_file.h"
 #include "data_formats/error.h"
 
 namespace {
@@ -42,17 +43,17 @@ int main(int argc, char** argv) {
   // its temporary file left behind.
   std::signal(SIGXFSZ, SIG_IGN);
 
-  CLI::App app{"skybake: bakes physically based sky scattering tables (Bruneton-style) into one "
-               "OpenEXR file."};
+  CLI::App app{
+      "skybake: bakes physically based sky scattering tables (Bruneton-style) into one "
+      "OpenEXR file."};
   app.failure_message(cliFailureMessage);  // before the subcommands, which copy it
   app.require_subcommand(1);
+  app.set_version_flag("--version", fmt::format("skybake {} (writes bake file format {}, reads formats {} to {})",
+                                                SKYBAKE_VERSION, skybake::kBakeFormatVersion,
+                                                skybake::kOldestReadBakeFormatVersion, skybake::kBakeFormatVersion));
   const std::vector<skybake::cli::Command> commands = {
-      skybake::cli::addBakeCommand(app),
-      skybake::cli::addInfoCommand(app),
-      skybake::cli::addLookupCommand(app),
-      skybake::cli::addRenderCommand(app),
-      skybake::cli::addValidateCommand(app),
-      skybake::cli::addCompareCommand(app),
+      skybake::cli::addBakeCommand(app),   skybake::cli::addInfoCommand(app),     skybake::cli::addLookupCommand(app),
+      skybake::cli::addRenderCommand(app), skybake::cli::addValidateCommand(app), skybake::cli::addCompareCommand(app),
       skybake::cli::addStressCommand(app),
   };
 
@@ -70,6 +71,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);

@@ -67,8 +67,7 @@ CLI::Option* requireFiniteIn(CLI::Option* option, double lowest, double highest)
 
 CLI::Option* requirePositiveUpTo(CLI::Option* option, double highest) {
   return addCheck(option, fmt::format("finite number in (0, {:g}]", highest),
-                  fmt::format("must be a finite number in (0, {:g}]", highest),
-                  [highest](const std::string& text) {
+                  fmt::format("must be a finite number in (0, {:g}]", highest), [highest](const std::string& text) {
                     const std::optional<double> v = parseNumber(text);
                     return v && std::isfinite(*v) && *v > 0.0 && *v <= highest;
                   });

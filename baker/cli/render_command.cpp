@@ -77,8 +77,8 @@ bool isExrOutput(const std::string& path) {
 // Encodes the image in memory, then writes it out in one checked write: the
 // PNG writer does not report a full disk (it leaves a short file and says it
 // succeeded).
-void writeImage(const std::string& path, const SkyView& view, const std::vector<float>& linear,
-                double exposure, ToneMap tone_map) {
+void writeImage(const std::string& path, const SkyView& view, const std::vector<float>& linear, double exposure,
+                ToneMap tone_map) {
   const bool exr = isExrOutput(path);
   std::vector<unsigned char> encoded;
   OIIO::Filesystem::IOVecOutput memory(encoded);
@@ -116,7 +116,9 @@ void runRender(RenderOptions o) {
   if (!o.size.empty()) parseSize(o.size, v.width, v.height);
   v.view_elevation_deg = o.view_elevation_deg;
   v.view_azimuth_deg = o.view_azimuth_deg.value_or(v.sun_azimuth_deg);
-  const ToneMap tone_map = o.tone_map == "none" ? ToneMap::None : o.tone_map == "reinhard" ? ToneMap::Reinhard : ToneMap::Aces;
+  const ToneMap tone_map = o.tone_map == "none"       ? ToneMap::None
+                           : o.tone_map == "reinhard" ? ToneMap::Reinhard
+                                                      : ToneMap::Aces;
   const Sky sky = Sky::load(o.bake_path);
   requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
                          static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) * kImageBytesPerPixel);
@@ -129,17 +131,19 @@ Command addRenderCommand(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render the sky of a bake as an image.");
   cmd->add_option("file", o->bake_path, "Bake file (.exr).")->required();
-  cmd->add_option("-o,--output", o->output_path, "Image: .png (tone-mapped sRGB, with the sun disk) or .exr (linear radiance, W m^-2 sr^-1 nm^-1).")->required();
-  requireFiniteIn(cmd->add_option("--altitude-m", o->view.altitude_m, "Camera altitude above the ground, m.")
-                      ->required(),
-                  -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
-  requireFiniteIn(cmd->add_option("--sun-zenith-deg", o->view.sun_zenith_deg, "Sun zenith angle, degrees.")
-                      ->required(),
+  cmd->add_option("-o,--output", o->output_path,
+                  "Image: .png (tone-mapped sRGB, with the sun disk) or .exr (linear radiance, W m^-2 sr^-1 nm^-1).")
+      ->required();
+  requireFiniteIn(
+      cmd->add_option("--altitude-m", o->view.altitude_m, "Camera altitude above the ground, m.")->required(),
+      -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+  requireFiniteIn(cmd->add_option("--sun-zenith-deg", o->view.sun_zenith_deg, "Sun zenith angle, degrees.")->required(),
                   0.0, kMaxZenithAngle_deg);
   requireFiniteIn(cmd->add_option("--sun-azimuth-deg", o->view.sun_azimuth_deg, "Sun azimuth, degrees (default 0)."),
                   -kMaxAzimuth_deg, kMaxAzimuth_deg);
   cmd->add_option("--projection", o->projection, "fisheye (looking up), latlong (environment map) or perspective.")
-      ->check(CLI::IsMember({"fisheye", "latlong", "perspective"}))->capture_default_str();
+      ->check(CLI::IsMember({"fisheye", "latlong", "perspective"}))
+      ->capture_default_str();
   requireFiniteIn(cmd->add_option("--fov-deg", o->fov_deg,
                                   "Field of view, degrees (fisheye: full cone, default 180; perspective: "
                                   "horizontal, default 90)."),
@@ -149,7 +153,8 @@ Command addRenderCommand(CLI::App& app) {
                           ->capture_default_str(),
                       kMaxExposure);
   cmd->add_option("--tonemap", o->tone_map, "Tone mapping for PNG: none, reinhard or aces.")
-      ->check(CLI::IsMember({"none", "reinhard", "aces"}))->capture_default_str();
+      ->check(CLI::IsMember({"none", "reinhard", "aces"}))
+      ->capture_default_str();
   requireFiniteIn(cmd->add_option("--view-elevation-deg", o->view_elevation_deg,
                                   "Perspective: view elevation above the horizontal, degrees.")
                       ->capture_default_str(),

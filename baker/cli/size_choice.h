@@ -28,8 +28,8 @@ struct SweepPoint {
 const std::vector<SweepPoint>& earthSweep();
 
 struct SizeChoice {
-  double scale = 1.0;               // of every default size
-  double predicted_percent = 0.0;   // the sweep's worst of day and low sun, as validate reports
+  double scale = 1.0;                   // of every default size
+  double predicted_percent = 0.0;       // the sweep's worst of day and low sun, as validate reports
   double predicted_bake_seconds = 0.0;  // the sweep's, 2 threads
   TextureSizes sizes;
 };

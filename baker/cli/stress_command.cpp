@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
-#include "baker/stages/openmp_threads.h"
 #include "baker/cli/option_checks.h"
+#include "baker/stages/openmp_threads.h"
 #include "baker/stress/stress_matrix.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
@@ -47,8 +47,8 @@ void runStress(const StressOptions& o) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fmt::print("stress matrix ({}, {} cases, {} threads): every table texel and {} runtime lookups per case\n\n{}",
-             o.quick ? "quick" : "full", rows.size(), thread_count.threads(),
-             rows.empty() ? 0 : rows.front().lookups, stressTable(rows));
+             o.quick ? "quick" : "full", rows.size(), thread_count.threads(), rows.empty() ? 0 : rows.front().lookups,
+             stressTable(rows));
   int failed = 0;
   for (const StressRow& r : rows) failed += r.passed() ? 0 : 1;
   fmt::print("\n{} of {} cases passed in {:.1f} s\n", rows.size() - failed, rows.size(), seconds);
@@ -69,9 +69,10 @@ void runStress(const StressOptions& o) {
 
 Command addStressCommand(CLI::App& app) {
   auto o = std::make_shared<StressOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "stress", "Bake extreme atmospheres at reduced sizes and check that tables and lookups stay finite, "
-                "non-negative, bounded and continuous. Exit 1 if any invariant fails.");
+  CLI::App* cmd =
+      app.add_subcommand("stress",
+                         "Bake extreme atmospheres at reduced sizes and check that tables and lookups stay finite, "
+                         "non-negative, bounded and continuous. Exit 1 if any invariant fails.");
   cmd->add_flag("--quick", o->quick, "Smallest tables and a lower order cap (seconds, for CTest).");
   cmd->add_option("--json", o->json_path, "Also write the results as JSON.");
   cmd->add_option("--case", o->case_name, "Run only this case.");

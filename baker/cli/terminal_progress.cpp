@@ -43,16 +43,14 @@ void TerminalProgress::advance(size_t units) {
 void TerminalProgress::draw(size_t done) {
   const double fraction = std::min(1.0, static_cast<double>(done) / total_);
   const int filled = static_cast<int>(fraction * kBarWidth);
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - bake_start_).count();
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - bake_start_).count();
   fmt::print(stderr, "\r\033[K{:<36} [{}{}] {:3.0f}%  {:6.1f} s", stage_, std::string(filled, '#'),
              std::string(kBarWidth - filled, '.'), 100.0 * fraction, elapsed);
   std::fflush(stderr);
 }
 
 void TerminalProgress::endStage(double seconds) {
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - bake_start_).count();
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - bake_start_).count();
   if (interactive_) {
     fmt::print(stderr, "\r\033[K");
   }

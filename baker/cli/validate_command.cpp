@@ -4,10 +4,10 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
-#include "baker/stages/openmp_threads.h"
 #include "baker/cli/option_checks.h"
-#include "baker/cli/terminal_progress.h"
 #include "baker/cli/report_sidecar.h"
+#include "baker/cli/terminal_progress.h"
+#include "baker/stages/openmp_threads.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
@@ -64,7 +64,8 @@ void runValidate(const ValidateOptions& o) {
   requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
   std::string left_out;
-  const QuerySet queries = queriesAnsweredBy(sky, querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m), left_out);
+  const QuerySet queries =
+      queriesAnsweredBy(sky, querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m), left_out);
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
 
   TerminalProgress progress;
@@ -72,13 +73,15 @@ void runValidate(const ValidateOptions& o) {
   const MethodValues bake = evaluateBake(sky, queries);
   const ErrorReport report = compareWithReference(a, queries, reference, bake, settings.paths);
 
-  fmt::print("validate {} against the reference ({} paths per query), query set '{}': {} radiance and {} "
-             "irradiance queries ({} from the cache, {} computed in {:.1f} s)\n",
-             o.bake_path, settings.paths, queries.name, queries.radiance.size(), queries.irradiance.size(),
-             reference.cached, reference.computed, reference.seconds);
-  fmt::print("relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
-             "0 to 10, twilight: -10 to 0\n\n{}",
-             kSmallestComparedValue, report.table());
+  fmt::print(
+      "validate {} against the reference ({} paths per query), query set '{}': {} radiance and {} "
+      "irradiance queries ({} from the cache, {} computed in {:.1f} s)\n",
+      o.bake_path, settings.paths, queries.name, queries.radiance.size(), queries.irradiance.size(), reference.cached,
+      reference.computed, reference.seconds);
+  fmt::print(
+      "relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
+      "0 to 10, twilight: -10 to 0\n\n{}",
+      kSmallestComparedValue, report.table());
   if (!left_out.empty()) fmt::print("\n{}\n", left_out);
 
   nlohmann::ordered_json j = report.toJson();

@@ -46,8 +46,9 @@ RadianceAndTransmittance FlatClosedFormSingleScattering::received(const glm::dve
     path[c] = std::abs(s - v) < 1e-9 ? (1.0 / v) * std::exp(-b / v)
                                      : s * (std::exp(-b / s) - std::exp(-b / v)) / (b * (s - v));
   }
-  const SpectrumD radiance = SpectrumD(a_.sun_irradiance) * path *
-                             (rayleigh_column * rayleighPhase(nu) + mie_column * cornetteShanksPhase(a_.mie_phase_g, nu));
+  const SpectrumD radiance =
+      SpectrumD(a_.sun_irradiance) * path *
+      (rayleigh_column * rayleighPhase(nu) + mie_column * cornetteShanksPhase(a_.mie_phase_g, nu));
   return {Spectrum(radiance), Spectrum(transmittance)};
 }
 

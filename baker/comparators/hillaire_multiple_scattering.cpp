@@ -4,18 +4,18 @@
 
 #include <glm/geometric.hpp>
 
-#include "baker/stages/progress.h"
 #include "baker/stages/optical_depth_table.h"
+#include "baker/stages/progress.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/atmosphere_ray.h"
 
 namespace skybake {
 namespace {
 
-constexpr int kTableSize = 32;          // multiple-scattering table: 32 altitudes x 32 sun cosines
-constexpr int kDirectionsPerAxis = 8;   // 8 x 8 directions over the sphere per texel
-constexpr int kTableRaySteps = 20;      // steps along each of those rays
-constexpr int kViewSteps = 32;          // steps along a view ray
+constexpr int kTableSize = 32;         // multiple-scattering table: 32 altitudes x 32 sun cosines
+constexpr int kDirectionsPerAxis = 8;  // 8 x 8 directions over the sphere per texel
+constexpr int kTableRaySteps = 20;     // steps along each of those rays
+constexpr int kViewSteps = 32;         // steps along a view ray
 
 TextureSizes hillaireSizes() {
   TextureSizes s;
@@ -72,7 +72,8 @@ HillaireMultipleScattering::HillaireMultipleScattering(const AtmosphereParameter
           const bool ground = rayIntersectsSphere(r, cos_t, a_.bottom_radius_m);
           const double length = distanceToAtmosphereEnd(r, cos_t, a_.bottom_radius_m, a_.top_radius_m, ground);
           const SpectrumD depth = marchMidpoints(
-              media, x, dir, length, kTableRaySteps, [&](const glm::dvec3& p, double hp, const SpectrumD& t, double dt) {
+              media, x, dir, length, kTableRaySteps,
+              [&](const glm::dvec3& p, double hp, const SpectrumD& t, double dt) {
                 const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * media.rayleighDensity(hp) +
                                              SpectrumD(a_.mie_scattering) * media.mieDensity(hp);
                 // Light scattered once (isotropic phase 1 / 4 pi) toward x.
@@ -127,15 +128,16 @@ RadianceAndTransmittance HillaireMultipleScattering::received(const glm::dvec3& 
   const double nu = glm::dot(view, sun);
   const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a_.mie_phase_g, nu);
   SpectrumD radiance(0.0);
-  const SpectrumD depth = marchMidpoints(media, origin, view, length, kViewSteps, [&](const glm::dvec3& p, double h,
-                                                                                     const SpectrumD& t, double dt) {
-    const double rayleigh = media.rayleighDensity(h), mie = media.mieDensity(h);
-    const SpectrumD single = (SpectrumD(a_.rayleigh_scattering) * (rayleigh * p_r) + SpectrumD(a_.mie_scattering) * (mie * p_m)) *
-                             SpectrumD(transmittanceToSun(p, sun));
-    const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * rayleigh + SpectrumD(a_.mie_scattering) * mie;
-    const SpectrumD multiple = scattering * SpectrumD(multipleScattering(h, glm::dot(glm::normalize(p), sun)));
-    radiance += t * (single + multiple) * dt;
-  });
+  const SpectrumD depth = marchMidpoints(
+      media, origin, view, length, kViewSteps, [&](const glm::dvec3& p, double h, const SpectrumD& t, double dt) {
+        const double rayleigh = media.rayleighDensity(h), mie = media.mieDensity(h);
+        const SpectrumD single =
+            (SpectrumD(a_.rayleigh_scattering) * (rayleigh * p_r) + SpectrumD(a_.mie_scattering) * (mie * p_m)) *
+            SpectrumD(transmittanceToSun(p, sun));
+        const SpectrumD scattering = SpectrumD(a_.rayleigh_scattering) * rayleigh + SpectrumD(a_.mie_scattering) * mie;
+        const SpectrumD multiple = scattering * SpectrumD(multipleScattering(h, glm::dot(glm::normalize(p), sun)));
+        radiance += t * (single + multiple) * dt;
+      });
   radiance *= SpectrumD(a_.sun_irradiance);
   const SpectrumD transmittance = glm::exp(-depth);
   if (ground) radiance += transmittance * litGround(origin + view * length, sun) * SpectrumD(a_.sun_irradiance);

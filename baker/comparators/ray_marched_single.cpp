@@ -2,8 +2,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "runtime/atmosphere_ray.h"
 #include "runtime/atmosphere_media.h"
+#include "runtime/atmosphere_ray.h"
 
 namespace skybake {
 namespace {
@@ -27,7 +27,8 @@ RadianceAndTransmittance RayMarchedSingleScattering::received(const glm::dvec3& 
     shadowed = rayIntersectsSphere(r, mu_s, a_.bottom_radius_m);
     const double length = distanceToOuterSphere(r, mu_s, a_.top_radius_m), ds = length / kLightSteps;
     SpectrumD depth(0.0);
-    for (int j = 0; j < kLightSteps; ++j) depth += media.extinction(glm::length(p + sun * ((j + 0.5) * ds)) - a_.bottom_radius_m) * ds;
+    for (int j = 0; j < kLightSteps; ++j)
+      depth += media.extinction(glm::length(p + sun * ((j + 0.5) * ds)) - a_.bottom_radius_m) * ds;
     return depth;
   };
   const double ds = ray.length / kViewSteps;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "runtime/ray_quadrature.h"
 #include "data_formats/ray_sphere.h"
+#include "runtime/ray_quadrature.h"
 
 namespace skybake {
 namespace {
@@ -30,7 +30,7 @@ void appendKinkAltitudes(const DensityProfile& profile, std::vector<double>& alt
 }  // namespace
 
 SpectrumD integrateOpticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
-                               int segments_per_piece) {
+                                        int segments_per_piece) {
   const AtmosphereParameters& a = media.parameters();
   // Reused per thread: this runs millions of times in the reference solver.
   thread_local std::vector<double> kinks, breaks;
@@ -63,7 +63,7 @@ SpectrumD integrateOpticalDepthAlongRay(const AtmosphereMedia& media, double r, 
 
 SpectrumD integrateOpticalDepthToTop(const AtmosphereMedia& media, double r, double mu, int segments_per_piece) {
   return integrateOpticalDepthAlongRay(media, r, mu, distanceToOuterSphere(r, mu, media.parameters().top_radius_m),
-                              segments_per_piece);
+                                       segments_per_piece);
 }
 
 }  // namespace skybake

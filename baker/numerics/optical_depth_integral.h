@@ -15,10 +15,10 @@ namespace skybake {
 // 1.2 km), 6 near 1e-6, enough where the result feeds a Monte Carlo estimate.
 inline constexpr int kOpticalDepthSegmentsPerPiece = 16;
 SpectrumD integrateOpticalDepthAlongRay(const AtmosphereMedia& media, double r, double mu, double length_m,
-                               int segments_per_piece = kOpticalDepthSegmentsPerPiece);
+                                        int segments_per_piece = kOpticalDepthSegmentsPerPiece);
 
 // Optical depth from (r, mu) to the top boundary.
 SpectrumD integrateOpticalDepthToTop(const AtmosphereMedia& media, double r, double mu,
-                            int segments_per_piece = kOpticalDepthSegmentsPerPiece);
+                                     int segments_per_piece = kOpticalDepthSegmentsPerPiece);
 
 }  // namespace skybake

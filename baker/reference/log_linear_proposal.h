@@ -51,8 +51,7 @@ class LogLinearProposal {
     if (!usable()) return 0.0;
     const int bin = std::clamp(static_cast<int>(t / bin_length_), 0, Bins - 1);
     if (mass_[bin] <= 0.0) return 0.0;
-    const double in_bin = exponentialIn(bin) ? valueAt(bin, t / bin_length_ - bin) / meanOverBin(bin)
-                                             : 1.0;
+    const double in_bin = exponentialIn(bin) ? valueAt(bin, t / bin_length_ - bin) / meanOverBin(bin) : 1.0;
     return mass_[bin] / total_ * in_bin / bin_length_;
   }
 

@@ -7,8 +7,8 @@
 #include "baker/numerics/optical_depth_integral.h"
 #include "baker/reference/log_linear_proposal.h"
 #include "baker/reference/path_sampler.h"
-#include "runtime/atmosphere_ray.h"
 #include "runtime/atmosphere_media.h"
+#include "runtime/atmosphere_ray.h"
 #include "runtime/phase_functions.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
@@ -16,7 +16,6 @@
 
 namespace skybake {
 namespace {
-
 
 // Sub-intervals per smooth piece of the view ray for the deterministic single
 // scattering: 64 x 4 Gauss nodes. A vertical piece of 60 km has 0.8 Mie scale
@@ -75,8 +74,9 @@ class PathTracer {
                                 int segments) const {
     const double h = altitude(p);
     const double nu = clampCosine(glm::dot(view_dir, sun));
-    const SpectrumD source = SpectrumD(a_.rayleigh_scattering) * (media_.rayleighDensity(h) * rayleighPhase(nu)) +
-                             SpectrumD(a_.mie_scattering) * (media_.mieDensity(h) * cornetteShanksPhase(a_.mie_phase_g, nu));
+    const SpectrumD source =
+        SpectrumD(a_.rayleigh_scattering) * (media_.rayleighDensity(h) * rayleighPhase(nu)) +
+        SpectrumD(a_.mie_scattering) * (media_.mieDensity(h) * cornetteShanksPhase(a_.mie_phase_g, nu));
     return source * SpectrumD(a_.sun_irradiance) * sunTransmittance(p, sun, segments);
   }
 
@@ -184,7 +184,9 @@ class PathTracer {
       v.valid = true;
       v.ground = true;
       v.position = ray.origin + ray.dir * ray.length;
-      v.weight = glm::exp(-integrateOpticalDepthAlongRay(media_, ray.r, ray.mu, ray.length, kPathOpticalDepthSegments)) / p_ground;
+      v.weight =
+          glm::exp(-integrateOpticalDepthAlongRay(media_, ray.r, ray.mu, ray.length, kPathOpticalDepthSegments)) /
+          p_ground;
       return v;
     }
     // In the air: uniformly or by the proposal, the rest of u choosing where.
@@ -236,7 +238,8 @@ class PathTracer {
   // ray (start, dir) and beyond, each connected to the sun. With
   // `skip_first_sun`, the first event's own sun connection is left out (the
   // caller has it already, deterministically).
-  SpectrumD tracePath(AtmosphereRay ray, const glm::dvec3& sun, bool ground_allowed, bool skip_first_sun, PathSampler& rng) const {
+  SpectrumD tracePath(AtmosphereRay ray, const glm::dvec3& sun, bool ground_allowed, bool skip_first_sun,
+                      PathSampler& rng) const {
     SpectrumD throughput(1.0);
     double first_event_peak = 0.0;
     SpectrumD total(0.0);
@@ -246,13 +249,15 @@ class PathTracer {
       throughput *= v.weight;
       glm::dvec3 next_dir;
       if (v.ground) {
-        if (depth > 0 || !skip_first_sun) total += throughput * groundSunRadiance(v.position, sun, kPathOpticalDepthSegments);
+        if (depth > 0 || !skip_first_sun)
+          total += throughput * groundSunRadiance(v.position, sun, kPathOpticalDepthSegments);
         const glm::dvec3 normal = glm::normalize(v.position);
         const double u_cos = rng.next(), u_phi = rng.next();
         next_dir = directionAround(normal, std::sqrt(u_cos), 2.0 * kPi * u_phi);  // cosine-weighted
-        throughput *= SpectrumD(a_.ground_albedo);  // (albedo/pi) cos / (cos/pi)
+        throughput *= SpectrumD(a_.ground_albedo);                                // (albedo/pi) cos / (cos/pi)
       } else {
-        if (depth > 0 || !skip_first_sun) total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
+        if (depth > 0 || !skip_first_sun)
+          total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
         SpectrumD phase_weight;
         const double u_cos = rng.next(), u_phi = rng.next();
         next_dir = sampleScatteringDirection(v.position, ray.dir, u_cos, u_phi, phase_weight);
@@ -272,8 +277,8 @@ class PathTracer {
         if (!(survive > 0.0) || rng.nextIndependent() >= survive) break;
         throughput /= survive;
       }
-      ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, v.position + (v.ground ? glm::normalize(v.position) * 1e-3 : glm::dvec3(0.0)),
-                     next_dir, 0.0);
+      ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m,
+                          v.position + (v.ground ? glm::normalize(v.position) * 1e-3 : glm::dvec3(0.0)), next_dir, 0.0);
       ground_allowed = true;
     }
     return total;
@@ -314,19 +319,20 @@ ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere) : a_(at
 
 ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed) const {
   const PathTracer tracer(a_);
-  const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
+  const AtmosphereRay ray =
+      atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
   const bool ground_end = ray.ends_on_ground && !(query.distance_m > 0.0);
   const SpectrumD single = tracer.singleScattering(ray, query.sun, ground_end);
-  ReferenceEstimate e = estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
-    return tracer.tracePath(ray, query.sun, ground_end, true, sampler);
-  });
+  ReferenceEstimate e = estimateOverReplicates(
+      paths, seed, [&](PathSampler& sampler) { return tracer.tracePath(ray, query.sun, ground_end, true, sampler); });
   e.value += single;
   return e;
 }
 
 SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
-  const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
+  const AtmosphereRay ray =
+      atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return SpectrumD(1.0);
   return glm::exp(-integrateOpticalDepthAlongRay(AtmosphereMedia(a_), ray.r, ray.mu, ray.length));
 }

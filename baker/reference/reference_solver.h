@@ -28,10 +28,10 @@ struct ReferenceEstimate {
 };
 
 struct ReferenceRay {
-  glm::dvec3 camera;   // metres from the planet centre
-  glm::dvec3 view;     // unit
-  glm::dvec3 sun;      // unit, toward the sun
-  double distance_m;   // > 0: up to the point at this distance; else to the ray's end
+  glm::dvec3 camera;  // metres from the planet centre
+  glm::dvec3 view;    // unit
+  glm::dvec3 sun;     // unit, toward the sun
+  double distance_m;  // > 0: up to the point at this distance; else to the ray's end
 };
 
 class ReferenceSolver {

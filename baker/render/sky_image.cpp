@@ -11,7 +11,6 @@
 namespace skybake {
 namespace {
 
-
 glm::dvec3 fromZenithAzimuth(double zenith, double azimuth) {
   return {std::sin(zenith) * std::cos(azimuth), std::sin(zenith) * std::sin(azimuth), std::cos(zenith)};
 }
@@ -42,7 +41,8 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
       const double rho = std::sqrt(px * px + py * py);
       if (rho > 1.0) return false;
       // The sun's azimuth toward the top of the image.
-      dir = fromZenithAzimuth(rho * radiansFromDegrees(v.fov_deg) * 0.5, radiansFromDegrees(v.sun_azimuth_deg) + std::atan2(px, py));
+      dir = fromZenithAzimuth(rho * radiansFromDegrees(v.fov_deg) * 0.5,
+                              radiansFromDegrees(v.sun_azimuth_deg) + std::atan2(px, py));
       return true;
     }
     case Projection::Perspective: {
@@ -65,9 +65,8 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
 // ground; the air alone where the bake left out ground irradiance), plus the
 // sun disk seen through the air.
 Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun) {
-  const RadianceAndTransmittance received = sky.outputs().ground_irradiance
-                                                ? sky.receivedRadiance(camera, dir, sun)
-                                                : sky.skyRadiance(camera, dir, sun);
+  const RadianceAndTransmittance received =
+      sky.outputs().ground_irradiance ? sky.receivedRadiance(camera, dir, sun) : sky.skyRadiance(camera, dir, sun);
   Spectrum radiance = received.radiance;
   const AtmosphereRay ray =
       atmosphereRay(sky.atmosphere().bottom_radius_m, sky.atmosphere().top_radius_m, camera, dir, 0.0);

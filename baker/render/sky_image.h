@@ -20,9 +20,9 @@ struct SkyView {
   double sun_zenith_deg = 30.0;
   double sun_azimuth_deg = 0.0;
   Projection projection = Projection::Fisheye;
-  double fov_deg = 180.0;  // fisheye: full cone angle; perspective: horizontal field of view
-  double view_azimuth_deg = 0.0;    // perspective: where the camera looks
-  double view_elevation_deg = 10.0; // perspective: above the horizontal
+  double fov_deg = 180.0;            // fisheye: full cone angle; perspective: horizontal field of view
+  double view_azimuth_deg = 0.0;     // perspective: where the camera looks
+  double view_elevation_deg = 10.0;  // perspective: above the horizontal
   int width = 512;
   int height = 512;
 };

@@ -2,10 +2,10 @@
 
 #include <vector>
 
+#include "baker/stages/multiple_scattering_table.h"
+#include "baker/stages/row_sun_texels.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/ray_quadrature.h"
-#include "baker/stages/row_sun_texels.h"
-#include "baker/stages/multiple_scattering_table.h"
 
 namespace skybake {
 namespace {
@@ -27,15 +27,13 @@ struct RayNode {
 };
 
 void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, const TableSampler& density_sampler,
-                     const MultipleScatteringPhase& shape, const ScatteringTexelConfig& c, std::vector<RayNode>& nodes) {
+                     const MultipleScatteringPhase& shape, const ScatteringTexelConfig& c,
+                     std::vector<RayNode>& nodes) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const AtmosphereMedia media(a);
   const TableSampler& sampler = ctx.sampler;
-  const double length =
-      distanceToAtmosphereEnd(c.r, c.mu, a.bottom_radius_m, a.top_radius_m, c.ray_intersects_ground);
-  auto radiusAt = [&](double t) {
-    return std::clamp(radiusAlongRay(c.r, c.mu, t), a.bottom_radius_m, a.top_radius_m);
-  };
+  const double length = distanceToAtmosphereEnd(c.r, c.mu, a.bottom_radius_m, a.top_radius_m, c.ray_intersects_ground);
+  auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(c.r, c.mu, t), a.bottom_radius_m, a.top_radius_m); };
   nodes.clear();
   forEachOpticallyThinNode(
       0.0, length, kMultipleScatteringSegments, -c.r * c.mu,
@@ -48,8 +46,7 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
         const ScatteringSizes& s = density_sampler.scatteringSizes();
         const double u_r = scatteringCoordR(d, s.r, d.distanceToHorizon(r_t));
         nodes.push_back({t, w, r_t,
-                         glm::exp(-sampler.opticalDepthAlongRay(optical_depth, c.r, c.mu, t,
-                                                                c.ray_intersects_ground)),
+                         glm::exp(-sampler.opticalDepthAlongRay(optical_depth, c.r, c.mu, t, c.ray_intersects_ground)),
                          shape.peakWeightAt(r_t - a.bottom_radius_m), axisLerpFromTextureCoord(u_r, s.r),
                          axisLerpFromTextureCoord(densityCoordMu(mu_t, s.mu), s.mu)});
       });
@@ -104,7 +101,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
     std::vector<RayNode> nodes;
     std::vector<std::vector<Spectrum>> planes;  // one per node
     RowSunTexels suns;
-    std::vector<AxisLerp> density_nu;  // per sun: nu is constant along a straight ray, so is its interpolation
+    std::vector<AxisLerp> density_nu;   // per sun: nu is constant along a straight ray, so is its interpolation
     std::vector<double> mu_s_position;  // per sun: its coordinate on the density table at the current node
     // Per sun, the density integrated along the ray times the broad and the
     // peaked part of the shape at each node: the shape at the node is

@@ -23,8 +23,8 @@ struct OrderRadiance {
   // single Rayleigh and Mie values by their phase functions at nu, later
   // orders multiply the table's value (`rayleigh_or_multiple`; `mie` unused)
   // by the shape with the lookup altitude's peak weight.
-  Spectrum withPhase(const Spectrum& rayleigh_or_multiple, const Spectrum& mie, double nu,
-                     const SpectrumD& peak_weight, double mie_g) const;
+  Spectrum withPhase(const Spectrum& rayleigh_or_multiple, const Spectrum& mie, double nu, const SpectrumD& peak_weight,
+                     double mie_g) const;
 };
 
 // The radiance of one order at a fixed (r, mu, mu_s), for any nu: the tables
@@ -44,7 +44,7 @@ class OrderRadianceAlongNu {
   const TableSampler& sampler_;
   double mie_g_;
   Blend blend_ = Blend::Linear;
-  SpectrumD peak_weight_{0.0};             // of the multiple-scattering shape, order >= 2
+  SpectrumD peak_weight_{0.0};                  // of the multiple-scattering shape, order >= 2
   std::vector<Spectrum> rayleigh_or_multiple_;  // per nu slice
   std::vector<Spectrum> mie_;                   // per nu slice, order 1
 };

@@ -38,8 +38,7 @@ std::vector<IncidentZenithNode> zenithNodes(const StageContext& ctx, const Textu
       n.hits_ground = rayIntersectsSphere(r, n.cos_theta, a.bottom_radius_m);
       if (n.hits_ground) {
         const double d = distanceToInnerSphere(r, n.cos_theta, a.bottom_radius_m);
-        n.ground_transmittance =
-            glm::exp(-ctx.sampler.opticalDepthAlongRay(optical_depth, r, n.cos_theta, d, true));
+        n.ground_transmittance = glm::exp(-ctx.sampler.opticalDepthAlongRay(optical_depth, r, n.cos_theta, d, true));
         const double horizontal = n.sin_theta * d, vertical = r + n.cos_theta * d;
         const double length = std::sqrt(horizontal * horizontal + vertical * vertical);
         n.ground_up_horizontal = horizontal / length;

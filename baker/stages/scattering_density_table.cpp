@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "baker/stages/scattering_density_kernel.h"
-#include "runtime/atmosphere_media.h"
 #include "baker/stages/scattering_density_table.h"
+#include "runtime/atmosphere_media.h"
 
 namespace skybake {
 namespace {
@@ -60,8 +60,8 @@ void incidentRingModes(const StageContext& ctx, const DensityKernelAltitude& ker
       if (node.hits_ground) {
         // Light of order n - 1 reflected by the Lambertian ground, seen
         // through the air between the ground point and x.
-        const double ground_mu_s = clampCosine(node.ground_up_horizontal * cosines.cos_phi[j] * sun_x +
-                                               node.ground_up_vertical * mu_s);
+        const double ground_mu_s =
+            clampCosine(node.ground_up_horizontal * cosines.cos_phi[j] * sun_x + node.ground_up_vertical * mu_s);
         radiance += node.ground_transmittance * ground_brdf *
                     ctx.sampler.irradiance(ground_irradiance, a.bottom_radius_m, ground_mu_s);
       }

@@ -18,7 +18,6 @@ namespace skybake {
 // texels order by order. Multiple scattering and density are divided by
 // `stored_shape`, as in the file.
 void narrowTablesToScene(const StageContext& scene, const TableSampler& whole, const Texture2D& optical_depth,
-                         const MultipleScatteringPhase& stored_shape, Texture4D scene_density,
-                         BakeTables& tables);
+                         const MultipleScatteringPhase& stored_shape, Texture4D scene_density, BakeTables& tables);
 
 }  // namespace skybake

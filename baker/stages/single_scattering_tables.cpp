@@ -2,12 +2,12 @@
 
 #include <vector>
 
+#include "baker/numerics/vector_exp.h"
+#include "baker/stages/row_sun_texels.h"
+#include "baker/stages/single_scattering_tables.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/ray_quadrature.h"
-#include "baker/stages/row_sun_texels.h"
-#include "baker/numerics/vector_exp.h"
-#include "baker/stages/single_scattering_tables.h"
 
 namespace skybake {
 namespace {
@@ -72,8 +72,8 @@ struct SunBatch {
 // the batch: per node, first where each sun falls on the transmittance
 // table and how much of its disk is up (a loop without table reads, which
 // vectorizes), then the reads and the sums.
-void sumOverNodes(const StageContext& ctx, const Texture2D& optical_depth, const std::vector<ViewNode>& nodes,
-                  double r, SunBatch& suns) {
+void sumOverNodes(const StageContext& ctx, const Texture2D& optical_depth, const std::vector<ViewNode>& nodes, double r,
+                  SunBatch& suns) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const size_t count = suns.mu_s.size();
   suns.rayleigh.assign(count, Spectrum(0.0f));
@@ -126,17 +126,16 @@ void collectPiecewiseNodes(const StageContext& ctx, const Texture2D& optical_dep
 
 }  // namespace
 
-SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth,
-                                         double r, double mu, double mu_s, double nu,
-                                         bool ray_intersects_ground) {
+SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth, double r, double mu,
+                                         double mu_s, double nu, bool ray_intersects_ground) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const double length = distanceToAtmosphereEnd(r, mu, a.bottom_radius_m, a.top_radius_m, ray_intersects_ground);
-  return integrateSingleScattering(ctx.sampler, optical_depth, a, {r, mu, mu_s, nu, ray_intersects_ground}, 0.0,
-                                   length, kSingleScatteringSegments);
+  return integrateSingleScattering(ctx.sampler, optical_depth, a, {r, mu, mu_s, nu, ray_intersects_ground}, 0.0, length,
+                                   kSingleScatteringSegments);
 }
 
-void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& optical_depth,
-                                   Texture4D& rayleigh, Texture4D& mie) {
+void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& optical_depth, Texture4D& rayleigh,
+                                   Texture4D& mie) {
   const ScatteringSizes& s = ctx.sampler.scatteringSizes();
   rayleigh = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   mie = Texture4D(s.r, s.mu, s.mu_s, s.nu);

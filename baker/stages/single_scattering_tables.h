@@ -10,10 +10,9 @@ namespace skybake {
 // Single scattering of sunlight, one ray integral per texel
 // (integrateSingleScattering with the bake's rule). Rayleigh and Mie are kept
 // apart, each without its phase function.
-SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth,
-                                         double r, double mu, double mu_s, double nu,
-                                         bool ray_intersects_ground);
-void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& optical_depth,
-                                   Texture4D& rayleigh, Texture4D& mie);
+SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth, double r, double mu,
+                                         double mu_s, double nu, bool ray_intersects_ground);
+void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& optical_depth, Texture4D& rayleigh,
+                                   Texture4D& mie);
 
 }  // namespace skybake

@@ -264,8 +264,8 @@ EnergyBudget computeEnergyBudget(const EnergyBudgetLookups& sky, const EnergyBud
     return LookupSum{SpectrumD(sky.ground_irradiance(ground_point, sunDirection(mu_s)).sky), 1};
   };
   const std::vector<double> ramp_edges{-ramp, 0.0, ramp};
-  const LookupSum sun_part = integrateOnPanels(
-      sun_rule, panelEdges(-1.0, 1.0, ramp_edges, sky.ground_irradiance_kinks_mu_s), sunIrradiance);
+  const LookupSum sun_part =
+      integrateOnPanels(sun_rule, panelEdges(-1.0, 1.0, ramp_edges, sky.ground_irradiance_kinks_mu_s), sunIrradiance);
   const LookupSum sky_part = integrateOnPanels(
       sun_rule, panelEdges(mu_s_min, 1.0, ramp_edges, sky.ground_irradiance_kinks_mu_s), skyIrradiance);
   const BelowDomain sky_night = integralBelowDomain(skyIrradiance(mu_s_min).value,

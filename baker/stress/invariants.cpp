@@ -109,8 +109,8 @@ void checkContinuous(InvariantResult& result, const Spectrum& before, const Spec
     const double change = relativeChange(a, b, c);
     const bool slope = change <= kContinuitySlopeRatio * relativeChange(before, a, c);
     if (!(change <= kContinuityMaxRelativeChange || slope)) {
-      result.fail(excessOf(change, change), fmt::format("{} ch{}: {} -> {} ({:.1f} %)", where, c, a[c], b[c],
-                                                        100.0 * change));
+      result.fail(excessOf(change, change),
+                  fmt::format("{} ch{}: {} -> {} ({:.1f} %)", where, c, a[c], b[c], 100.0 * change));
       return;
     }
   }

@@ -176,8 +176,8 @@ std::vector<StressCase> stressCases(bool quick) {
     // the tables: the runtime path the other cases do not take.
     BakeConfig c = earth;
     c.scene_ranges.views_below_horizon = false;
-    c.sizes.iteration = std::array<int, 4>{c.sizes.scattering_r, c.sizes.scattering_mu, c.sizes.scattering_mu_s,
-                                           c.sizes.scattering_nu};
+    c.sizes.iteration =
+        std::array<int, 4>{c.sizes.scattering_r, c.sizes.scattering_mu, c.sizes.scattering_mu_s, c.sizes.scattering_nu};
     add("sky_views_only", "Earth without views below the horizon (scene.views_below_horizon = false)", c);
   }
   return cases;

@@ -108,8 +108,8 @@ StressRow runStressCase(const StressCase& stress_case, int threads) {
   row.orders_used = bake.file.orders_computed;
   row.automatic_orders = bake.report.orders_decision.automatic;
   row.converged = bake.report.orders_decision.converged;
-  tableRange({&bake.file.tables.single_rayleigh, &bake.file.tables.multiple_scattering}, channels,
-             row.scattering_min, row.scattering_max);
+  tableRange({&bake.file.tables.single_rayleigh, &bake.file.tables.multiple_scattering}, channels, row.scattering_min,
+             row.scattering_max);
 
   const BakeTables& t = bake.file.tables;
   // Optical depth >= 0 is transmittance <= 1; finite is transmittance > 0 or
@@ -122,8 +122,8 @@ StressRow runStressCase(const StressCase& stress_case, int threads) {
   row.invariants.push_back(
       checkFiniteNonNegativeTexels("multiple_scattering table finite >= 0", t.multiple_scattering.texels, channels));
   row.invariants.push_back(checkFiniteNonNegativeTexels("irradiance table finite >= 0", t.irradiance.texels, channels));
-  row.invariants.push_back(checkFiniteNonNegativeTexels("multiple_density table finite >= 0",
-                                                        t.multiple_density.texels, channels));
+  row.invariants.push_back(
+      checkFiniteNonNegativeTexels("multiple_density table finite >= 0", t.multiple_density.texels, channels));
   row.invariants.push_back(checkOrdersDecrease(bake.report.orders, channels));
 
   const Sky sky(std::move(bake.file));
@@ -149,7 +149,8 @@ std::string stressTable(const std::vector<StressRow>& rows) {
                                  "scattering min..max", "lookup min..max", "bake s", "check s", "result");
   for (const StressRow& row : rows) {
     if (!row.refused.empty()) {
-      text += fmt::format("{:<16} refused: {} -> {}\n", row.name, row.refused, row.passed() ? "PASS" : "FAIL (unclear message)");
+      text += fmt::format("{:<16} refused: {} -> {}\n", row.name, row.refused,
+                          row.passed() ? "PASS" : "FAIL (unclear message)");
       continue;
     }
     int failed = 0, known = 0;
@@ -236,8 +237,10 @@ nlohmann::ordered_json stressJson(const std::vector<StressRow>& rows) {
       i["failed"] = r.failed;
       if (!r.passed()) {
         // JSON has no infinity: a NaN/infinite offender is written as null.
-        if (std::isfinite(r.worst_excess)) i["worst_excess"] = r.worst_excess;
-        else i["worst_excess"] = nullptr;
+        if (std::isfinite(r.worst_excess))
+          i["worst_excess"] = r.worst_excess;
+        else
+          i["worst_excess"] = nullptr;
         i["worst"] = r.worst;
       }
       invariants.push_back(i);

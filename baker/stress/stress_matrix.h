@@ -33,11 +33,11 @@ struct StressRow {
   bool converged = false;  // automatic orders only
   // Over the single Rayleigh and multiple-scattering tables, W m^-2 nm^-1.
   double scattering_min = 0.0, scattering_max = 0.0;
-  double lookup_min = 0.0, lookup_max = 0.0;          // radiance lookups, W m^-2 sr^-1 nm^-1
+  double lookup_min = 0.0, lookup_max = 0.0;  // radiance lookups, W m^-2 sr^-1 nm^-1
   long long lookups = 0;
   std::vector<InvariantResult> invariants;
   std::optional<StressEnergyBudget> energy_budget;  // cases with check_energy_budget only
-  std::vector<std::string> known_failures;  // from the case: failures that do not fail the run
+  std::vector<std::string> known_failures;          // from the case: failures that do not fail the run
   std::string known_failure_reason;
   double bake_seconds = 0.0;
   double check_seconds = 0.0;

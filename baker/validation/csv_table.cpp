@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <string_view>
 #include <fstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -45,8 +45,7 @@ bool readLine(std::istream& in, std::string& line, const std::string& path, int 
   in.getline(line.data(), static_cast<std::streamsize>(line.size()));
   const std::streamsize read = in.gcount();
   if (in.fail() && !in.eof() && read == static_cast<std::streamsize>(kMaxLineBytes)) {
-    throwBadInput(fmt::format("{}:{}: line longer than {} bytes: not a query CSV", path, line_number,
-                              kMaxLineBytes));
+    throwBadInput(fmt::format("{}:{}: line longer than {} bytes: not a query CSV", path, line_number, kMaxLineBytes));
   }
   if (read == 0 && (in.eof() || in.fail())) return false;
   // gcount counts the newline getline consumed but did not store.
@@ -80,8 +79,8 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
     }
     if (cells.size() != table.columns_.size()) {
       throwBadInput(fmt::format("{}:{}:{}: {} cells, the header (line {}) has {} columns", table.path_, line_number,
-                                std::min(cells.size(), table.columns_.size()) + 1, cells.size(),
-                                table.header_line_, table.columns_.size()));
+                                std::min(cells.size(), table.columns_.size()) + 1, cells.size(), table.header_line_,
+                                table.columns_.size()));
     }
     std::vector<double> values;
     for (size_t c = 0; c < cells.size(); ++c) {
@@ -90,8 +89,8 @@ CsvTable CsvTable::read(const std::filesystem::path& path) {
       const char* end = begin + cells[c].size();
       const auto [ptr, ec] = std::from_chars(begin, end, v);
       if (cells[c].empty() || ec != std::errc() || ptr != end || !std::isfinite(v)) {
-        throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", table.path_, line_number,
-                                  c + 1, table.columns_[c], cells[c]));
+        throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", table.path_, line_number, c + 1,
+                                  table.columns_[c], cells[c]));
       }
       values.push_back(v);
     }

@@ -51,8 +51,8 @@ ReferenceCache::ReferenceCache(const std::filesystem::path& directory, const Atm
   // The lowest tabulated sun is the tables' domain, not physics: bakes that
   // differ only in it share their reference.
   physics_only.atmosphere.sun_max_zenith_deg = AtmosphereParameters{}.sun_max_zenith_deg;
-  const uint64_t key = stableHash(fmt::format("solver {}\npaths {}\n{}", kReferenceSolverVersion, paths,
-                                              configToToml(physics_only)));
+  const uint64_t key =
+      stableHash(fmt::format("solver {}\npaths {}\n{}", kReferenceSolverVersion, paths, configToToml(physics_only)));
   file_ = directory / fmt::format("reference-{:016x}.json", key);
   std::ifstream in(file_);
   if (!in) return;

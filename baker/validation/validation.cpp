@@ -12,7 +12,6 @@
 
 #include "baker/reference/reference_solver.h"
 #include "baker/validation/local_frame.h"
-#include "runtime/atmosphere_ray.h"
 #include "data_formats/error.h"
 #include "runtime/atmosphere_ray.h"
 
@@ -38,7 +37,8 @@ RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
 }  // namespace
 
 QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
-  return {cameraAtAltitude(a.bottom_radius_m, q.altitude_m), directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
+  return {cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
+          directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
           directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)};
 }
 
@@ -97,9 +97,9 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
 #pragma omp parallel for schedule(dynamic)
   for (size_t k = 0; k < missing_irradiance.size(); ++k) {
     const IrradianceQuery& q = queries.irradiance[missing_irradiance[k]];
-    const ReferenceEstimate e =
-        solver.skyIrradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m}, directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
-                             settings.paths, stableHash(irradianceKey(q)));
+    const ReferenceEstimate e = solver.skyIrradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m},
+                                                     directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
+                                                     settings.paths, stableHash(irradianceKey(q)));
     out.irradiance[missing_irradiance[k]] = {e.value, e.standard_error, SpectrumD(1.0)};
     progress.advance(1);
   }
@@ -128,7 +128,8 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
                         std::max<size_t>(queries.radiance.size(), 1);
   for (const IrradianceQuery& q : queries.irradiance) {
     out.irradiance.push_back(sky.irradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m}, {0.0, 0.0, 1.0},
-                                            directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)).sky);
+                                            directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0))
+                                 .sky);
   }
   return out;
 }
@@ -169,10 +170,11 @@ QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string&
   for (size_t i = 0; i < parts.size(); ++i) left_out += (i > 0 ? ", " : "") + parts[i];
   if (!left_out.empty()) left_out = "not validated, left out of the bake by its scene.outputs: " + left_out;
   if (outside > 0) {
-    left_out += fmt::format("{}not validated, outside the bake's scene ranges (altitude {:g} to {:g} m, sun zenith "
-                            "{:g} to {:g} deg; for a point, both ends): {} radiance queries",
-                            left_out.empty() ? "" : "\n", ranges.altitude_min_m, ranges.altitude_max_m,
-                            ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg, outside);
+    left_out += fmt::format(
+        "{}not validated, outside the bake's scene ranges (altitude {:g} to {:g} m, sun zenith "
+        "{:g} to {:g} deg; for a point, both ends): {} radiance queries",
+        left_out.empty() ? "" : "\n", ranges.altitude_min_m, ranges.altitude_max_m, ranges.sun_zenith_min_deg,
+        ranges.sun_zenith_max_deg, outside);
   }
   return out;
 }
@@ -240,8 +242,8 @@ class StatsBuilder {
 
 }  // namespace
 
-ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& queries, const ReferenceValues& reference,
-                                 const MethodValues& method, int reference_paths) {
+ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& queries,
+                                 const ReferenceValues& reference, const MethodValues& method, int reference_paths) {
   ErrorReport report;
   report.query_set = queries.name;
   report.wavelengths_nm = a.wavelengths_nm;
@@ -252,7 +254,9 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
     const RadianceQuery& q = queries.radiance[i];
     const RayKind kind = rayKind(a, q);
     if (kind == RayKind::Misses) continue;
-    const char* quantity = kind == RayKind::Sky ? "sky_radiance" : kind == RayKind::Ground ? "ground_radiance" : "radiance_to_point";
+    const char* quantity = kind == RayKind::Sky      ? "sky_radiance"
+                           : kind == RayKind::Ground ? "ground_radiance"
+                                                     : "radiance_to_point";
     const char* band = sunBandName(sunBand(q.sun_zenith_deg));
     const CachedReference& r = reference.radiance[i];
     for (int c = 0; c < channels; ++c) {
@@ -290,8 +294,12 @@ nlohmann::ordered_json ErrorReport::toJson() const {
   for (const ErrorRow& row : rows) {
     nlohmann::ordered_json channels = nlohmann::ordered_json::array();
     for (const ErrorStats& s : row.channels) {
-      channels.push_back({{"count", s.count}, {"skipped", s.skipped}, {"rms", s.rms}, {"p95", s.p95},
-                          {"max", s.max}, {"reference_standard_error", s.reference_standard_error}});
+      channels.push_back({{"count", s.count},
+                          {"skipped", s.skipped},
+                          {"rms", s.rms},
+                          {"p95", s.p95},
+                          {"max", s.max},
+                          {"reference_standard_error", s.reference_standard_error}});
     }
     rows_json.push_back({{"quantity", row.quantity}, {"band", row.band}, {"channels", channels}});
   }

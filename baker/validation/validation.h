@@ -71,8 +71,8 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries);
 QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string& left_out);
 
 struct ErrorStats {
-  int count = 0;    // values compared (per channel)
-  int skipped = 0;  // reference below kSmallestComparedValue
+  int count = 0;                           // values compared (per channel)
+  int skipped = 0;                         // reference below kSmallestComparedValue
   double rms = 0.0, p95 = 0.0, max = 0.0;  // relative errors
   double reference_standard_error = 0.0;   // RMS of the reference's own relative standard error
 };

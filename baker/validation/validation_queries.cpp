@@ -42,7 +42,8 @@ QuerySet makeSet(const std::string& name, const std::vector<double>& altitudes, 
 }  // namespace
 
 QuerySet standardQuerySet(double thickness) {
-  return makeSet("standard", {0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m},
+  return makeSet("standard",
+                 {0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m},
                  {0.0, 30.0, 60.0, 75.0, 85.0, 88.0, 90.0, 92.0, 95.0, 100.0},
                  {0.0, 30.0, 60.0, 75.0, 84.0, 88.0, 89.5, 90.5, 92.0, 96.0, 120.0, 170.0},
                  {100.0, 106.0, 110.0, 120.0, 150.0, 180.0}, {0.0, 90.0, 180.0}, thickness, true);
@@ -70,9 +71,8 @@ QuerySet querySetFromCsv(const std::filesystem::path& path) {
   QuerySet set;
   set.name = path.filename().string();
   for (size_t row = 0; row < q.rowCount(); ++row) {
-    set.radiance.push_back({q.value(row, c.altitude_m), q.value(row, c.sun_zenith_deg),
-                            q.value(row, c.view_zenith_deg), q.value(row, c.view_azimuth_deg),
-                            c.distance_m ? q.value(row, *c.distance_m) : 0.0});
+    set.radiance.push_back({q.value(row, c.altitude_m), q.value(row, c.sun_zenith_deg), q.value(row, c.view_zenith_deg),
+                            q.value(row, c.view_azimuth_deg), c.distance_m ? q.value(row, *c.distance_m) : 0.0});
   }
   return set;
 }
@@ -92,10 +92,14 @@ SunBand sunBand(double sun_zenith_deg) {
 
 const char* sunBandName(SunBand band) {
   switch (band) {
-    case SunBand::Day: return "day";
-    case SunBand::LowSun: return "low_sun";
-    case SunBand::Twilight: return "twilight";
-    case SunBand::Night: return "night";
+    case SunBand::Day:
+      return "day";
+    case SunBand::LowSun:
+      return "low_sun";
+    case SunBand::Twilight:
+      return "twilight";
+    case SunBand::Night:
+      return "night";
   }
   return "?";
 }

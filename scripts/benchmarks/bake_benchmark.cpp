@@ -16,9 +16,8 @@ void BM_DefaultEarthBake(benchmark::State& state) {
     benchmark::DoNotOptimize(bake.file.tables.multiple_scattering.texels.data());
     last = bake.report;
   }
-  for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering",
-                            "density_kernel", "scattering_density", "indirect_irradiance",
-                            "multiple_scattering"}) {
+  for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering", "density_kernel",
+                            "scattering_density", "indirect_irradiance", "multiple_scattering"}) {
     state.counters[std::string(stage) + "_s"] = last.stageSeconds(stage);
   }
   state.counters["threads"] = last.threads;

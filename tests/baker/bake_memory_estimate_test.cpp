@@ -46,7 +46,8 @@ TEST(BakeMemoryEstimate, CountsEveryTableAliveAtThePeak) {
 TEST(BakeMemoryEstimate, SaturatesInsteadOfWrappingRound) {
   BakeConfig config = test::smallEarth(3);
   const int huge = std::numeric_limits<int>::max();
-  config.sizes.scattering_r = config.sizes.scattering_mu = config.sizes.scattering_mu_s = config.sizes.scattering_nu = huge;
+  config.sizes.scattering_r = config.sizes.scattering_mu = config.sizes.scattering_mu_s = config.sizes.scattering_nu =
+      huge;
   const BakeMemoryEstimate e = estimateBakeMemory(config);
   EXPECT_EQ(e.table_4d_bytes, std::numeric_limits<uint64_t>::max());
   EXPECT_EQ(e.peak_bytes, std::numeric_limits<uint64_t>::max());

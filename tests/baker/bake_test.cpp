@@ -82,8 +82,8 @@ TEST(Bake, TablesAreFiniteAndNonNegative) {
   SilentProgress silent;
   const BakeOutput bake = bakeAtmosphere(test::smallEarth(3), 0, silent);
   const BakeTables& t = bake.file.tables;
-  for (const auto* texels : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
-                             &t.multiple_density.texels}) {
+  for (const auto* texels : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels,
+                             &t.single_mie.texels, &t.multiple_scattering.texels, &t.multiple_density.texels}) {
     for (const Spectrum& s : *texels) {
       for (int c = 0; c < 4; ++c) {
         ASSERT_TRUE(std::isfinite(s[c]));
@@ -114,7 +114,8 @@ TEST(Bake, ResultIsIdenticalForOneAndTwoThreads) {
   }
   setStoredReport(one, false);
   setStoredReport(two, false);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("skybake_determinism_" + std::to_string(getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("skybake_determinism_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   writeBakeFile(dir / "one.exr", one.file);
   writeBakeFile(dir / "two.exr", two.file);

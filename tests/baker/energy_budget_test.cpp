@@ -20,7 +20,6 @@
 namespace skybake {
 namespace {
 
-
 BakeConfig stressCase(const std::string& name) {
   for (StressCase& c : stressCases(true)) {
     if (c.name == name) return c.config;
@@ -116,9 +115,9 @@ TEST(EnergyBudget, ClosesForTheReferenceSolver) {
   };
   lookups.ground_irradiance = [&](const glm::dvec3& point, const glm::dvec3& sun) {
     const double mu_s = glm::dot(glm::normalize(point), sun);
-    const SpectrumD direct =
-        mu_s > 0.0 ? SpectrumD(a.sun_irradiance) * reference.transmittance({point, sun, sun, 0.0}) * mu_s
-                   : SpectrumD(0.0);
+    const SpectrumD direct = mu_s > 0.0
+                                 ? SpectrumD(a.sun_irradiance) * reference.transmittance({point, sun, sun, 0.0}) * mu_s
+                                 : SpectrumD(0.0);
     return SunAndSkyIrradiance{Spectrum(direct),
                                Spectrum(reference.skyIrradiance(point, sun, kPaths, seedOf(point, sun)).value)};
   };

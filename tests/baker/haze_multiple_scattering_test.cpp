@@ -25,8 +25,9 @@ BakeConfig hazeConfig(int mu_s) {
 Spectrum groundSkyRadiance(const Sky& sky, double view_zenith_deg, double sun_zenith_deg) {
   const double r = sky.atmosphere().bottom_radius_m + 1.0;
   const double v = radiansFromDegrees(view_zenith_deg), s = radiansFromDegrees(sun_zenith_deg);
-  return sky.skyRadiance(glm::dvec3(0.0, 0.0, r), glm::dvec3(std::sin(v), 0.0, std::cos(v)),
-                         glm::dvec3(std::sin(s), 0.0, std::cos(s)))
+  return sky
+      .skyRadiance(glm::dvec3(0.0, 0.0, r), glm::dvec3(std::sin(v), 0.0, std::cos(v)),
+                   glm::dvec3(std::sin(s), 0.0, std::cos(s)))
       .radiance;
 }
 

@@ -87,7 +87,8 @@ TEST(Invariants, TransmittanceRoundingWithinTheToleranceIsNotARise) {
 TEST(Invariants, GrowingOrdersFailFromTheThirdOrderOn) {
   auto order = [](int n, float radiance) { return OrderContribution{n, Spectrum(radiance), Spectrum(0.0f)}; };
   // Order 2 above order 1 is allowed (weak single scattering).
-  EXPECT_TRUE(checkOrdersDecrease({order(1, 1.0f), order(2, 2.0f), order(3, 1.0f), order(4, 0.5f)}, kChannels).passed());
+  EXPECT_TRUE(
+      checkOrdersDecrease({order(1, 1.0f), order(2, 2.0f), order(3, 1.0f), order(4, 0.5f)}, kChannels).passed());
   const InvariantResult r = checkOrdersDecrease({order(1, 1.0f), order(2, 0.5f), order(3, 0.6f)}, kChannels);
   EXPECT_FALSE(r.passed());
   EXPECT_NE(r.worst.find("order 3"), std::string::npos) << r.worst;

@@ -15,10 +15,10 @@
 #include <glm/geometric.hpp>
 
 #include "baker/bake/bake.h"
+#include "batch_lookups.h"
 #include "data_formats/bake_file_attributes.h"
 #include "data_formats/error.h"
 #include "runtime/sky.h"
-#include "batch_lookups.h"
 #include "test_configs.h"
 
 namespace skybake {
@@ -154,7 +154,8 @@ TEST(CombinedSingleMie, StoresOneChannelBesideRayleighAndStaysCloseToTheSeparate
   const Sky separate(bakeAtmosphere(config, 0, silent).file);
   config.bake.combined_single_mie = true;
   const BakeFile combined = bakeAtmosphere(config, 0, silent).file;
-  const fs::path path = fs::temp_directory_path() / ("skybake_combined_mie_test_" + std::to_string(::getpid()) + ".exr");
+  const fs::path path =
+      fs::temp_directory_path() / ("skybake_combined_mie_test_" + std::to_string(::getpid()) + ".exr");
   writeBakeFile(path, combined);
   const std::vector<std::string> parts = partsOf(path);
   bool has_mie_channel = false;

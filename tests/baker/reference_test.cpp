@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "baker/validation/local_frame.h"
 #include "baker/reference/reference_solver.h"
+#include "baker/validation/local_frame.h"
 #include "runtime/phase_functions.h"
 #include "test_configs.h"
 
@@ -30,8 +30,8 @@ TEST(Reference, SingleScatteringMatchesFlatAtmosphereClosedForm) {
         const glm::dvec3 sun(std::sqrt(1.0 - s * s), 0.0, s), view(0.0, std::sqrt(1.0 - v * v), v);
         const double nu = glm::dot(sun, view);
         const double phase = mie ? cornetteShanksPhase(a.mie_phase_g, nu) : rayleighPhase(nu);
-        const double closed = std::abs(s - v) < 1e-9 ? (b / v) * std::exp(-b / v)
-                                                     : s * (std::exp(-b / s) - std::exp(-b / v)) / (s - v);
+        const double closed =
+            std::abs(s - v) < 1e-9 ? (b / v) * std::exp(-b / v) : s * (std::exp(-b / s) - std::exp(-b / v)) / (s - v);
         const ReferenceEstimate e = solver.radiance({{0.0, 0.0, a.bottom_radius_m}, view, sun, 0.0}, 0, 1);
         EXPECT_NEAR(e.value[0] / (a.sun_irradiance[0] * phase * closed), 1.0, 0.005)
             << (mie ? "Mie" : "Rayleigh") << " s=" << s << " v=" << v;
@@ -66,15 +66,20 @@ TEST(Reference, EstimatesWithFourTimesThePathsAgreeWithinThreeSigma) {
   const BakeConfig config = builtinEarthConfig();
   const AtmosphereParameters& a = config.atmosphere;
   const ReferenceSolver solver(a);
-  struct Query { double altitude, sun_zenith, view_zenith, view_azimuth; };
-  for (const Query& q : {Query{0, 30, 0, 0}, Query{1000, 60, 85, 180}, Query{0, 80, 45, 90},
-                         Query{10000, 85, 89, 0}, Query{0, 40, 120, 0}}) {
-    const ReferenceRay ray{{0.0, 0.0, a.bottom_radius_m + q.altitude}, directionFromZenithAzimuthDeg(q.view_zenith, q.view_azimuth),
-                           directionFromZenithAzimuthDeg(q.sun_zenith, 0.0), 0.0};
+  struct Query {
+    double altitude, sun_zenith, view_zenith, view_azimuth;
+  };
+  for (const Query& q : {Query{0, 30, 0, 0}, Query{1000, 60, 85, 180}, Query{0, 80, 45, 90}, Query{10000, 85, 89, 0},
+                         Query{0, 40, 120, 0}}) {
+    const ReferenceRay ray{{0.0, 0.0, a.bottom_radius_m + q.altitude},
+                           directionFromZenithAzimuthDeg(q.view_zenith, q.view_azimuth),
+                           directionFromZenithAzimuthDeg(q.sun_zenith, 0.0),
+                           0.0};
     const ReferenceEstimate n = solver.radiance(ray, 2048, 11);
     const ReferenceEstimate n4 = solver.radiance(ray, 8192, 12);
     for (int c = 0; c < 3; ++c) {
-      const double sigma = std::sqrt(n.standard_error[c] * n.standard_error[c] + n4.standard_error[c] * n4.standard_error[c]);
+      const double sigma =
+          std::sqrt(n.standard_error[c] * n.standard_error[c] + n4.standard_error[c] * n4.standard_error[c]);
       EXPECT_GT(n.standard_error[c], n4.standard_error[c]) << "more paths, less noise";
       EXPECT_LE(std::abs(n4.value[c] - n.value[c]), 3.0 * sigma)
           << "altitude " << q.altitude << " sun " << q.sun_zenith << " view " << q.view_zenith << " channel " << c;
@@ -87,8 +92,10 @@ TEST(Reference, EstimatesWithFourTimesThePathsAgreeWithinThreeSigma) {
 TEST(Reference, FixedSeedIsReproducible) {
   const BakeConfig config = builtinEarthConfig();
   const ReferenceSolver solver(config.atmosphere);
-  const ReferenceRay ray{{0.0, 0.0, config.atmosphere.bottom_radius_m + 500.0}, directionFromZenithAzimuthDeg(70, 30),
-                         directionFromZenithAzimuthDeg(50, 0), 0.0};
+  const ReferenceRay ray{{0.0, 0.0, config.atmosphere.bottom_radius_m + 500.0},
+                         directionFromZenithAzimuthDeg(70, 30),
+                         directionFromZenithAzimuthDeg(50, 0),
+                         0.0};
   const ReferenceEstimate a = solver.radiance(ray, 256, 99), b = solver.radiance(ray, 256, 99);
   EXPECT_EQ(a.value, b.value);
   EXPECT_EQ(a.standard_error, b.standard_error);

@@ -11,8 +11,8 @@
 #include <glm/geometric.hpp>
 
 #include "baker/bake/bake.h"
-#include "runtime/sky.h"
 #include "batch_lookups.h"
+#include "runtime/sky.h"
 #include "test_configs.h"
 
 namespace skybake {
@@ -154,11 +154,10 @@ TEST_F(SceneRangesTest, LookupsOutsideTheRangesAreClampedToTheirEnds) {
 // whole-domain bake within its own interpolation error at these sizes (the
 // bounds of the test above; measured 0.08 % RMS on the sky, 0.9 % on ground
 // rays, worst 2.3 %: the whole domain's ground half has 32 mu texels here).
-// In twilight the whole-domain tables are no yardstick at these sizes (16 sun texels: the integrated ground rays differ by 10 to 25 %
-// there; against the reference at the default sizes they are the more
-// accurate, docs/LEAVE_OUT.md), so there they must only be finite. The
-// density they integrate over stays in the file even for a scene without
-// radiance to points.
+// In twilight the whole-domain tables are no yardstick at these sizes (16 sun texels: the integrated ground rays differ
+// by 10 to 25 % there; against the reference at the default sizes they are the more accurate, docs/LEAVE_OUT.md), so
+// there they must only be finite. The density they integrate over stays in the file even for a scene without radiance
+// to points.
 TEST_F(SceneRangesTest, SkyViewsOnlyBakeMatchesTheWholeDomainAndIntegratesGroundRays) {
   BakeConfig c = testEarth();
   c.scene_ranges.views_below_horizon = false;
@@ -182,7 +181,7 @@ TEST_F(SceneRangesTest, SkyViewsOnlyBakeMatchesTheWholeDomainAndIntegratesGround
           const bool to_ground = rayIntersectsSphere(glm::length(camera), view.z, whole_->atmosphere().bottom_radius_m);
           for (int ch = 0; ch < 3; ++ch) {
             ASSERT_TRUE(std::isfinite(b.radiance[ch]) && b.radiance[ch] >= 0.0f);
-            EXPECT_EQ(a.transmittance[ch], b.transmittance[ch]);  // the same transmittance table
+            EXPECT_EQ(a.transmittance[ch], b.transmittance[ch]);     // the same transmittance table
             if (a.radiance[ch] < 1e-5f || sun_deg > 90.0) continue;  // validation's floor; twilight above
             const double e = std::abs(b.radiance[ch] - a.radiance[ch]) / a.radiance[ch];
             (to_ground ? ground_sq : sky_sq) += e * e;

@@ -37,19 +37,15 @@ void checkAgainstClosedForm(bool mie, double scale_height_m) {
     for (double v : {0.2, 0.35, 0.6, 1.0}) {
       // Any nu the geometry allows; the closed form holds for all (phase aside).
       const double nu = s * v;
-      const SingleScattering single =
-          computeSingleScattering(ctx, optical_depth, a.bottom_radius_m, v, s, nu, false);
+      const SingleScattering single = computeSingleScattering(ctx, optical_depth, a.bottom_radius_m, v, s, nu, false);
       const double computed = mie ? single.mie[0] : single.rayleigh[0];
       const double expected = a.sun_irradiance[0] * flatSingleScattering(b, s, v);
-      EXPECT_NEAR(computed / expected, 1.0, kTolerance)
-          << (mie ? "Mie" : "Rayleigh") << " s=" << s << " v=" << v;
+      EXPECT_NEAR(computed / expected, 1.0, kTolerance) << (mie ? "Mie" : "Rayleigh") << " s=" << s << " v=" << v;
     }
   }
 }
 
-TEST(SingleScattering, RayleighMatchesFlatAtmosphereClosedForm) {
-  checkAgainstClosedForm(false, 8000.0);
-}
+TEST(SingleScattering, RayleighMatchesFlatAtmosphereClosedForm) { checkAgainstClosedForm(false, 8000.0); }
 
 // The thin Mie layer (H = 1.2 km) is the hard case: a ray rule whose steps are
 // not small against the scale height overestimates it.

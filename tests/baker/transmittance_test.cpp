@@ -30,8 +30,10 @@ double clampedLinearColumn(double a, double c, double h0, double h1) {
     const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
     const double value = a * mid + c;
     const double width = cuts[i + 1] - cuts[i];
-    if (value >= 1.0) total += width;
-    else if (value > 0.0) total += width * value;  // linear: midpoint rule is exact
+    if (value >= 1.0)
+      total += width;
+    else if (value > 0.0)
+      total += width * value;  // linear: midpoint rule is exact
   }
   return total;
 }
@@ -41,8 +43,8 @@ SpectrumD earthVerticalOpticalDepth(const AtmosphereParameters& a) {
   const double thickness = a.top_radius_m - a.bottom_radius_m;
   const double rayleigh = exponentialColumn(8000.0, thickness);
   const double mie = exponentialColumn(1.0 / 8.333e-4, thickness);
-  const double ozone = clampedLinearColumn(6.667e-5, -0.6667, 0.0, 25000.0) +
-                       clampedLinearColumn(-6.667e-5, 2.6667, 25000.0, thickness);
+  const double ozone =
+      clampedLinearColumn(6.667e-5, -0.6667, 0.0, 25000.0) + clampedLinearColumn(-6.667e-5, 2.6667, 25000.0, thickness);
   // The tent is 15 km in area to 1e-4: the test's own sanity check.
   EXPECT_NEAR(ozone, 15000.0, 2.0);
   return SpectrumD(a.rayleigh_scattering) * rayleigh + SpectrumD(a.mie_extinction) * mie +

@@ -60,8 +60,8 @@ std::vector<std::byte> fileBytes(const fs::path& path) {
 }
 
 void writeBytes(const fs::path& path, const std::vector<std::byte>& bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                              static_cast<std::streamsize>(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
 }
 
 // Expects readBakeFile to refuse `path` as bad input with a message naming the
@@ -155,8 +155,7 @@ TEST_F(BakeFileCorruptTest, TruncatedMemoryIsRefusedNamingTheSource) {
 
 // Overwrites the declared size of the first attribute named `name` of type
 // `type` (a little-endian int32 after "name\0type\0").
-void setAttributeSize(std::vector<std::byte>& bytes, const std::string& name, const std::string& type,
-                      int32_t size) {
+void setAttributeSize(std::vector<std::byte>& bytes, const std::string& name, const std::string& type, int32_t size) {
   const std::string field = name + '\0' + type + '\0';
   const auto* begin = reinterpret_cast<const char*>(bytes.data());
   const size_t at = std::search(begin, begin + bytes.size(), field.begin(), field.end()) - begin;

@@ -40,8 +40,8 @@ BakeFile syntheticBake() {
   t.multiple_scattering = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   t.multiple_density = Texture4D(s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu);
   float x = 0.1f;
-  for (auto* texels : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels, &t.multiple_scattering.texels,
-                       &t.multiple_density.texels}) {
+  for (auto* texels : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels, &t.single_mie.texels,
+                       &t.multiple_scattering.texels, &t.multiple_density.texels}) {
     for (Spectrum& v : *texels) {
       v = Spectrum(x, x * 1.5f, x * 0.25f, 0.0f);
       x = x * 1.37f + 0.011f;

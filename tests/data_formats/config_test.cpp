@@ -116,8 +116,8 @@ TEST(Config, CombinedSingleMieParsesRoundTripsAndNeedsAFreeChannel) {
   // Off by default and then not written, so canonical texts stay as they were.
   EXPECT_EQ(configToToml(parseConfig(kMinimal, "minimal")).find("combined_single_mie"), std::string::npos);
   const std::string density = "density = [{ exp_term = 1.0, exp_scale = -1.25e-4 }]\n";
-  const std::string mie =
-      "[mie]\nscattering = [4e-6]\nextinction = [4.4e-6]\nphase_g = 0.8\n" + density + "[rayleigh]\nscattering = [1.3e-5]\n" + density;
+  const std::string mie = "[mie]\nscattering = [4e-6]\nextinction = [4.4e-6]\nphase_g = 0.8\n" + density +
+                          "[rayleigh]\nscattering = [1.3e-5]\n" + density;
   const BakeConfig combined = parseConfig(kMinimal + mie + "[bake]\ncombined_single_mie = true\n", "combined");
   EXPECT_TRUE(combined.bake.combined_single_mie);
   EXPECT_TRUE(parseConfig(configToToml(combined), "round trip").bake.combined_single_mie);
@@ -168,8 +168,9 @@ TEST(Config, RejectsBadSceneOutputs) {
 TEST(Config, SceneRangesParseAndRoundTrip) {
   const BakeConfig whole = parseConfig(kMinimal, "minimal");
   EXPECT_FALSE(whole.scene_ranges.narrows());
-  const BakeConfig c = parseConfig(kMinimal + "[scene]\naltitude_range_m = [0, 2000.5]\nsun_zenith_range_deg = [10, 90]\n"
-                                              "[resolution.iteration]\nr = 16\nmu_s = 24\n",
+  const BakeConfig c = parseConfig(kMinimal +
+                                       "[scene]\naltitude_range_m = [0, 2000.5]\nsun_zenith_range_deg = [10, 90]\n"
+                                       "[resolution.iteration]\nr = 16\nmu_s = 24\n",
                                    "ranges");
   ASSERT_TRUE(c.scene_ranges.altitude_m && c.scene_ranges.sun_zenith_deg && c.sizes.iteration);
   EXPECT_EQ((*c.scene_ranges.altitude_m)[1], 2000.5);
@@ -210,7 +211,8 @@ TEST(Config, RejectsBadSceneRanges) {
 
 TEST(Config, RejectsBadOrderSettings) {
   expectRejected(kMinimal + "[bake]\norders = \"many\"\n", {"bake.orders", "many", "\"auto\""});
-  expectRejected(kMinimal + "[bake]\norders = \"auto\"\norder_tolerance = 0.0\n", {"bake.order_tolerance", "must be in"});
+  expectRejected(kMinimal + "[bake]\norders = \"auto\"\norder_tolerance = 0.0\n",
+                 {"bake.order_tolerance", "must be in"});
   expectRejected(kMinimal + "[bake]\norder_tolerance = 0.9\n", {"bake.order_tolerance", "0.9"});
   expectRejected(kMinimal + "[bake]\nmax_orders = 1\n", {"bake.max_orders", "1", "must be in [2, 1000]"});
 }
@@ -223,9 +225,7 @@ TEST(Config, MinimalConfigGetsDefaults) {
   EXPECT_DOUBLE_EQ(c.atmosphere.sun_max_zenith_deg, 102.0);
 }
 
-TEST(Config, RejectsSyntaxErrorsWithLine) {
-  expectRejected(kMinimal + "\n[bake\n", {"test.toml:", "syntax"});
-}
+TEST(Config, RejectsSyntaxErrorsWithLine) { expectRejected(kMinimal + "\n[bake\n", {"test.toml:", "syntax"}); }
 
 TEST(Config, RejectsUnknownKeys) {
   expectRejected(kMinimal + "\n[bake]\norderz = 3\n", {"bake.orderz", "unknown key"});
@@ -251,8 +251,7 @@ TEST(Config, RejectsNegativeCoefficientsAndAlbedo) {
                  {"rayleigh.scattering[0]", "-1e-06", ">= 0"});
   expectRejected(edited("top_radius_m = 6420000.0", "top_radius_m = 6420000.0\nground_albedo = [-0.1]"),
                  {"planet.ground_albedo[0]", ">= 0"});
-  expectRejected(kMinimal + "\n[absorption]\nextinction = [-2e-6]\ndensity = []\n",
-                 {"absorption.extinction[0]"});
+  expectRejected(kMinimal + "\n[absorption]\nextinction = [-2e-6]\ndensity = []\n", {"absorption.extinction[0]"});
   expectRejected(kMinimal + "\n[mie]\nscattering = [2e-5]\nextinction = [1e-5]\nphase_g = 0.7\ndensity = []\n",
                  {"mie.extinction[0]", ">= mie.scattering"});
 }
@@ -285,8 +284,7 @@ TEST(Config, RejectsNanAndInfinity) {
 TEST(Config, RejectsWrongTypesAndChannelCounts) {
   expectRejected(edited("bottom_radius_m = 6360000.0", "bottom_radius_m = \"big\""),
                  {"planet.bottom_radius_m", "number"});
-  expectRejected(edited("irradiance = [1.8]", "irradiance = [1.8, 1.9]"),
-                 {"sun.irradiance", "one per wavelength"});
+  expectRejected(edited("irradiance = [1.8]", "irradiance = [1.8, 1.9]"), {"sun.irradiance", "one per wavelength"});
   expectRejected(edited("wavelengths_nm = [550.0]", "wavelengths_nm = [400.0, 450.0, 500.0, 550.0, 600.0]"),
                  {"channels.wavelengths_nm", "1 to 4"});
 }
@@ -307,7 +305,10 @@ TEST(Config, NameWithControlCharactersRoundTrips) {
   // The canonical TOML is what a bake file stores: a raw DEL in it made the
   // file's own config unreadable.
   BakeConfig c = parseConfig(kMinimal, "minimal");
-  c.name = std::string("a\x7f" "b\x01" "c\td\"e\\f");
+  c.name = std::string(
+      "a\x7f"
+      "b\x01"
+      "c\td\"e\\f");
   const BakeConfig again = parseConfig(configToToml(c), "round trip");
   EXPECT_EQ(again.name, c.name);
 }

@@ -21,8 +21,7 @@ constexpr const char* kSource = "fuzz.exr";
 void expectTableSizes(const skybake::BakeFile& bake) {
   const skybake::TextureSizes& s = bake.contents.sizes;
   const skybake::BakeTables& t = bake.tables;
-  const size_t texels_4d = static_cast<size_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s *
-                           s.scattering_nu;
+  const size_t texels_4d = static_cast<size_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu;
   const bool ok =
       t.optical_depth.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
       t.irradiance.texels.size() ==
@@ -38,6 +37,7 @@ void expectTableSizes(const skybake::BakeFile& bake) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
-  skybake::fuzz::expectOnlyBadInputErrors(kSource, [&] { expectTableSizes(skybake::readBakeFileFromMemory(bytes, kSource)); });
+  skybake::fuzz::expectOnlyBadInputErrors(kSource,
+                                          [&] { expectTableSizes(skybake::readBakeFileFromMemory(bytes, kSource)); });
   return 0;
 }

@@ -28,8 +28,7 @@ void expectCanonicalRoundTrip(const skybake::BakeConfig& config) {
       skybake::fuzz::finding("canonical TOML reads back to a different config", canonical);
     }
   } catch (const skybake::Error& e) {
-    skybake::fuzz::finding("canonical TOML of an accepted config is refused",
-                           std::string(e.what()) + "\n" + canonical);
+    skybake::fuzz::finding("canonical TOML of an accepted config is refused", std::string(e.what()) + "\n" + canonical);
   }
 }
 
@@ -37,6 +36,7 @@ void expectCanonicalRoundTrip(const skybake::BakeConfig& config) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  skybake::fuzz::expectOnlyBadInputErrors(kSource, [&] { expectCanonicalRoundTrip(skybake::parseConfig(text, kSource)); });
+  skybake::fuzz::expectOnlyBadInputErrors(kSource,
+                                          [&] { expectCanonicalRoundTrip(skybake::parseConfig(text, kSource)); });
   return 0;
 }

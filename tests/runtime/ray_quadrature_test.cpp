@@ -51,8 +51,8 @@ TEST(RayQuadrature, ThinRaysKeepTheFixedRule) {
   constexpr double kClearAir_per_m = 3.8e-5;
   std::vector<double> fixed, thin;
   forEachQuadratureNode(0.0, 875e3, kSegments, [&](double t, double) { fixed.push_back(t); });
-  forEachOpticallyThinNode(0.0, 875e3, kSegments, 0.0, [](double) { return kClearAir_per_m; },
-                           [&](double t, double) { thin.push_back(t); });
+  forEachOpticallyThinNode(
+      0.0, 875e3, kSegments, 0.0, [](double) { return kClearAir_per_m; }, [&](double t, double) { thin.push_back(t); });
   ASSERT_EQ(fixed.size(), thin.size());
   for (size_t i = 0; i < fixed.size(); ++i) EXPECT_NEAR(fixed[i], thin[i], 1e-6) << i;
 }
@@ -76,8 +76,8 @@ TEST(RayQuadrature, IntegralToEachNodeIsTheOpticalDepth) {
 
 TEST(RayQuadrature, NonFiniteExtinctionDoesNotLoop) {
   int nodes = 0;
-  forEachOpticallyThinNode(0.0, 1000.0, kSegments, 0.0, [](double) { return INFINITY; },
-                           [&](double, double) { ++nodes; });
+  forEachOpticallyThinNode(
+      0.0, 1000.0, kSegments, 0.0, [](double) { return INFINITY; }, [&](double, double) { ++nodes; });
   EXPECT_EQ(nodes, kGaussNodes * kSegments);
 }
 

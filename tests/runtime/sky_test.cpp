@@ -11,10 +11,10 @@
 #include <map>
 
 #include "baker/numerics/optical_depth_integral.h"
-#include "runtime/ray_quadrature.h"
-#include "data_formats/error.h"
-#include "runtime/sky.h"
 #include "batch_lookups.h"
+#include "data_formats/error.h"
+#include "runtime/ray_quadrature.h"
+#include "runtime/sky.h"
 
 namespace skybake {
 namespace {
@@ -59,7 +59,8 @@ Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, 
         sunDiskVisibleFraction(mu_s_t - tangentZenithCosine(r_t, a.bottom_radius_m),
                                sunDiskHalfSizeAtHorizon(a.bottom_radius_m, r_t, a.sun_angular_radius_rad));
     if (visible <= 0.0) return;  // in the planet's shadow
-    const SpectrumD depth = integrateOpticalDepthAlongRay(media, r, mu, t) + integrateOpticalDepthToTop(media, r_t, mu_s_t);
+    const SpectrumD depth =
+        integrateOpticalDepthAlongRay(media, r, mu, t) + integrateOpticalDepthToTop(media, r_t, mu_s_t);
     const double h = r_t - a.bottom_radius_m;
     const SpectrumD scattering = SpectrumD(a.rayleigh_scattering) * (media.rayleighDensity(h) * p_r) +
                                  SpectrumD(a.mie_scattering) * (media.mieDensity(h) * p_m);
@@ -83,16 +84,15 @@ TEST(Sky, SingleScatteringLookupsMatchDirectIntegration) {
       for (double view_zenith : {0.0, 30.0, 60.0, 80.0, 87.0}) {
         for (double azimuth : {0.0, 90.0, 180.0}) {
           const glm::dvec3 view = direction(view_zenith, azimuth), sun = direction(sun_zenith, 0.0);
-          const Spectrum looked_up =
-              sky.skyRadiance({0.0, 0.0, a.bottom_radius_m + altitude}, view, sun).radiance;
+          const Spectrum looked_up = sky.skyRadiance({0.0, 0.0, a.bottom_radius_m + altitude}, view, sun).radiance;
           const Spectrum direct = directSingleScattering(a, altitude, view, sun);
           for (int c = 0; c < 3; ++c) {
             // 1 %: the bound above the horizon. The default tables
             // interpolate to a few 1e-3 here; the largest errors sit at low
             // view angles from high cameras, where mu texels are sparsest.
             EXPECT_NEAR(looked_up[c] / direct[c], 1.0, 0.01)
-                << "altitude " << altitude << " sun " << sun_zenith << " view " << view_zenith
-                << " azimuth " << azimuth << " channel " << c;
+                << "altitude " << altitude << " sun " << sun_zenith << " view " << view_zenith << " azimuth " << azimuth
+                << " channel " << c;
             worst = std::max(worst, std::abs(looked_up[c] / direct[c] - 1.0));
           }
         }
@@ -205,7 +205,7 @@ TEST(Sky, LightShaftShadowsOnlyTakeLightAway) {
   for (double sun_zenith : {60.0, 93.0}) {
     for (double view_zenith : {45.0, 89.0, 120.0}) {
       const glm::dvec3 camera(0.0, 0.0, bottom + 1000.0), view = direction(view_zenith, 30.0),
-          sun = direction(sun_zenith, 0.0);
+                                                          sun = direction(sun_zenith, 0.0);
       const Spectrum unshadowed = sky.skyRadiance(camera, view, sun).radiance;
       for (double shadow_m : {1000.0, 50000.0, 1e7}) {
         const Spectrum shadowed = sky.skyRadiance(camera, view, sun, shadow_m).radiance;
@@ -353,8 +353,8 @@ TEST(Sky, RadianceToPointMatchesDirectIntegrationForSingleScattering) {
             // of itself when it is at least a tenth of either term.
             const double tolerance = distance < 10000.0 ? 0.01 : 0.05;
             EXPECT_NEAR(looked_up[c] / direct[c], 1.0, tolerance)
-                << "altitude " << altitude << " distance " << distance << " view " << view_zenith
-                << " sun " << sun_zenith << " channel " << c;
+                << "altitude " << altitude << " distance " << distance << " view " << view_zenith << " sun "
+                << sun_zenith << " channel " << c;
           }
         }
       }
@@ -369,8 +369,10 @@ TEST(Sky, RadianceToPointAtZeroDistanceIsZeroWithFullTransmittance) {
   EXPECT_EQ(v.radiance, Spectrum(0.0f));
   EXPECT_EQ(v.transmittance, Spectrum(1.0f));
   // And it grows from 0 with distance.
-  const RadianceAndTransmittance near = sky.radianceToPoint(camera, camera + direction(80.0, 0.0) * 10.0, direction(30.0, 0.0));
-  const RadianceAndTransmittance far = sky.radianceToPoint(camera, camera + direction(80.0, 0.0) * 10000.0, direction(30.0, 0.0));
+  const RadianceAndTransmittance near =
+      sky.radianceToPoint(camera, camera + direction(80.0, 0.0) * 10.0, direction(30.0, 0.0));
+  const RadianceAndTransmittance far =
+      sky.radianceToPoint(camera, camera + direction(80.0, 0.0) * 10000.0, direction(30.0, 0.0));
   EXPECT_LT(near.radiance[2], far.radiance[2]);
   EXPECT_GT(near.transmittance[2], far.transmittance[2]);
 }
@@ -414,7 +416,8 @@ TEST(Sky, SunBelowBakedRangeAndOddCamerasGiveFiniteValues) {
     for (const glm::dvec3& camera : {glm::dvec3(0, 0, a.bottom_radius_m - 100.0), glm::dvec3(0, 0, a.bottom_radius_m),
                                      glm::dvec3(0, 0, a.top_radius_m), glm::dvec3(0, 0, 0)}) {
       for (double view_zenith : {0.0, 90.0, 180.0}) {
-        const RadianceAndTransmittance v = sky.skyRadiance(camera, direction(view_zenith, 0.0), direction(sun_zenith, 0.0));
+        const RadianceAndTransmittance v =
+            sky.skyRadiance(camera, direction(view_zenith, 0.0), direction(sun_zenith, 0.0));
         for (int c = 0; c < 3; ++c) {
           ASSERT_TRUE(std::isfinite(v.radiance[c]) && v.radiance[c] >= 0.0f);
           ASSERT_TRUE(std::isfinite(v.transmittance[c]) && v.transmittance[c] >= 0.0f && v.transmittance[c] <= 1.0f);
@@ -430,22 +433,22 @@ TEST(Sky, BatchLookupsEqualScalarLookups) {
   // Inside the atmosphere (the batch path), below the ground and in space.
   // A day sun, and a twilight one (single scattering integrated per ray).
   for (const double sun_zenith : {70.0, 93.0}) {
-  for (const glm::dvec3 camera : {glm::dvec3(0.0, 0.0, bottom + 300.0), glm::dvec3(0.0, bottom + 31000.0, 0.0),
-                                  glm::dvec3(0.0, 0.0, bottom - 50.0), glm::dvec3(0.0, 0.0, bottom + 400000.0)}) {
-  const glm::dvec3 sun = direction(sun_zenith, 10.0);
-  std::vector<glm::dvec3> views;
-  for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
-    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(direction(zenith, azimuth));
-  }
-  for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, views)) {
-    const RadianceAndTransmittance v = sky.skyRadiance(camera, l.view, sun);
-    for (int c = 0; c < 3; ++c) {
-      EXPECT_NEAR(l.value.radiance[c], v.radiance[c], 1e-5f * v.radiance[c] + 1e-10f);
-      // The batch interpolates in another order: float rounding, 1e-5.
-      EXPECT_NEAR(l.value.transmittance[c], v.transmittance[c], 1e-5f);
+    for (const glm::dvec3 camera : {glm::dvec3(0.0, 0.0, bottom + 300.0), glm::dvec3(0.0, bottom + 31000.0, 0.0),
+                                    glm::dvec3(0.0, 0.0, bottom - 50.0), glm::dvec3(0.0, 0.0, bottom + 400000.0)}) {
+      const glm::dvec3 sun = direction(sun_zenith, 10.0);
+      std::vector<glm::dvec3> views;
+      for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
+        for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(direction(zenith, azimuth));
+      }
+      for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, views)) {
+        const RadianceAndTransmittance v = sky.skyRadiance(camera, l.view, sun);
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(l.value.radiance[c], v.radiance[c], 1e-5f * v.radiance[c] + 1e-10f);
+          // The batch interpolates in another order: float rounding, 1e-5.
+          EXPECT_NEAR(l.value.transmittance[c], v.transmittance[c], 1e-5f);
+        }
+      }
     }
-  }
-  }
   }
 }
 
