@@ -30,9 +30,9 @@ struct AtmosphereDomain {
   // the horizon, see distanceToHorizon) at the r axis's ends, and the unit
   // sun coordinate (muSUnitCoord: 0 at mu_s_min, 1 at the zenith) at the
   // mu_s axis's ends. The whole domain is [0, H] and [0, 1]; a [scene]
-  // narrows them (fromConfig), and the axes keep their texel spacing's shape
-  // over the narrower range. A bake decides them
-  // (sceneDomain, baker/bake/bake_policy.h) and its file states them.
+  // narrows them, and the axes keep their texel spacing's shape over the
+  // narrower range. A bake decides them (sceneDomain, baker/bake/bake_policy.h)
+  // and its file states them.
   double scattering_rho_min_m = 0.0;
   double scattering_rho_max_m = 0.0;
   double scattering_mu_s_coord_min = 0.0;

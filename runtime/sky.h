@@ -20,7 +20,7 @@
 // Where the values come from: the baked tables, except single scattering
 // with the sun below the horizon, which is integrated along each view ray
 // over the baked transmittance table (the tables cannot follow the edge of
-// the planet's shadow; see sky.cpp). Such twilight lookups cost about six
+// the planet's shadow; see sky_twilight.cpp). Such twilight lookups cost about six
 // times a day lookup. A bake without views below the horizon ([scene]
 // views_below_horizon = false) integrates rays that end on the ground
 // whole, multiple scattering over the baked density (about 20 times a
@@ -155,7 +155,7 @@ class Sky {
   // Single scattering (each part without its phase function) of the ray's
   // part [t_start, t_end]: from the tables (`from_tables()`, not called where
   // unused), or with the sun below the horizon integrated along the ray,
-  // blended with the tables' just above it (see sky.cpp).
+  // blended with the tables' just above it (see sky_twilight.cpp).
   template <typename FromTables>
   SingleScattering singleScattering(const SunlitRay& ray, double t_start, double t_end,
                                     FromTables&& from_tables) const {

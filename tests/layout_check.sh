@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The tree matches docs/ARCHITECTURE.md: baker/ holds nothing at its root but
+# its CMakeLists.txt, and every folder of baker/, runtime/ and data_formats/
+# is a room the architecture page names, so a new file lands in a room that
+# says what it is.
+# Usage: layout_check.sh SOURCE_DIR
+set -u
+cd "$1"
+failures=0
+fail() { echo "layout_check: $*"; failures=$((failures + 1)); }
+
+for f in baker/*; do
+  [ -d "$f" ] || [ "$f" = baker/CMakeLists.txt ] || fail "$f sits in baker/'s root; put it in the room it belongs to"
+done
+for d in baker/* runtime/* data_formats/*; do
+  [ -d "$d" ] || continue
+  grep -qF "\`$d/\`" docs/ARCHITECTURE.md || fail "$d/ is not a room docs/ARCHITECTURE.md describes"
+done
+[ "$failures" -eq 0 ] && echo "layout_check: the tree matches docs/ARCHITECTURE.md"
+exit $((failures > 0))
