@@ -87,6 +87,18 @@ TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
   same(read.tables.multiple_density.texels, written.tables.multiple_density.texels);
 }
 
+// Reading a bake parses no TOML: the config travels as provenance only, so
+// a file whose carried config is not TOML at all reads exactly as before.
+TEST_F(BakeFileTest, ReadingTakesNothingFromTheCarriedConfig) {
+  BakeFile written = syntheticBake();
+  written.config_toml = "this is [[ not TOML = at all";
+  const fs::path path = dir / "provenance.exr";
+  writeBakeFile(path, written);
+  const BakeFile read = readBakeFile(path);
+  EXPECT_TRUE(read.contents == written.contents);
+  EXPECT_EQ(read.config_toml, written.config_toml);
+}
+
 TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {
   BakeFile written = syntheticBake();
   written.contents.precision = StoragePrecision::Half;
