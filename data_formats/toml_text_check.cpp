@@ -7,6 +7,7 @@
 // characters are refused.
 #include "toml_text_check.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -37,6 +38,14 @@ constexpr CodePointRange kMisreadCodePoints[] = {
 constexpr CodePointRange kNonAsciiHorizontalWhitespace[] = {{0x00A0, 0x00A0}, {0x1680, 0x1680}, {0x180E, 0x180E},
                                                             {0x2000, 0x200B}, {0x202F, 0x202F}, {0x205F, 0x2060},
                                                             {0x3000, 0x3000}, {0xFEFF, 0xFEFF}};
+
+// The deepest nesting a config may have: tables within tables through dotted
+// keys, table headers, inline tables and arrays, counted together. toml++
+// parses and destroys a nested value by recursion, one stack frame or more
+// per level, so a key nested 50000 levels deep (100 kB of text) overflowed
+// the stack (8000 levels with a 1 MB thread stack). skybake's own keys go 4
+// levels deep at most (a density layer: a table in an array of a table).
+constexpr int kMaxTomlNesting = 32;
 
 bool isAscii(char c) { return static_cast<unsigned char>(c) < 0x80; }
 bool isTomlWhitespaceOrNewline(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
@@ -154,33 +163,81 @@ class Scanner {
         break;
       case '\n':
         if (brackets_.empty()) reading_key_ = true;
+        if (brackets_.empty()) key_levels_ = 0;
+        break;
+      case '.':
+        if (reading_key_) {
+          ++key_levels_;
+          checkNesting(value_depth_ + key_levels_ + 1);
+        }
         break;
       case '=':
         reading_key_ = false;
+        value_key_levels_ = key_levels_ + 1;  // a key of n dots nests n + 1 tables
+        key_levels_ = 0;
         break;
       case ',':
         reading_key_ = !in_array;
+        key_levels_ = 0;
+        value_key_levels_ = 0;
         break;
       case '{':
-        brackets_.push_back(Bracket::InlineTable);
+        openValueBracket(Bracket::InlineTable);
         reading_key_ = true;
         break;
       case '[':
-        brackets_.push_back(reading_key_ && (brackets_.empty() || brackets_.back() == Bracket::TableHeader)
-                                ? Bracket::TableHeader
-                                : Bracket::Array);
+        if (reading_key_ && (brackets_.empty() || brackets_.back() == Bracket::TableHeader)) {
+          // A table header: its keys nest from the document's root.
+          brackets_.push_back(Bracket::TableHeader);
+          value_depth_ = 0;
+          key_levels_ = 0;
+        } else {
+          openValueBracket(Bracket::Array);
+        }
         break;
       case ']':
       case '}': {
         const bool closes_header = !brackets_.empty() && brackets_.back() == Bracket::TableHeader;
         if (!brackets_.empty()) brackets_.pop_back();
-        if (!closes_header) reading_key_ = false;  // the array or inline table was a value
+        if (closes_header) {
+          // The keys of the table below the header nest under it.
+          if (brackets_.empty()) value_depth_ = key_levels_ + 1;
+          key_levels_ = 0;
+        } else {
+          reading_key_ = false;  // the array or inline table was a value
+          if (!depth_at_open_.empty()) {
+            value_depth_ = depth_at_open_.back();
+            depth_at_open_.pop_back();
+          }
+          value_key_levels_ = 0;
+        }
         break;
       }
       default:
         break;
     }
     advance();
+  }
+
+  // An array or inline table opens as the value of the key just read, the
+  // key's last level, or as an element of an enclosing array, one level
+  // below it.
+  void openValueBracket(Bracket bracket) {
+    brackets_.push_back(bracket);
+    depth_at_open_.push_back(value_depth_);
+    value_depth_ += std::max(value_key_levels_, 1);  // the key's last table is this bracket (an element: one level)
+    value_key_levels_ = 0;
+    key_levels_ = 0;
+    checkNesting(value_depth_);
+  }
+
+  void checkNesting(int depth) const {
+    if (depth > kMaxTomlNesting) {
+      fail(
+          fmt::format("nested more than {} levels deep (tables, dotted keys, arrays and inline tables "
+                      "counted together; a skybake config needs at most 4)",
+                      kMaxTomlNesting));
+    }
   }
 
   // Skips a multi-line string's closing delimiter with the up to two quotes
@@ -257,6 +314,13 @@ class Scanner {
   bool reading_key_ = true;      // a document starts with keys
   bool in_value_token_ = false;  // inside a bare value, or after a string in one
   std::vector<Bracket> brackets_;
+  // Nesting, for kMaxTomlNesting: the tables enclosing the current value
+  // (from the table header and the open arrays and inline tables), the dots
+  // of the key being read, and the levels the key before '=' adds to its value.
+  int value_depth_ = 0;
+  int key_levels_ = 0;
+  int value_key_levels_ = 0;
+  std::vector<int> depth_at_open_;  // value_depth_ where each open array or inline table began
   size_t position_ = 0;
   int line_ = 1;
   size_t line_start_ = 0;

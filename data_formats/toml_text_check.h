@@ -7,6 +7,10 @@
 // multi-line basic string, and of the first character after a line-ending
 // backslash there. Refusing those few inputs first keeps every config away
 // from that code.
+//
+// The same pass refuses nesting deeper than a config can need (32 levels of
+// tables, dotted keys, arrays and inline tables): toml++ parses and frees
+// nested values by recursion, and 50000 levels overflowed its stack.
 #pragma once
 
 #include <string>
@@ -18,7 +22,8 @@ namespace skybake {
 // for a non-ASCII character outside strings and comments or right after a
 // backslash in a multi-line basic string (neither is valid TOML), and for one
 // of the misread code points starting the text after a line-ending backslash
-// there. Everything else, malformed TOML included, is left for the parser.
+// there, and for nesting deeper than 32 levels. Everything else, malformed
+// TOML included, is left for the parser.
 void checkTomlCharacters(std::string_view text, const std::string& source);
 
 }  // namespace skybake

@@ -130,6 +130,11 @@ config_with 'orders = 3\ntail_estimate = "yes"'
 kept "$work/kept.exr" "c.toml:39: bake.tail_estimate = 'yes': must be true or false" -- bake "$work/c.toml" -o "$work/kept.exr"
 config_with 'orders = "many"'
 kept "$work/kept.exr" "c.toml:38: bake.orders = 'many': must be a whole number or \"auto\"" -- bake "$work/c.toml" -o "$work/kept.exr"
+# A key nested 50000 levels deep (100 kB) overflowed the TOML parser's stack
+# (exit 139); it is refused before parsing.
+{ cat "$small"; printf 'a'; for _ in $(seq 50000); do printf '.a'; done; printf ' = 1\n'; } >"$work/deep.toml"
+kept "$work/kept.exr" "deep.toml:40:" -- bake "$work/deep.toml" -o "$work/kept.exr"
+grep -qF "nested more than 32 levels deep" "$work/stderr" || fail "deep nesting message: $(cat "$work/stderr")"
 
 # --- Query CSVs (lookup radiance|irradiance, validate --queries): the file,
 # line and column, and the reason; an earlier output stays as it was.

@@ -346,3 +346,40 @@ TEST(Config, DescribesArraysOfSmallAndExtremeNumbers) {
 
 }  // namespace
 }  // namespace skybake
+
+namespace skybake {
+namespace {
+
+std::string repeated(const std::string& piece, int times) {
+  std::string out;
+  for (int i = 0; i < times; ++i) out += piece;
+  return out;
+}
+
+// Deep nesting is refused before the TOML parser sees it: the parser
+// recurses once per level, and 50000 levels (100 kB) overflowed its stack.
+// Each form of nesting is refused alone, at that depth and just past the
+// limit, and the depth a config really has is accepted.
+TEST(Config, RefusesNestingDeeperThanTheParserCanTakeBeforeParsing) {
+  const char* kDeep = "nested more than 32 levels deep";
+  for (int levels : {33, 50000}) {
+    const std::string dots = repeated("a.", levels - 1) + "a";
+    expectRejected(kMinimal + dots + " = 1\n", {kDeep});            // a dotted key
+    expectRejected(kMinimal + "[" + dots + "]\nb = 1\n", {kDeep});  // a table header
+    expectRejected(kMinimal + "x = " + repeated("{a = ", levels) + "1" + repeated("}", levels) + "\n",
+                   {kDeep});                                                                            // inline tables
+    expectRejected(kMinimal + "x = " + repeated("[", levels) + repeated("]", levels) + "\n", {kDeep});  // arrays
+  }
+  // Levels add up across the forms: a table header (11 levels), a dotted key
+  // (11, its last the first inline table) and 11 more inline tables: 33.
+  expectRejected(kMinimal + "[" + repeated("a.", 10) + "a]\n" + repeated("b.", 10) + "b = " + repeated("{c = ", 12) +
+                     "1" + repeated("}", 12) + "\n",
+                 {kDeep});
+  // 32 levels in all pass the check (and fail later, as the unknown keys
+  // they are): kMinimal ends in a [table], one level, and 31 more below it.
+  expectRejected(kMinimal + "x = " + repeated("{a = ", 31) + "1" + repeated("}", 31) + "\n", {"unknown"});
+  expectRejected(kMinimal + repeated("a.", 30) + "a = 1\n", {"unknown"});
+}
+
+}  // namespace
+}  // namespace skybake
