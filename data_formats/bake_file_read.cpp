@@ -31,6 +31,7 @@
 #include "error.h"
 #include "exr_header_check.h"
 #include "exr_memory_stream.h"
+#include "table_values.h"
 #include "texture_mapping.h"
 
 namespace skybake {
@@ -112,6 +113,9 @@ class Reader {
     for (const std::string& channel : channels) {
       const Imf::Channel* found = h.channels().findChannel(channel);
       if (found == nullptr) fail(fmt::format("part '{}' has no channel {}", name, channel));
+      if (found->type != Imf::FLOAT && found->type != Imf::HALF) {
+        fail(fmt::format("part '{}' channel {} holds integers; tables are FLOAT or HALF", name, channel));
+      }
       if (found->xSampling != 1 || found->ySampling != 1) {
         fail(fmt::format("part '{}' channel {} is subsampled ({}x{}); tables have one value per texel", name, channel,
                          found->xSampling, found->ySampling));
@@ -143,15 +147,8 @@ class Reader {
     Imf::InputPart in(file_, part.index);
     in.setFrameBuffer(frame);
     in.readPixels(0, part.height - 1);
-    auto checkFinite = [&](const std::vector<Spectrum>& values, int channels) {
-      for (const Spectrum& s : values) {
-        for (int c = 0; c < channels; ++c) {
-          if (!std::isfinite(s[c])) fail(fmt::format("part '{}' holds a non-finite value", part.name));
-        }
-      }
-    };
-    checkFinite(texels, a.channelCount());
-    if (!part.extra_channel.empty()) checkFinite(*extra_texels, 1);
+    checkTableValues(source_, part.name, texels, a.channelCount());
+    if (!part.extra_channel.empty()) checkTableValues(source_, part.name, *extra_texels, 1);
   }
 
  private:
@@ -242,6 +239,9 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
   bake.format_version = first.version;
   bake.config_toml = in.attribute<Imf::StringAttribute>(first.index, kAttrConfig).value();
   bake.orders_computed = in.attribute<Imf::IntAttribute>(first.index, kAttrOrders).value();
+  if (bake.orders_computed < 1 || bake.orders_computed > kMaxOrders) {
+    in.fail(fmt::format("attribute {} = {}: must be in [1, {}]", kAttrOrders, bake.orders_computed, kMaxOrders));
+  }
   bake.report_json = in.attribute<Imf::StringAttribute>(first.index, kAttrBakeReport).value();
   if (first.version >= 3) {
     bake.contents = readContentsAttributes(in.header(first.index), [&](const std::string& what) { in.fail(what); });

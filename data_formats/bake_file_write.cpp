@@ -20,6 +20,7 @@
 #include "bake_file_attributes.h"
 #include "bake_file_contents.h"
 #include "error.h"
+#include "table_values.h"
 
 namespace skybake {
 
@@ -175,6 +176,13 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
         (part.extra_texels != nullptr && part.extra_texels->size() != part.texels->size())) {
       throw Error(ErrorKind::Internal, fmt::format("{}: part {} has no data of its size", path.string(), part.name));
     }
+  }
+
+  // A table outside its range (a config whose numbers overflow float) is
+  // refused before anything is written: the existing file stays.
+  for (const PartToWrite& part : parts) {
+    checkTableValues(path.string(), part.name, *part.texels, bake.contents.atmosphere.channelCount());
+    if (part.extra_texels != nullptr) checkTableValues(path.string(), part.name, *part.extra_texels, 1);
   }
 
   writeFileAtomically(path, [&](const std::filesystem::path& temp) {

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "angles.h"
+#include "bake_file.h"
 #include "config.h"
 #include "error.h"
 
@@ -28,6 +30,20 @@ constexpr int kMin2DSize = 2;
 constexpr int kMax2DSize = 8192;
 constexpr int kMax4DAxis = 1024;
 constexpr long long kMaxScatteringTexels = 1LL << 28;  // 4 GiB of float4
+// The tables are float (largest 3.4e38). The optical depth along the longest
+// ray through the atmosphere (the chord along the ground's horizon, both
+// ways) is stored and summed: a coefficient of 3e38 m^-1 made it infinite,
+// and the bake wrote a file its own reader refuses. 1e20 is far beyond any
+// atmosphere (Venus's horizontal optical depth is ~1e4) and leaves float
+// room for the sums.
+constexpr double kMaxOpticalDepth = 1e20;
+// Sun irradiance, W m^-2 nm^-1: radiance tables hold it times scattering
+// integrals and phase functions, densities times coefficients too. 1e15
+// times the Sun's at Earth keeps those products inside float.
+constexpr double kMaxSunIrradiance = 1e15;
+// The sun disk's radiance, irradiance over the disk's solid angle
+// (Sky::solarRadiance): a tiny disk of a bright sun would overflow float.
+constexpr double kMaxSunRadiance = 1e30;
 
 class Checker {
  public:
@@ -70,6 +86,48 @@ class Checker {
   const std::string& source_;
 };
 
+// Products of the parameters that the bake stores in float must fit it.
+// Densities are clamped to [0, 1], so a coefficient bounds its constituent.
+void checkFloatRange(const Checker& check, const AtmosphereParameters& a) {
+  const int n = a.channelCount();
+  const double chord_m = 2.0 * std::sqrt(a.top_radius_m * a.top_radius_m - a.bottom_radius_m * a.bottom_radius_m);
+  for (int c = 0; c < n; ++c) {
+    const struct {
+      const char* key;
+      float value;  // printed as the config gave it
+    } parts[] = {{"rayleigh.scattering", a.rayleigh_scattering[c]},
+                 {"mie.extinction", a.mie_extinction[c]},
+                 {"absorption.extinction", a.absorption_extinction[c]}};
+    double total = 0.0;
+    const char* largest = parts[0].key;
+    float largest_value = -1.0f;
+    for (const auto& p : parts) {
+      total += p.value;
+      if (p.value > largest_value) largest = p.key, largest_value = p.value;
+    }
+    if (total * chord_m > kMaxOpticalDepth) {
+      check.fail(fmt::format("{}[{}]", largest, c), fmt::format("{}", largest_value),
+                 fmt::format("the optical depth along the longest ray through the atmosphere ({} m) would be {:.3g}, "
+                             "beyond the {:g} the float tables hold",
+                             chord_m, total * chord_m, kMaxOpticalDepth));
+    }
+    if (a.sun_irradiance[c] > kMaxSunIrradiance) {
+      check.fail(fmt::format("sun.irradiance[{}]", c), fmt::format("{}", a.sun_irradiance[c]),
+                 fmt::format("must be <= {:g} W m^-2 nm^-1: the radiance tables hold it times scattering "
+                             "integrals, in float",
+                             kMaxSunIrradiance));
+    }
+    const double disk_solid_angle_sr =
+        4.0 * kPi * std::pow(std::sin(0.5 * a.sun_angular_radius_rad), 2);  // 2 pi (1 - cos), no cancellation
+    if (a.sun_angular_radius_rad > 0.0 && a.sun_irradiance[c] > kMaxSunRadiance * disk_solid_angle_sr) {
+      check.fail("sun.angular_radius_rad", fmt::format("{}", a.sun_angular_radius_rad),
+                 fmt::format("too small for sun.irradiance[{}] = {}: the disk's radiance would exceed {:g} "
+                             "W m^-2 sr^-1 nm^-1 (use 0 for a point sun)",
+                             c, a.sun_irradiance[c], kMaxSunRadiance));
+    }
+  }
+}
+
 }  // namespace
 
 void validateConfig(const BakeConfig& config, const std::string& source) {
@@ -84,6 +142,15 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
     const std::string key = fmt::format("channels.wavelengths_nm[{}]", c);
     check.finite(key, a.wavelengths_nm[c]);
     if (a.wavelengths_nm[c] <= 0.0) check.fail(key, fmt::format("{}", a.wavelengths_nm[c]), "must be > 0");
+    // The file names each channel by its wavelength: two equal ones would
+    // share one channel, and the first came out as radiance 0.
+    for (int earlier = 0; earlier < c; ++earlier) {
+      if (channelName(a.wavelengths_nm[earlier]) == channelName(a.wavelengths_nm[c])) {
+        check.fail(
+            key, fmt::format("{}", a.wavelengths_nm[c]),
+            fmt::format("repeats channels.wavelengths_nm[{}]: each channel is named by its wavelength", earlier));
+      }
+    }
   }
 
   check.range("planet.bottom_radius_m", a.bottom_radius_m, kMinPlanetRadius_m, kMaxPlanetRadius_m);
@@ -124,6 +191,7 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
   check.profile("mie", a.mie_density);
   check.nonNegative("absorption.extinction", a.absorption_extinction, n);
   check.profile("absorption", a.absorption_density);
+  checkFloatRange(check, a);
 
   const TextureSizes& s = config.sizes;
   auto size = [&](const std::string& key, int v, int lo, int hi) {

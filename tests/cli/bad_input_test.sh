@@ -130,6 +130,15 @@ config_with 'orders = 3\ntail_estimate = "yes"'
 kept "$work/kept.exr" "c.toml:39: bake.tail_estimate = 'yes': must be true or false" -- bake "$work/c.toml" -o "$work/kept.exr"
 config_with 'orders = "many"'
 kept "$work/kept.exr" "c.toml:38: bake.orders = 'many': must be a whole number or \"auto\"" -- bake "$work/c.toml" -o "$work/kept.exr"
+# Numbers whose products overflow the float tables: the bake used to exit 0,
+# replace the good file and write one its own reader refused. Repeated
+# wavelengths shared one channel of the file.
+sed '18s/5.802e-6/3e38/' "$small" >"$work/huge_rayleigh.toml"
+kept "$work/kept.exr" "huge_rayleigh.toml: rayleigh.scattering[0] = 3e+38: the optical depth along the longest ray" -- bake "$work/huge_rayleigh.toml" -o "$work/kept.exr"
+sed '13s/1.474/3e38/' "$small" >"$work/huge_sun.toml"
+kept "$work/kept.exr" "huge_sun.toml: sun.irradiance[0] = 3e+38: must be <= 1e+15" -- bake "$work/huge_sun.toml" -o "$work/kept.exr"
+sed '5s/680.0, 550.0/680.0, 680.0/' "$small" >"$work/twice_680.toml"
+kept "$work/kept.exr" "twice_680.toml: channels.wavelengths_nm[1] = 680: repeats channels.wavelengths_nm[0]" -- bake "$work/twice_680.toml" -o "$work/kept.exr"
 # A key nested 50000 levels deep (100 kB) overflowed the TOML parser's stack
 # (exit 139); it is refused before parsing.
 { cat "$small"; printf 'a'; for _ in $(seq 50000); do printf '.a'; done; printf ' = 1\n'; } >"$work/deep.toml"

@@ -11,12 +11,15 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfMultiPartOutputFile.h>
+#include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
@@ -78,23 +81,35 @@ void expectRefused(const fs::path& path, const std::string& fragment) {
   }
 }
 
-// The headers of a bake whose attributes claim `contents.sizes`, every
-// part's window matching them, and no pixel data: to the reader, a small file
-// that promises huge tables.
-void writeHeadersOnly(const fs::path& path, const BakeContents& contents) {
-  const TextureSizes& s = contents.sizes;
+// What a hostile writer can put in a file that skybake's own writer refuses
+// to write.
+struct RawBake {
+  BakeContents contents;
+  const BakeTables* tables = nullptr;  // null: headers only (no pixel data)
+  Imf::PixelType channel_type = Imf::FLOAT;
+  int orders = 1;
+};
+
+// Every part of `raw.contents` with the attributes a skybake writer gives
+// them, and the tables' pixels when there are tables. Headers only, to the
+// reader, is a small file that promises the tables its attributes describe.
+void writeRawBake(const fs::path& path, const RawBake& raw) {
+  const TextureSizes& s = raw.contents.sizes;
   const int atlas_width = s.scattering_nu * s.scattering_mu_s;
   const int atlas_height = s.scattering_r * s.scattering_mu;
+  const BakeTables empty;
+  const BakeTables& t = raw.tables != nullptr ? *raw.tables : empty;
   const struct {
     const char* name;
     int width;
     int height;
-  } parts[] = {{bake_file::kPartOpticalDepth, s.transmittance_mu, s.transmittance_r},
-               {bake_file::kPartSingleRayleigh, atlas_width, atlas_height},
-               {bake_file::kPartSingleMie, atlas_width, atlas_height},
-               {bake_file::kPartMultipleScattering, atlas_width, atlas_height},
-               {bake_file::kPartIrradiance, s.irradiance_mu_s, s.irradiance_r},
-               {bake_file::kPartMultipleDensity, atlas_width, atlas_height}};
+    const std::vector<Spectrum>* texels;
+  } parts[] = {{bake_file::kPartOpticalDepth, s.transmittance_mu, s.transmittance_r, &t.optical_depth.texels},
+               {bake_file::kPartSingleRayleigh, atlas_width, atlas_height, &t.single_rayleigh.texels},
+               {bake_file::kPartSingleMie, atlas_width, atlas_height, &t.single_mie.texels},
+               {bake_file::kPartMultipleScattering, atlas_width, atlas_height, &t.multiple_scattering.texels},
+               {bake_file::kPartIrradiance, s.irradiance_mu_s, s.irradiance_r, &t.irradiance.texels},
+               {bake_file::kPartMultipleDensity, atlas_width, atlas_height, &t.multiple_density.texels}};
   // Parts of a multi-part file share one display window.
   Imath::Box2i display_window({0, 0}, {0, 0});
   for (const auto& part : parts) display_window.extendBy(Imath::V2i(part.width - 1, part.height - 1));
@@ -104,18 +119,30 @@ void writeHeadersOnly(const fs::path& path, const BakeContents& contents) {
     header.setName(part.name);
     header.setType(Imf::SCANLINEIMAGE);
     header.compression() = Imf::ZIP_COMPRESSION;
-    for (double wavelength : contents.atmosphere.wavelengths_nm) {
-      header.channels().insert(channelName(wavelength), Imf::Channel(Imf::FLOAT));
+    for (double wavelength : raw.contents.atmosphere.wavelengths_nm) {
+      header.channels().insert(channelName(wavelength), Imf::Channel(raw.channel_type));
     }
     header.insert(bake_file::kAttrFormatVersion, Imf::IntAttribute(kBakeFormatVersion));
-    insertContentsAttributes(contents, header);
-    header.insert(bake_file::kAttrConfig, Imf::StringAttribute("name = \"headers only\"\n"));
-    header.insert(bake_file::kAttrOrders, Imf::IntAttribute(1));
+    insertContentsAttributes(raw.contents, header);
+    header.insert(bake_file::kAttrConfig, Imf::StringAttribute("name = \"raw\"\n"));
+    header.insert(bake_file::kAttrOrders, Imf::IntAttribute(raw.orders));
     header.insert(bake_file::kAttrBakeReport, Imf::StringAttribute("{}"));
     headers.push_back(header);
   }
-  // Closed without pixels: OpenEXR leaves the chunk table empty.
   Imf::MultiPartOutputFile file(path.c_str(), headers.data(), static_cast<int>(headers.size()));
+  if (raw.tables == nullptr) return;  // closed without pixels: OpenEXR leaves the chunk table empty
+  for (size_t i = 0; i < headers.size(); ++i) {
+    Imf::OutputPart out(file, static_cast<int>(i));
+    Imf::FrameBuffer frame;
+    char* base = const_cast<char*>(reinterpret_cast<const char*>(parts[i].texels->data()));
+    for (size_t c = 0; c < raw.contents.atmosphere.wavelengths_nm.size(); ++c) {
+      frame.insert(
+          channelName(raw.contents.atmosphere.wavelengths_nm[c]),
+          Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum), sizeof(Spectrum) * parts[i].width));
+    }
+    out.setFrameBuffer(frame);
+    out.writePixels(parts[i].height);
+  }
 }
 
 class BakeFileCorruptTest : public ::testing::Test {
@@ -192,9 +219,55 @@ TEST_F(BakeFileCorruptTest, TablesLargerThanTheFileCanHoldAreRefused) {
   contents.sizes.transmittance_mu = 8192;
   contents.sizes.transmittance_r = 8192;
   const fs::path corrupt = dir / "huge_tables.exr";
-  writeHeadersOnly(corrupt, contents);
+  writeRawBake(corrupt, {contents});
   ASSERT_LT(fs::file_size(corrupt), 1u << 20);
   expectRefused(corrupt, "more than a file of");
+}
+
+// Values no bake writes, channel types no bake uses and an impossible order
+// count are refused naming the part or attribute, the value and the reason.
+TEST_F(BakeFileCorruptTest, ValuesOutsideEachTablesRangeAreRefused) {
+  BakeFile bake = tinyBake();
+  for (Spectrum& v : bake.tables.single_rayleigh.texels) v = Spectrum(1.0f, 1.0f, 1.0f, 0.0f);
+  const fs::path path = dir / "raw.exr";
+  auto refusedWith = [&](BakeTables tables, const std::string& fragment) {
+    writeRawBake(path, {bake.contents, &tables});
+    expectRefused(path, fragment);
+  };
+  // The raw writer's file of good tables reads: each refusal below is its one change.
+  writeRawBake(path, {bake.contents, &bake.tables});
+  EXPECT_NO_THROW(readBakeFile(path));
+  BakeTables t = bake.tables;
+  t.optical_depth.texels[3] = Spectrum(-5.0f, 0.0f, 0.0f, 0.0f);
+  refusedWith(t, "part 'optical_depth' holds -5 at texel 3 (channel 0): negative");
+  t = bake.tables;
+  t.single_rayleigh.texels[1][2] = -1e-3f;
+  refusedWith(t, "part 'single_rayleigh' holds -0.001 at texel 1 (channel 2): negative");
+  t = bake.tables;
+  t.multiple_scattering.texels[0][1] = 3e38f;
+  refusedWith(t, "part 'multiple_scattering' holds 3e+38 at texel 0 (channel 1): larger than any bake writes");
+
+  writeRawBake(path, {bake.contents, nullptr, Imf::UINT});
+  expectRefused(path, "part 'optical_depth' channel 680nm holds integers; tables are FLOAT or HALF");
+  writeRawBake(path, {bake.contents, &bake.tables, Imf::FLOAT, -5});
+  expectRefused(path, "attribute skybake:orders = -5: must be in [1, 1000]");
+}
+
+// skybake's writer refuses to write what its reader would refuse, and the
+// existing file stays.
+TEST_F(BakeFileCorruptTest, TheWriterRefusesTablesOutsideTheirRange) {
+  BakeFile bake = tinyBake();
+  const auto before = fileBytes(good);
+  bake.tables.multiple_scattering.texels[2] = Spectrum(std::numeric_limits<float>::infinity());
+  try {
+    writeBakeFile(good, bake);
+    FAIL() << "wrote a non-finite table";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("part 'multiple_scattering' holds inf at texel 2"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(fileBytes(good), before);
 }
 
 }  // namespace

@@ -383,3 +383,40 @@ TEST(Config, RefusesNestingDeeperThanTheParserCanTakeBeforeParsing) {
 
 }  // namespace
 }  // namespace skybake
+
+namespace skybake {
+namespace {
+
+// Numbers whose products the float tables cannot hold are refused by the
+// config check, naming the key: with 3e38 the bake wrote a file its own
+// reader refused (a non-finite optical depth or radiance).
+TEST(Config, RefusesCoefficientsAndIrradianceThatOverflowTheFloatTables) {
+  expectRejected(kMinimal + "[rayleigh]\nscattering = [3e38]\ndensity = []\n",
+                 {"rayleigh.scattering[0] = 3e+38", "optical depth along the longest ray"});
+  expectRejected(kMinimal + "[absorption]\nextinction = [1e16]\ndensity = []\n", {"absorption.extinction[0] = 1e+16"});
+  expectRejected(edited("irradiance = [1.8]", "irradiance = [3e38]"), {"sun.irradiance[0] = 3e+38", "<= 1e+15"});
+  expectRejected(edited("irradiance = [1.8]", "irradiance = [1e15]\nangular_radius_rad = 1e-20"),
+                 {"sun.angular_radius_rad = 1e-20", "use 0 for a point sun"});
+  // Earth's numbers and a point sun are far inside.
+  EXPECT_NO_THROW(parseConfig(edited("irradiance = [1.8]", "irradiance = [1e15]"), "test.toml"));
+  EXPECT_NO_THROW(parseConfig(kMinimal + "[rayleigh]\nscattering = [1e12]\ndensity = []\n", "test.toml"));
+}
+
+// Two channels of one wavelength would share one channel of the file (the
+// first came out as radiance 0): refused.
+TEST(Config, RefusesRepeatedWavelengths) {
+  BakeConfig c = builtinEarthConfig();
+  c.atmosphere.wavelengths_nm = {680.0, 680.0, 440.0};
+  try {
+    validateConfig(c, "earth.toml");
+    FAIL() << "accepted repeated wavelengths";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("channels.wavelengths_nm[1] = 680: repeats channels.wavelengths_nm[0]"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace skybake
