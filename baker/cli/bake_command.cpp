@@ -22,6 +22,7 @@
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/size_choice.h"
 #include "baker/cli/terminal_progress.h"
+#include "baker/cli/terminal_text.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
@@ -182,8 +183,8 @@ void runBake(const BakeOptions& o) {
                            : fmt::format(", automatic: NOT converged, last order {:.2g} of the total at the cap of {}",
                                          decision.last_order_share, decision.cap);
   fmt::print(stderr, "skybake: baked '{}' ({} orders{}) into {} ({:.1f} MiB) in {:.2f} s on {} threads: {}\n",
-             config.name, bake.file.orders_computed, orders_note, o.output_path, bytes / (1024.0 * 1024.0),
-             bake.report.wall_seconds, bake.report.threads, stageSummary(bake.report));
+             terminalSafe(config.name), bake.file.orders_computed, orders_note, o.output_path,
+             bytes / (1024.0 * 1024.0), bake.report.wall_seconds, bake.report.threads, stageSummary(bake.report));
 }
 
 }  // namespace

@@ -4,13 +4,51 @@
 
 #include "baker/bake/bake_policy.h"
 #include "baker/cli/commands.h"
+#include "baker/cli/terminal_text.h"
 #include "data_formats/bake_file.h"
 #include "data_formats/config.h"
+#include "data_formats/error.h"
 #include "data_formats/texture_mapping.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {
 namespace {
+
+// A number of the bake report, or a bad-input error naming the file, the key
+// and what the report holds instead (a report is opaque to readers of the
+// tables, but info prints it).
+double reportNumber(const nlohmann::ordered_json& report, const char* key, const std::string& path) {
+  const auto it = report.find(key);
+  if (it == report.end()) return 0.0;
+  if (!it->is_number()) {
+    throwBadInput(
+        fmt::format("{} [skybake:bake_report]: {} = {}: must be a number", path, key, terminalSafe(it->dump())));
+  }
+  return it->get<double>();
+}
+
+void printBakeTime(const std::string& report_json, const std::string& path) {
+  const nlohmann::ordered_json report = nlohmann::ordered_json::parse(report_json, nullptr, false);
+  if (!report.is_object() || !report.contains("wall_seconds")) {
+    fmt::print("bake time:     not recorded (reproducible bake)\n");
+    return;
+  }
+  fmt::print("bake time:     {:.2f} s wall, {:.2f} s CPU, {} threads, peak memory {:.0f} MiB\n",
+             reportNumber(report, "wall_seconds", path), reportNumber(report, "cpu_seconds", path),
+             reportNumber(report, "threads", path), reportNumber(report, "peak_memory_mib", path));
+  const auto stages = report.find("stage_seconds");
+  if (stages == report.end()) return;
+  if (!stages->is_object()) {
+    throwBadInput(fmt::format("{} [skybake:bake_report]: stage_seconds: must be an object of numbers", path));
+  }
+  for (const auto& [stage, seconds] : stages->items()) {
+    if (!seconds.is_number()) {
+      throwBadInput(fmt::format("{} [skybake:bake_report]: stage_seconds.{} = {}: must be a number", path,
+                                terminalSafe(stage), terminalSafe(seconds.dump())));
+    }
+    fmt::print("  {:<22} {:8.3f} s\n", terminalSafe(stage), seconds.get<double>());
+  }
+}
 
 void runInfo(const std::string& path) {
   const BakeFile bake = readBakeFile(path);
@@ -21,7 +59,7 @@ void runInfo(const std::string& path) {
   const BakeConfig made_from = parseConfig(bake.config_toml, path + " [skybake:config]");
   fmt::print("file:          {}\n", path);
   fmt::print("format:        skybake version {}\n", bake.format_version);
-  fmt::print("atmosphere:    {}\n", made_from.name);
+  fmt::print("atmosphere:    {}\n", terminalSafe(made_from.name));
   std::string wavelengths;
   for (double w : c.atmosphere.wavelengths_nm) wavelengths += fmt::format("{} nm  ", w);
   fmt::print("channels:      {}\n", wavelengths);
@@ -67,20 +105,8 @@ void runInfo(const std::string& path) {
         left_out_mib);
   }
 
-  const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report_json, nullptr, false);
-  if (report.is_object() && report.contains("wall_seconds")) {
-    fmt::print("bake time:     {:.2f} s wall, {:.2f} s CPU, {} threads, peak memory {:.0f} MiB\n",
-               report.value("wall_seconds", 0.0), report.value("cpu_seconds", 0.0), report.value("threads", 0),
-               report.value("peak_memory_mib", 0.0));
-    if (report.contains("stage_seconds")) {
-      for (const auto& [stage, seconds] : report["stage_seconds"].items()) {
-        fmt::print("  {:<22} {:8.3f} s\n", stage, seconds.get<double>());
-      }
-    }
-  } else {
-    fmt::print("bake time:     not recorded (reproducible bake)\n");
-  }
-  fmt::print("\nthe config it was baked from (TOML):\n{}", bake.config_toml);
+  printBakeTime(bake.report_json, path);
+  fmt::print("\nthe config it was baked from (TOML):\n{}", terminalSafe(bake.config_toml, true));
 }
 
 }  // namespace

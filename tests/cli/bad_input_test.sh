@@ -226,6 +226,18 @@ for command in info "lookup irradiance" render validate; do
   kept "$out" "no_part.exr: part 'optical_depth' is missing" -- $command "$work/no_part.exr" "${extra[@]}"
 done
 kept "$work/existing.png" "flipped.exr: not a readable skybake bake file: " -- render "$work/flipped.exr" "${render_v[@]}"
+# A bake report whose numbers are text is refused naming the key (it ended in
+# "internal error", exit 1).
+"$skybake" bake "$small" -o "$work/timed.exr" --threads 2 2>/dev/null
+$corrupt "$work/timed.exr" "$work/bad_report.exr" replace $'"threads": 2,\n ' $'"threads":"2",\n'
+refused 'bad_report.exr [skybake:bake_report]: threads = "2": must be a number' -- info "$work/bad_report.exr"
+# Names holding terminal escape sequences are printed escaped, by bake and info.
+sed 's/^name = .*/name = "red\\u001b[31mtext"/' "$small" >"$work/escape.toml"
+"$skybake" bake "$work/escape.toml" -o "$work/escape.exr" --reproducible >"$work/stdout" 2>"$work/stderr"
+"$skybake" info "$work/escape.exr" >>"$work/stdout" 2>>"$work/stderr"
+if grep -q $'\x1b' "$work/stdout" "$work/stderr"; then fail "a name's escape sequence was printed raw"; fi
+grep -qF 'red\x1b[31mtext' "$work/stderr" || fail "bake does not print the escaped name: $(cat "$work/stderr")"
+grep -qF 'atmosphere:    red\x1b[31mtext' "$work/stdout" || fail "info does not print the escaped name: $(head -5 "$work/stdout")"
 refused "text.exr: not a readable skybake bake file" -- info "$work/text.exr"
 refused "no_such.exr: no such bake file" -- info "$work/no_such.exr"
 refused ": is a directory, not a bake file" -- info "$work"

@@ -4,6 +4,7 @@
 corrupt_bake.py IN OUT version N      every part's skybake:format_version set to N
 corrupt_bake.py IN OUT rename OLD NEW the part named OLD renamed NEW (same length)
 corrupt_bake.py IN OUT flip FRACTION  one byte at FRACTION of the file inverted
+corrupt_bake.py IN OUT replace OLD NEW every OLD in the headers replaced by NEW (same length)
 
 OpenEXR header attributes are stored as name NUL, type NUL, a little-endian
 int32 size, then the value; the headers are not compressed, so an attribute
@@ -33,6 +34,11 @@ def main() -> None:
         old, new = (attribute("name", "string", name.encode()) for name in args)
         if len(old) != len(new) or data.count(old) != 1:
             sys.exit(f"{source}: no single part named {args[0]}, or the new name's length differs")
+        data = data.replace(old, new)
+    elif action == "replace":
+        old, new = (text.encode() for text in args)
+        if len(old) != len(new) or data.count(old) == 0:
+            sys.exit(f"{source}: no {args[0]!r} in the file, or the replacement's length differs")
         data = data.replace(old, new)
     elif action == "flip":
         data[int(float(args[0]) * (len(data) - 1))] ^= 0xFF
