@@ -16,15 +16,20 @@ namespace skybake {
 // Refuses, before any work is done, an output path that cannot be written:
 // empty, an existing directory, in a directory that does not exist, in one
 // this process may not create files in, or the same file as one of the
-// command's `inputs` (which the output would replace). Throws Error(BadInput)
-// "<path>: <reason>".
+// command's `inputs` (which the output would replace), a special file (a
+// device, a pipe, a socket), a symbolic link to nothing, or a name whose
+// temporary file's name would be too long for the file system. Throws
+// Error(BadInput) "<path>: <reason>".
 void requireWritableOutput(const std::filesystem::path& path, std::initializer_list<std::filesystem::path> inputs = {});
 
 // Calls write(temp) with a temporary path beside `path` (same directory, so
 // the final rename is atomic; same extension, so format-by-extension writers
 // pick the right format), then renames temp onto path. If write throws or the
 // rename fails, the temporary file is removed and Error(BadInput) names `path`
-// and the reason (an Error thrown by write passes through unchanged).
+// and the reason (an Error thrown by write passes through unchanged). A
+// symbolic link is written through (its target replaced, the link kept); a
+// special file is refused. Temporary files of the same destination left by
+// runs that were killed (whose process is gone) are removed first.
 void writeFileAtomically(const std::filesystem::path& path,
                          const std::function<void(const std::filesystem::path& temp)>& write);
 

@@ -264,6 +264,15 @@ refused "no/x.csv: output directory $work/no does not exist" -- validate "$work/
 refused "no/x.json: output directory $work/no does not exist" -- "${compare_one[@]}" --json "$work/no/x.json"
 refused "no/x.json: output directory $work/no does not exist" -- "${stress_one[@]}" --json "$work/no/x.json"
 refused "existing.csv/x.exr: $work/existing.csv is not a directory" -- bake "$small" -o "$work/existing.csv/x.exr"
+# A special file is refused before the work and stays what it was (the
+# rename replaced /dev/null itself with a regular file, as root); a name too
+# long for its temporary file is refused before the work too.
+mkfifo "$work/out/pipe.exr"
+refused "pipe.exr: is a named pipe, not a regular file" -- bake "$small" -o "$work/out/pipe.exr"
+[ -p "$work/out/pipe.exr" ] || fail "bake -o a named pipe replaced it"
+rm -f "$work/out/pipe.exr"
+long_name=$(printf 'n%.0s' $(seq 250)).exr
+refused "the file name is too long" -- bake "$small" -o "$work/out/$long_name"
 kept "$work/good.exr" "good.exr: is also an input ($work/good.exr); the output would replace it" -- render "$work/good.exr" "${view[@]}" -o "$work/good.exr"
 kept "$work/e.csv" "e.csv: is also an input ($work/e.csv); the output would replace it" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv" -o "$work/e.csv"
 cp "$small" "$work/config.exr"
