@@ -61,25 +61,35 @@ void requireInsideRanges(const CsvTable& q, size_t row, const RadianceQueryColum
                          const std::string& bake_path) {
   const BakedRanges& ranges = sky.bakedRanges();
   const AtmosphereParameters& a = sky.atmosphere();
-  const std::string altitudes =
-      fmt::format("outside the altitudes {} covers ({:g} to {:g} m, its scene.altitude_range_m)", bake_path,
-                  ranges.altitude_min_m, ranges.altitude_max_m);
-  if (!ranges.containsAltitude(q.value(row, columns.altitude_m))) {
-    q.failCell(row, columns.altitude_m, "m is " + altitudes);
-  }
-  if (!ranges.containsSunZenith(q.value(row, columns.sun_zenith_deg))) {
+  // What a value outside the ranges means: below the ground for a bake of
+  // every altitude, outside the scene's range for a narrowed one.
+  auto altitudeReason = [&](double altitude_m) {
+    if (altitude_m < ranges.altitude_min_m && ranges.altitude_min_m <= 0.0) return std::string("is below the ground");
+    return fmt::format("is outside the altitudes {} covers ({:g} to {:g} m, its scene.altitude_range_m)", bake_path,
+                       ranges.altitude_min_m, ranges.altitude_max_m);
+  };
+  const double altitude_m = q.value(row, columns.altitude_m);
+  if (!ranges.containsAltitude(altitude_m)) q.failCell(row, columns.altitude_m, "m " + altitudeReason(altitude_m));
+  const double sun_zenith_deg = q.value(row, columns.sun_zenith_deg);
+  if (!ranges.containsSunZenith(sun_zenith_deg)) {
+    const bool whole_sun_axis = ranges.sun_zenith_min_deg <= 0.0 && ranges.sun_zenith_max_deg >= a.sun_max_zenith_deg;
     q.failCell(row, columns.sun_zenith_deg,
-               fmt::format("deg is outside the sun angles {} covers ({:g} to {:g} deg, its scene.sun_zenith_range_deg)",
-                           bake_path, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg));
+               whole_sun_axis
+                   ? fmt::format("deg is lower than the lowest sun {} holds (its sun.max_zenith_deg, {:g} deg)",
+                                 bake_path, a.sun_max_zenith_deg)
+                   : fmt::format("deg is outside the sun angles {} covers ({:g} to {:g} deg, its "
+                                 "scene.sun_zenith_range_deg)",
+                                 bake_path, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg));
   }
   if (columns.distance_m && q.value(row, *columns.distance_m) > 0.0) {
-    const glm::dvec3 camera = cameraAtAltitude(a.bottom_radius_m, q.value(row, columns.altitude_m));
+    const glm::dvec3 camera = cameraAtAltitude(a.bottom_radius_m, altitude_m);
     const glm::dvec3 view =
         directionFromZenithAzimuthDeg(q.value(row, columns.view_zenith_deg), q.value(row, columns.view_azimuth_deg));
     const double point_altitude_m = glm::length(camera + view * q.value(row, *columns.distance_m)) - a.bottom_radius_m;
     if (!ranges.containsAltitude(point_altitude_m)) {
       q.failCell(row, *columns.distance_m,
-                 fmt::format("m away puts the point at altitude {:.0f} m, {}", point_altitude_m, altitudes));
+                 fmt::format("m away puts the point at altitude {:.3g} m, which {}", point_altitude_m,
+                             altitudeReason(point_altitude_m)));
     }
   }
 }
