@@ -167,18 +167,42 @@ void writeFileAtomically(const std::filesystem::path& path,
   }
 }
 
-void writeFileContentsAtomically(const std::filesystem::path& path, std::string_view contents) {
+void writeFileStreamAtomically(const std::filesystem::path& path,
+                               const std::function<void(const std::function<void(std::string_view)>& emit)>& produce) {
+  // Pieces are gathered up to this size before each write: one system call
+  // per line of a ten-million-line output would dominate its time.
+  constexpr size_t kBufferBytes = 1 << 20;
   writeFileAtomically(path, [&](const std::filesystem::path& temp) {
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) throwBadInput(fmt::format("{}: cannot write: {}", path.string(), std::strerror(errno)));
-    const bool written = writeAll(fd, contents);
-    const int write_errno = errno;
+    // Closed on every way out; an error closing it is reported below.
+    struct Closer {
+      int& fd;
+      ~Closer() {
+        if (fd >= 0) ::close(fd);
+      }
+    } closer{fd};
+    std::string buffer;
+    buffer.reserve(kBufferBytes);
+    auto flush = [&] {
+      if (!writeAll(fd, buffer))
+        throwBadInput(fmt::format("{}: cannot write: {}", path.string(), std::strerror(errno)));
+      buffer.clear();
+    };
+    produce([&](std::string_view piece) {
+      buffer.append(piece);
+      if (buffer.size() >= kBufferBytes) flush();
+    });
+    flush();
     // close reports errors some file systems (NFS) only find at the end.
-    const bool closed = ::close(fd) == 0;
-    if (!written || !closed) {
-      throwBadInput(fmt::format("{}: cannot write: {}", path.string(), std::strerror(written ? errno : write_errno)));
-    }
+    const int closed = ::close(fd);
+    fd = -1;
+    if (closed != 0) throwBadInput(fmt::format("{}: cannot write: {}", path.string(), std::strerror(errno)));
   });
+}
+
+void writeFileContentsAtomically(const std::filesystem::path& path, std::string_view contents) {
+  writeFileStreamAtomically(path, [&](const std::function<void(std::string_view)>& emit) { emit(contents); });
 }
 
 }  // namespace skybake

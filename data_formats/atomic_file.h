@@ -40,4 +40,10 @@ void writeFileAtomically(const std::filesystem::path& path,
 // through OpenImageIO does not) encode to memory and write through this.
 void writeFileContentsAtomically(const std::filesystem::path& path, std::string_view contents);
 
+// The same for contents produced piece by piece: produce(emit) calls emit
+// with each piece, in order; memory stays that of one buffer (1 MiB) however
+// long the output.
+void writeFileStreamAtomically(const std::filesystem::path& path,
+                               const std::function<void(const std::function<void(std::string_view)>& emit)>& produce);
+
 }  // namespace skybake

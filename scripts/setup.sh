@@ -15,6 +15,8 @@ packages=(
   clang libclang-rt-14-dev libomp-dev
   # tests/CMakeLists.txt's format_check: the code follows .clang-format.
   clang-format
+  # GNU time: tests/cli/lookup_memory_test.sh measures peak memory with it.
+  time
   python3 python3-numpy python3-matplotlib snakemake
 )
 

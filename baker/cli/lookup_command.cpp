@@ -1,4 +1,6 @@
 // skybake lookup radiance|irradiance FILE.exr --queries Q.csv [-o OUT.csv]
+#include <iterator>
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -22,7 +24,7 @@ struct LookupOptions {
 // "680" for 680 nm: the column suffix for a channel.
 std::string wavelengthLabel(double wavelength_nm) { return fmt::format("{}", wavelength_nm); }
 
-std::string headerWith(const CsvTable& q, const Sky& sky, std::initializer_list<const char*> prefixes) {
+std::string headerWith(const CsvReader& q, const Sky& sky, std::initializer_list<const char*> prefixes) {
   std::string header;
   for (const std::string& c : q.columns()) header += (header.empty() ? "" : ",") + c;
   for (const char* prefix : prefixes) {
@@ -31,14 +33,15 @@ std::string headerWith(const CsvTable& q, const Sky& sky, std::initializer_list<
   return header + "\n";
 }
 
-std::string inputCells(const CsvTable& q, size_t row) {
-  std::string line;
-  for (size_t c = 0; c < q.columns().size(); ++c) line += (c ? "," : "") + q.text(row, c);
-  return line;
+void appendInputCells(std::string& line, const CsvRow& row) {
+  for (size_t c = 0; c < row.texts.size(); ++c) {
+    if (c) line += ',';
+    line += row.texts[c];
+  }
 }
 
 void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
-  for (int c = 0; c < channels; ++c) line += fmt::format(",{:.9g}", s[c]);
+  for (int c = 0; c < channels; ++c) fmt::format_to(std::back_inserter(line), ",{:.9g}", s[c]);
 }
 
 // Output problems are found before the queries are read or the bake loaded.
@@ -57,7 +60,7 @@ void requireOutput(const std::string& bake_path, bool baked, const char* output)
 // Refuses, naming the query's cell and the bake, a query outside the bake's
 // scene ranges: the lookup would clamp it to the nearest baked altitude or
 // sun angle and print a value for a sky it did not bake.
-void requireInsideRanges(const CsvTable& q, size_t row, const RadianceQueryColumns& columns, const Sky& sky,
+void requireInsideRanges(const CsvReader& q, const CsvRow& row, const RadianceQueryColumns& columns, const Sky& sky,
                          const std::string& bake_path) {
   const BakedRanges& ranges = sky.bakedRanges();
   const AtmosphereParameters& a = sky.atmosphere();
@@ -68,9 +71,9 @@ void requireInsideRanges(const CsvTable& q, size_t row, const RadianceQueryColum
     return fmt::format("is outside the altitudes {} covers ({:g} to {:g} m, its scene.altitude_range_m)", bake_path,
                        ranges.altitude_min_m, ranges.altitude_max_m);
   };
-  const double altitude_m = q.value(row, columns.altitude_m);
+  const double altitude_m = row.values[columns.altitude_m];
   if (!ranges.containsAltitude(altitude_m)) q.failCell(row, columns.altitude_m, "m " + altitudeReason(altitude_m));
-  const double sun_zenith_deg = q.value(row, columns.sun_zenith_deg);
+  const double sun_zenith_deg = row.values[columns.sun_zenith_deg];
   if (!ranges.containsSunZenith(sun_zenith_deg)) {
     const bool whole_sun_axis = ranges.sun_zenith_min_deg <= 0.0 && ranges.sun_zenith_max_deg >= a.sun_max_zenith_deg;
     q.failCell(row, columns.sun_zenith_deg,
@@ -81,11 +84,11 @@ void requireInsideRanges(const CsvTable& q, size_t row, const RadianceQueryColum
                                  "scene.sun_zenith_range_deg)",
                                  bake_path, ranges.sun_zenith_min_deg, ranges.sun_zenith_max_deg));
   }
-  if (columns.distance_m && q.value(row, *columns.distance_m) > 0.0) {
+  if (columns.distance_m && row.values[*columns.distance_m] > 0.0) {
     const glm::dvec3 camera = cameraAtAltitude(a.bottom_radius_m, altitude_m);
     const glm::dvec3 view =
-        directionFromZenithAzimuthDeg(q.value(row, columns.view_zenith_deg), q.value(row, columns.view_azimuth_deg));
-    const double point_altitude_m = glm::length(camera + view * q.value(row, *columns.distance_m)) - a.bottom_radius_m;
+        directionFromZenithAzimuthDeg(row.values[columns.view_zenith_deg], row.values[columns.view_azimuth_deg]);
+    const double point_altitude_m = glm::length(camera + view * row.values[*columns.distance_m]) - a.bottom_radius_m;
     if (!ranges.containsAltitude(point_altitude_m)) {
       q.failCell(row, *columns.distance_m,
                  fmt::format("m away puts the point at altitude {:.3g} m, which {}", point_altitude_m,
@@ -94,58 +97,65 @@ void requireInsideRanges(const CsvTable& q, size_t row, const RadianceQueryColum
   }
 }
 
+// Rows are read, looked up and written one at a time: memory does not grow
+// with the number of queries. A bad row stops the lookup with its line and
+// column; an output file is then left as it was (standard output has the
+// rows before it).
 void runRadiance(const LookupOptions& o) {
   requireWritableLookupOutput(o);
-  const CsvTable q = CsvTable::read(o.queries_path);
+  CsvReader q(o.queries_path);
   const RadianceQueryColumns columns = radianceQueryColumns(q);
-  const size_t altitude = columns.altitude_m;
-  const size_t sun_zenith = columns.sun_zenith_deg;
-  const size_t view_zenith = columns.view_zenith_deg;
-  const size_t view_azimuth = columns.view_azimuth_deg;
-  const std::optional<size_t> distance = columns.distance_m;
-
   const Sky sky = Sky::load(o.bake_path);
   const int n = sky.channelCount();
-  std::string out = headerWith(q, sky, {"radiance", "transmittance"});
-  for (size_t row = 0; row < q.rowCount(); ++row) {
-    const glm::dvec3 camera = cameraAtAltitude(sky.atmosphere().bottom_radius_m, q.value(row, altitude));
-    const glm::dvec3 sun = directionFromZenithAzimuthDeg(q.value(row, sun_zenith), 0.0);
-    const glm::dvec3 view = directionFromZenithAzimuthDeg(q.value(row, view_zenith), q.value(row, view_azimuth));
-    const double d = distance ? q.value(row, *distance) : 0.0;
-    if (d > 0.0) requireOutput(o.bake_path, sky.outputs().radiance_to_points, "radiance_to_points");
-    requireInsideRanges(q, row, columns, sky, o.bake_path);
-    const RadianceAndTransmittance v =
-        d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
-    std::string line = inputCells(q, row);
-    appendSpectrum(line, v.radiance, n);
-    appendSpectrum(line, v.transmittance, n);
-    out += line + "\n";
-  }
-  writeCsvOutput(o.output_path, out);
+  writeCsvOutput(o.output_path, [&](const std::function<void(std::string_view)>& emit) {
+    emit(headerWith(q, sky, {"radiance", "transmittance"}));
+    std::string line;
+    for (CsvRow row; q.next(row);) {
+      requireRadianceQueryRanges(q, row, columns);
+      const std::vector<double>& v = row.values;
+      const glm::dvec3 camera = cameraAtAltitude(sky.atmosphere().bottom_radius_m, v[columns.altitude_m]);
+      const glm::dvec3 sun = directionFromZenithAzimuthDeg(v[columns.sun_zenith_deg], 0.0);
+      const glm::dvec3 view = directionFromZenithAzimuthDeg(v[columns.view_zenith_deg], v[columns.view_azimuth_deg]);
+      const double d = columns.distance_m ? v[*columns.distance_m] : 0.0;
+      if (d > 0.0) requireOutput(o.bake_path, sky.outputs().radiance_to_points, "radiance_to_points");
+      requireInsideRanges(q, row, columns, sky, o.bake_path);
+      const RadianceAndTransmittance r =
+          d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
+      line.clear();
+      appendInputCells(line, row);
+      appendSpectrum(line, r.radiance, n);
+      appendSpectrum(line, r.transmittance, n);
+      line += '\n';
+      emit(line);
+    }
+  });
 }
 
 void runIrradiance(const LookupOptions& o) {
   requireWritableLookupOutput(o);
-  const CsvTable q = CsvTable::read(o.queries_path);
+  CsvReader q(o.queries_path);
   const size_t altitude = q.require("altitude_m");
   const size_t sun_zenith = q.require("sun_zenith_deg");
-  q.requireRange(altitude, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
-  q.requireRange(sun_zenith, 0.0, kMaxZenithAngle_deg);
-
   const Sky sky = Sky::load(o.bake_path);
   requireOutput(o.bake_path, sky.outputs().ground_irradiance, "ground_irradiance");
   const int n = sky.channelCount();
-  std::string out = headerWith(q, sky, {"sky_irradiance", "sun_irradiance"});
-  for (size_t row = 0; row < q.rowCount(); ++row) {
-    const glm::dvec3 point = cameraAtAltitude(sky.atmosphere().bottom_radius_m, q.value(row, altitude));
-    const glm::dvec3 sun = directionFromZenithAzimuthDeg(q.value(row, sun_zenith), 0.0);
-    const SunAndSkyIrradiance e = sky.irradiance(point, {0.0, 0.0, 1.0}, sun);
-    std::string line = inputCells(q, row);
-    appendSpectrum(line, e.sky, n);
-    appendSpectrum(line, e.sun, n);
-    out += line + "\n";
-  }
-  writeCsvOutput(o.output_path, out);
+  writeCsvOutput(o.output_path, [&](const std::function<void(std::string_view)>& emit) {
+    emit(headerWith(q, sky, {"sky_irradiance", "sun_irradiance"}));
+    std::string line;
+    for (CsvRow row; q.next(row);) {
+      q.requireRange(row, altitude, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+      q.requireRange(row, sun_zenith, 0.0, kMaxZenithAngle_deg);
+      const glm::dvec3 point = cameraAtAltitude(sky.atmosphere().bottom_radius_m, row.values[altitude]);
+      const glm::dvec3 sun = directionFromZenithAzimuthDeg(row.values[sun_zenith], 0.0);
+      const SunAndSkyIrradiance e = sky.irradiance(point, {0.0, 0.0, 1.0}, sun);
+      line.clear();
+      appendInputCells(line, row);
+      appendSpectrum(line, e.sky, n);
+      appendSpectrum(line, e.sun, n);
+      line += '\n';
+      emit(line);
+    }
+  });
 }
 
 CLI::App* addLookupKind(CLI::App& lookup, const char* name, const char* description, LookupOptions& options) {

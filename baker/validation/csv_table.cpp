@@ -55,103 +55,107 @@ bool readLine(std::istream& in, std::string& line, const std::string& path, int 
 
 }  // namespace
 
-CsvTable CsvTable::read(const std::filesystem::path& path) {
-  CsvTable table;
-  table.path_ = path.string();
+CsvReader::CsvReader(const std::filesystem::path& path) : path_(path.string()) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
-    throwBadInput(fmt::format("{}: is a directory, not a query file", table.path_));
+    throwBadInput(fmt::format("{}: is a directory, not a query file", path_));
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throwBadInput(fmt::format("{}: cannot open query file: {}", table.path_, std::strerror(errno)));
-  std::string line;
-  int line_number = 0;
-  while (readLine(in, line, table.path_, line_number + 1)) {
-    ++line_number;
-    if (line_number == 1 && line.starts_with(kUtf8ByteOrderMark)) line.erase(0, kUtf8ByteOrderMark.size());
-    if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
-    std::vector<std::string> cells = splitCells(line);
-    if (table.columns_.empty()) {
-      table.checkHeader(cells, line_number);
-      table.columns_ = std::move(cells);
-      table.header_line_ = line_number;
-      continue;
+  in_.open(path, std::ios::binary);
+  if (!in_) throwBadInput(fmt::format("{}: cannot open query file: {}", path_, std::strerror(errno)));
+  while (readLine(in_, line_, path_, line_number_ + 1)) {
+    ++line_number_;
+    if (line_number_ == 1 && line_.starts_with(kUtf8ByteOrderMark)) line_.erase(0, kUtf8ByteOrderMark.size());
+    if (line_.find_first_not_of(" \t\r") == std::string::npos || line_[0] == '#') continue;
+    std::vector<std::string> names = splitCells(line_);
+    for (size_t c = 0; c < names.size(); ++c) {
+      if (names[c].empty()) {
+        throwBadInput(fmt::format("{}:{}:{}: empty column name in the header", path_, line_number_, c + 1));
+      }
+      for (size_t earlier = 0; earlier < c; ++earlier) {
+        if (names[earlier] == names[c]) {
+          throwBadInput(fmt::format("{}:{}:{}: column '{}' appears twice (also column {})", path_, line_number_, c + 1,
+                                    names[c], earlier + 1));
+        }
+      }
     }
-    if (cells.size() != table.columns_.size()) {
-      throwBadInput(fmt::format("{}:{}:{}: {} cells, the header (line {}) has {} columns", table.path_, line_number,
-                                std::min(cells.size(), table.columns_.size()) + 1, cells.size(), table.header_line_,
-                                table.columns_.size()));
+    columns_ = std::move(names);
+    header_line_ = line_number_;
+    return;
+  }
+  if (in_.bad()) throwBadInput(fmt::format("{}:{}: read error", path_, line_number_ + 1));
+  throwBadInput(fmt::format("{}: no header row: the file is empty", path_));
+}
+
+bool CsvReader::next(CsvRow& row) {
+  if (readRow(row)) {
+    ++rows_read_;
+    return true;
+  }
+  if (in_.bad()) throwBadInput(fmt::format("{}:{}: read error", path_, line_number_ + 1));
+  if (rows_read_ == 0) throwBadInput(fmt::format("{}: no query rows after the header (line {})", path_, header_line_));
+  return false;
+}
+
+bool CsvReader::readRow(CsvRow& row) {
+  while (readLine(in_, line_, path_, line_number_ + 1)) {
+    ++line_number_;
+    if (line_.find_first_not_of(" \t\r") == std::string::npos || line_[0] == '#') continue;
+    std::vector<std::string> cells = splitCells(line_);
+    if (cells.size() != columns_.size()) {
+      throwBadInput(fmt::format("{}:{}:{}: {} cells, the header (line {}) has {} columns", path_, line_number_,
+                                std::min(cells.size(), columns_.size()) + 1, cells.size(), header_line_,
+                                columns_.size()));
     }
-    std::vector<double> values;
+    row.values.resize(cells.size());
     for (size_t c = 0; c < cells.size(); ++c) {
       double v = 0.0;
       const char* begin = cells[c].data();
       const char* end = begin + cells[c].size();
       const auto [ptr, ec] = std::from_chars(begin, end, v);
       if (cells[c].empty() || ec != std::errc() || ptr != end || !std::isfinite(v)) {
-        throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", table.path_, line_number, c + 1,
-                                  table.columns_[c], cells[c]));
+        throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", path_, line_number_, c + 1, columns_[c],
+                                  cells[c]));
       }
-      values.push_back(v);
+      row.values[c] = v;
     }
-    table.rows_.push_back(std::move(values));
-    table.texts_.push_back(std::move(cells));
-    table.line_numbers_.push_back(line_number);
+    row.texts = std::move(cells);
+    row.line_number = line_number_;
+    return true;
   }
-  if (in.bad()) throwBadInput(fmt::format("{}:{}: read error", table.path_, line_number + 1));
-  if (table.columns_.empty()) throwBadInput(fmt::format("{}: no header row: the file is empty", table.path_));
-  if (table.rows_.empty()) {
-    throwBadInput(fmt::format("{}: no query rows after the header (line {})", table.path_, table.header_line_));
-  }
-  return table;
+  return false;
 }
 
-void CsvTable::checkHeader(const std::vector<std::string>& names, int line_number) const {
-  for (size_t c = 0; c < names.size(); ++c) {
-    if (names[c].empty()) {
-      throwBadInput(fmt::format("{}:{}:{}: empty column name in the header", path_, line_number, c + 1));
-    }
-    for (size_t earlier = 0; earlier < c; ++earlier) {
-      if (names[earlier] == names[c]) {
-        throwBadInput(fmt::format("{}:{}:{}: column '{}' appears twice (also column {})", path_, line_number, c + 1,
-                                  names[c], earlier + 1));
-      }
-    }
-  }
-}
-
-std::optional<size_t> CsvTable::find(const std::string& name) const {
+std::optional<size_t> CsvReader::find(const std::string& name) const {
   for (size_t i = 0; i < columns_.size(); ++i) {
     if (columns_[i] == name) return i;
   }
   return std::nullopt;
 }
 
-size_t CsvTable::require(const std::string& name) const {
+size_t CsvReader::require(const std::string& name) const {
   if (auto i = find(name)) return *i;
   std::string present;
   for (const std::string& c : columns_) present += (present.empty() ? "" : ", ") + c;
   throwBadInput(fmt::format("{}:{}: missing column '{}' (the header has: {})", path_, header_line_, name, present));
 }
 
-void CsvTable::requireRange(size_t column, double lo, double hi) const {
-  for (size_t row = 0; row < rows_.size(); ++row) {
-    const double v = rows_[row][column];
-    if (v < lo || v > hi) failCell(row, column, fmt::format("is out of range [{:g}, {:g}]", lo, hi));
-  }
+void CsvReader::requireRange(const CsvRow& row, size_t column, double lo, double hi) const {
+  const double v = row.values[column];
+  if (v < lo || v > hi) failCell(row, column, fmt::format("is out of range [{:g}, {:g}]", lo, hi));
 }
 
-void CsvTable::failCell(size_t row, size_t column, const std::string& reason) const {
-  throwBadInput(fmt::format("{}:{}:{} ({}): {} {}", path_, line_numbers_[row], column + 1, columns_[column],
-                            texts_[row][column], reason));
+void CsvReader::failCell(const CsvRow& row, size_t column, const std::string& reason) const {
+  throwBadInput(fmt::format("{}:{}:{} ({}): {} {}", path_, row.line_number, column + 1, columns_[column],
+                            row.texts[column], reason));
 }
 
-void writeCsvOutput(const std::string& path, const std::string& text) {
+void writeCsvOutput(const std::string& path,
+                    const std::function<void(const std::function<void(std::string_view)>& emit)>& produce) {
   if (path.empty()) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
+    produce([](std::string_view piece) { std::fwrite(piece.data(), 1, piece.size(), stdout); });
     return;
   }
-  writeFileContentsAtomically(path, text);
+  writeFileStreamAtomically(path, produce);
 }
 
 }  // namespace skybake

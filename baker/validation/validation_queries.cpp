@@ -54,25 +54,29 @@ QuerySet quickQuerySet(double thickness) {
                  false);
 }
 
-RadianceQueryColumns radianceQueryColumns(const CsvTable& q) {
-  const RadianceQueryColumns c{q.require("altitude_m"), q.require("sun_zenith_deg"), q.require("view_zenith_deg"),
-                               q.require("view_azimuth_deg"), q.find("distance_m")};
-  q.requireRange(c.altitude_m, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
-  q.requireRange(c.sun_zenith_deg, 0.0, kMaxZenithAngle_deg);
-  q.requireRange(c.view_zenith_deg, 0.0, kMaxZenithAngle_deg);
-  q.requireRange(c.view_azimuth_deg, -kMaxAzimuth_deg, kMaxAzimuth_deg);
-  if (c.distance_m) q.requireRange(*c.distance_m, -kMaxQueryDistance_m, kMaxQueryDistance_m);
-  return c;
+RadianceQueryColumns radianceQueryColumns(const CsvReader& q) {
+  return {q.require("altitude_m"), q.require("sun_zenith_deg"), q.require("view_zenith_deg"),
+          q.require("view_azimuth_deg"), q.find("distance_m")};
+}
+
+void requireRadianceQueryRanges(const CsvReader& q, const CsvRow& row, const RadianceQueryColumns& c) {
+  q.requireRange(row, c.altitude_m, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+  q.requireRange(row, c.sun_zenith_deg, 0.0, kMaxZenithAngle_deg);
+  q.requireRange(row, c.view_zenith_deg, 0.0, kMaxZenithAngle_deg);
+  q.requireRange(row, c.view_azimuth_deg, -kMaxAzimuth_deg, kMaxAzimuth_deg);
+  if (c.distance_m) q.requireRange(row, *c.distance_m, -kMaxQueryDistance_m, kMaxQueryDistance_m);
 }
 
 QuerySet querySetFromCsv(const std::filesystem::path& path) {
-  const CsvTable q = CsvTable::read(path);
+  CsvReader q(path);
   const RadianceQueryColumns c = radianceQueryColumns(q);
   QuerySet set;
   set.name = path.filename().string();
-  for (size_t row = 0; row < q.rowCount(); ++row) {
-    set.radiance.push_back({q.value(row, c.altitude_m), q.value(row, c.sun_zenith_deg), q.value(row, c.view_zenith_deg),
-                            q.value(row, c.view_azimuth_deg), c.distance_m ? q.value(row, *c.distance_m) : 0.0});
+  for (CsvRow row; q.next(row);) {
+    requireRadianceQueryRanges(q, row, c);
+    const std::vector<double>& v = row.values;
+    set.radiance.push_back({v[c.altitude_m], v[c.sun_zenith_deg], v[c.view_zenith_deg], v[c.view_azimuth_deg],
+                            c.distance_m ? v[*c.distance_m] : 0.0});
   }
   return set;
 }

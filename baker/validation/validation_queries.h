@@ -9,7 +9,8 @@
 
 namespace skybake {
 
-class CsvTable;
+class CsvReader;
+struct CsvRow;
 
 // Limits on a query's numbers, shared by the query CSVs and render's camera.
 // Altitudes below the ground are allowed (treated as on it, like the
@@ -59,7 +60,10 @@ struct RadianceQueryColumns {
   size_t view_azimuth_deg;
   std::optional<size_t> distance_m;
 };
-RadianceQueryColumns radianceQueryColumns(const CsvTable& table);
+// The columns of a radiance query CSV (required ones refused when missing).
+RadianceQueryColumns radianceQueryColumns(const CsvReader& reader);
+// Refuses a row whose numbers lie outside the query limits above.
+void requireRadianceQueryRanges(const CsvReader& reader, const CsvRow& row, const RadianceQueryColumns& columns);
 
 // Radiance queries from a CSV with the columns of `skybake lookup radiance`.
 QuerySet querySetFromCsv(const std::filesystem::path& path);
