@@ -66,6 +66,9 @@ TEST(BakeMemoryEstimate, SaturatesInsteadOfWrappingRound) {
 constexpr double kEstimateTolerance = 1.15;
 
 TEST(BakeMemoryEstimate, IsWithinAFactorOfTheMeasuredPeak) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer's allocator and shadow memory change the peak this compares with";
+#endif
   BakeConfig config = test::smallEarth(3);
   config.sizes.scattering_r = 8;
   config.sizes.scattering_mu = 64;
