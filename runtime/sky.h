@@ -96,6 +96,8 @@ class Sky {
   const AtmosphereParameters& atmosphere() const { return bake_.contents.atmosphere; }
   int channelCount() const { return atmosphere().channelCount(); }
   int orders() const { return bake_.orders_computed; }
+  // The bake report the file carries (JSON text, opaque to lookups).
+  const std::string& bakeReportJson() const { return bake_.report_json; }
 
   // Radiance of the sky seen from `camera` looking along `view_dir`, and the
   // transmittance to where the ray leaves the atmosphere or meets the ground.

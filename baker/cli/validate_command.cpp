@@ -92,6 +92,17 @@ void runValidate(const ValidateOptions& o) {
   }
   if (!o.details_path.empty()) writeDetails(o.details_path, a, queries, reference, bake);
   nlohmann::ordered_json sidecar = readReportSidecar(o.bake_path);
+  // A sidecar describes the bake whose report it repeats. One that repeats
+  // another (left by a bake interrupted between its two renames, or copied
+  // from elsewhere) is not this bake's: it is started anew from the file.
+  const nlohmann::ordered_json header_report = nlohmann::ordered_json::parse(sky.bakeReportJson(), nullptr, false);
+  if (!sidecar.is_object() || !sidecar.contains("bake") || sidecar["bake"] != header_report) {
+    if (!sidecar.empty()) {
+      fmt::print(stderr, "skybake validate: {} described another bake; rewritten from {}'s own report\n",
+                 reportSidecarPath(o.bake_path).string(), o.bake_path);
+    }
+    sidecar = {{"bake_file", o.bake_path}, {"bake", header_report}};
+  }
   sidecar["validation"] = j;
   writeReportSidecar(o.bake_path, sidecar);
 }
