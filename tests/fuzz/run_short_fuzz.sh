@@ -60,7 +60,11 @@ start_target() {
 pids=()
 names=()
 start_target fuzz_bake_file "$fuzz_dir/corpus/bake_file"
-start_target fuzz_config "$fuzz_dir/corpus/config" -dict="$fuzz_dir/config.dict"
+# -max_len: configs as long as 128 kB, so mutations can nest keys deep enough
+# to reach the nesting limit (32 levels) and far beyond it, where toml++'s
+# recursion once overflowed its stack (8000 levels, 16 kB); libFuzzer's
+# default takes the largest seed's length.
+start_target fuzz_config "$fuzz_dir/corpus/config" -dict="$fuzz_dir/config.dict" -max_len=131072
 
 status=0
 for i in "${!pids[@]}"; do
