@@ -44,6 +44,18 @@ void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
   for (int c = 0; c < channels; ++c) fmt::format_to(std::back_inserter(line), ",{:.9g}", s[c]);
 }
 
+// One output row in `line` (reused across rows): the query's own cells, then
+// the two looked-up spectra.
+const std::string& outputRow(std::string& line, const CsvRow& row, const Spectrum& first, const Spectrum& second,
+                             int channels) {
+  line.clear();
+  appendInputCells(line, row);
+  appendSpectrum(line, first, channels);
+  appendSpectrum(line, second, channels);
+  line += '\n';
+  return line;
+}
+
 // Output problems are found before the queries are read or the bake loaded.
 void requireWritableLookupOutput(const LookupOptions& o) {
   if (!o.output_path.empty()) requireWritableOutput(o.output_path, {o.bake_path, o.queries_path});
@@ -121,12 +133,7 @@ void runRadiance(const LookupOptions& o) {
       requireInsideRanges(q, row, columns, sky, o.bake_path);
       const RadianceAndTransmittance r =
           d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
-      line.clear();
-      appendInputCells(line, row);
-      appendSpectrum(line, r.radiance, n);
-      appendSpectrum(line, r.transmittance, n);
-      line += '\n';
-      emit(line);
+      emit(outputRow(line, row, r.radiance, r.transmittance, n));
     }
   });
 }
@@ -148,12 +155,7 @@ void runIrradiance(const LookupOptions& o) {
       const glm::dvec3 point = cameraAtAltitude(sky.atmosphere().bottom_radius_m, row.values[altitude]);
       const glm::dvec3 sun = directionFromZenithAzimuthDeg(row.values[sun_zenith], 0.0);
       const SunAndSkyIrradiance e = sky.irradiance(point, {0.0, 0.0, 1.0}, sun);
-      line.clear();
-      appendInputCells(line, row);
-      appendSpectrum(line, e.sky, n);
-      appendSpectrum(line, e.sun, n);
-      line += '\n';
-      emit(line);
+      emit(outputRow(line, row, e.sky, e.sun, n));
     }
   });
 }
