@@ -129,6 +129,46 @@ TEST(Bake, ResultIsIdenticalForOneAndTwoThreads) {
   std::filesystem::remove_all(dir);
 }
 
+// The channels may come in any order: each is named in the file by its
+// wavelength, and the image and lookup code find channels by wavelength, not
+// by position. A bake of the same atmosphere with its channels listed in
+// another order holds, channel by channel, the same tables. Bit-identical,
+// since every operation on a Spectrum acts on each channel alone and with
+// a fixed order count nothing compares channels.
+TEST(Bake, ChannelOrderDoesNotChangeAnyChannel) {
+  SilentProgress silent;
+  const BakeConfig sorted = test::smallEarth(2);
+  ASSERT_EQ(sorted.atmosphere.wavelengths_nm, (std::vector<double>{680.0, 550.0, 440.0}));
+  BakeConfig shuffled = sorted;
+  const int from[3] = {2, 0, 1};  // shuffled channel c is sorted channel from[c]
+  auto permute = [&](Spectrum& s) {
+    const Spectrum old = s;
+    for (int c = 0; c < 3; ++c) s[c] = old[from[c]];
+  };
+  AtmosphereParameters& a = shuffled.atmosphere;
+  for (int c = 0; c < 3; ++c) a.wavelengths_nm[c] = sorted.atmosphere.wavelengths_nm[from[c]];
+  for (Spectrum* s : {&a.ground_albedo, &a.sun_irradiance, &a.rayleigh_scattering, &a.mie_scattering, &a.mie_extinction,
+                      &a.absorption_extinction}) {
+    permute(*s);
+  }
+  const BakeOutput one = bakeAtmosphere(sorted, 0, silent);
+  const BakeOutput two = bakeAtmosphere(shuffled, 0, silent);
+  std::vector<std::pair<std::string, const std::vector<Spectrum>*>> tables_one, tables_two;
+  forEachTable(one.file.tables, [&](const char* part, const auto& texels) { tables_one.emplace_back(part, &texels); });
+  forEachTable(two.file.tables, [&](const char* part, const auto& texels) { tables_two.emplace_back(part, &texels); });
+  ASSERT_EQ(tables_one.size(), tables_two.size());
+  for (size_t i = 0; i < tables_one.size(); ++i) {
+    const std::vector<Spectrum>& a_texels = *tables_one[i].second;
+    const std::vector<Spectrum>& b_texels = *tables_two[i].second;
+    ASSERT_EQ(a_texels.size(), b_texels.size());
+    size_t differing = 0;
+    for (size_t t = 0; t < a_texels.size(); ++t) {
+      for (int c = 0; c < 3; ++c) differing += b_texels[t][c] != a_texels[t][from[c]];
+    }
+    EXPECT_EQ(differing, 0u) << tables_one[i].first;
+  }
+}
+
 // A bake that asks for a thread count leaves OpenMP's setting as it found
 // it: a later bake asking for OpenMP's default (0) gets that default, not
 // the earlier bake's count.

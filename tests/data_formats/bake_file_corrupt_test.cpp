@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -224,33 +225,77 @@ TEST_F(BakeFileCorruptTest, TablesLargerThanTheFileCanHoldAreRefused) {
   expectRefused(corrupt, "more than a file of");
 }
 
-// Values no bake writes, channel types no bake uses and an impossible order
-// count are refused naming the part or attribute, the value and the reason.
-TEST_F(BakeFileCorruptTest, ValuesOutsideEachTablesRangeAreRefused) {
+// A hostile file for each check of the reader's physical ranges: values no
+// bake writes, channel types no bake uses and an impossible order count. The
+// fuzz corpus holds each as a seed (tests/fuzz/corpus/bake_file/out_of_range_*),
+// so mutations start next to every check.
+struct OutOfRangeCase {
+  const char* seed_name;
+  void (*spoil)(BakeTables& tables, RawBake& raw);
+  const char* refusal;  // a fragment of the reader's message
+};
+
+const OutOfRangeCase kOutOfRangeCases[] = {
+    {"out_of_range_negative_optical_depth",
+     [](BakeTables& t, RawBake&) { t.optical_depth.texels[3] = Spectrum(-5.0f, 0.0f, 0.0f, 0.0f); },
+     "part 'optical_depth' holds -5 at texel 3 (channel 0): negative"},
+    {"out_of_range_negative_radiance", [](BakeTables& t, RawBake&) { t.single_rayleigh.texels[1][2] = -1e-3f; },
+     "part 'single_rayleigh' holds -0.001 at texel 1 (channel 2): negative"},
+    {"out_of_range_huge_radiance", [](BakeTables& t, RawBake&) { t.multiple_scattering.texels[0][1] = 3e38f; },
+     "part 'multiple_scattering' holds 3e+38 at texel 0 (channel 1): larger than any bake writes"},
+    {"out_of_range_uint_channels", [](BakeTables&, RawBake& raw) { raw.channel_type = Imf::UINT; },
+     "part 'optical_depth' channel 680nm holds integers; tables are FLOAT or HALF"},
+    {"out_of_range_negative_orders", [](BakeTables&, RawBake& raw) { raw.orders = -5; },
+     "attribute skybake:orders = -5: must be in [1, 1000]"},
+};
+
+// Writes `c`'s hostile file to `path`: the tiny bake with radiance tables of
+// one, then the case's one change.
+void writeOutOfRangeCase(const fs::path& path, const OutOfRangeCase& c) {
   BakeFile bake = tinyBake();
   for (Spectrum& v : bake.tables.single_rayleigh.texels) v = Spectrum(1.0f, 1.0f, 1.0f, 0.0f);
+  BakeTables tables = bake.tables;
+  RawBake raw{bake.contents, &tables};
+  c.spoil(tables, raw);
+  // Integer channels are refused from the headers; a file of headers only
+  // keeps the seed small.
+  if (raw.channel_type == Imf::UINT) raw.tables = nullptr;
+  writeRawBake(path, raw);
+}
+
+// Each hostile file is refused naming the part or attribute, the value and
+// the reason.
+TEST_F(BakeFileCorruptTest, ValuesOutsideEachTablesRangeAreRefused) {
   const fs::path path = dir / "raw.exr";
-  auto refusedWith = [&](BakeTables tables, const std::string& fragment) {
-    writeRawBake(path, {bake.contents, &tables});
-    expectRefused(path, fragment);
-  };
   // The raw writer's file of good tables reads: each refusal below is its one change.
+  BakeFile bake = tinyBake();
   writeRawBake(path, {bake.contents, &bake.tables});
   EXPECT_NO_THROW(readBakeFile(path));
-  BakeTables t = bake.tables;
-  t.optical_depth.texels[3] = Spectrum(-5.0f, 0.0f, 0.0f, 0.0f);
-  refusedWith(t, "part 'optical_depth' holds -5 at texel 3 (channel 0): negative");
-  t = bake.tables;
-  t.single_rayleigh.texels[1][2] = -1e-3f;
-  refusedWith(t, "part 'single_rayleigh' holds -0.001 at texel 1 (channel 2): negative");
-  t = bake.tables;
-  t.multiple_scattering.texels[0][1] = 3e38f;
-  refusedWith(t, "part 'multiple_scattering' holds 3e+38 at texel 0 (channel 1): larger than any bake writes");
+  for (const OutOfRangeCase& c : kOutOfRangeCases) {
+    SCOPED_TRACE(c.seed_name);
+    writeOutOfRangeCase(path, c);
+    expectRefused(path, c.refusal);
+  }
+}
 
-  writeRawBake(path, {bake.contents, nullptr, Imf::UINT});
-  expectRefused(path, "part 'optical_depth' channel 680nm holds integers; tables are FLOAT or HALF");
-  writeRawBake(path, {bake.contents, &bake.tables, Imf::FLOAT, -5});
-  expectRefused(path, "attribute skybake:orders = -5: must be in [1, 1000]");
+// The committed fuzz seeds are those files and are still refused for their
+// reason (a seed the reader accepted, or refused earlier for another reason,
+// would no longer lead the fuzzer to its check). With SKYBAKE_WRITE_FUZZ_SEEDS
+// set to a directory, the test writes the seeds there first; from the
+// repository root, SKYBAKE_WRITE_FUZZ_SEEDS=tests/fuzz/corpus/bake_file
+// build/tests/data_formats_tests --gtest_filter='*FuzzSeeds*' remakes them.
+TEST_F(BakeFileCorruptTest, OutOfRangeFuzzSeedsAreRefusedForTheirReason) {
+  const fs::path corpus = fs::path(SKYBAKE_SOURCE_DIR) / "tests/fuzz/corpus/bake_file";
+  if (const char* out = std::getenv("SKYBAKE_WRITE_FUZZ_SEEDS")) {
+    for (const OutOfRangeCase& c : kOutOfRangeCases)
+      writeOutOfRangeCase(fs::path(out) / (std::string(c.seed_name) + ".exr"), c);
+  }
+  for (const OutOfRangeCase& c : kOutOfRangeCases) {
+    const fs::path seed = corpus / (std::string(c.seed_name) + ".exr");
+    SCOPED_TRACE(seed.string());
+    ASSERT_TRUE(fs::exists(seed));
+    expectRefused(seed, c.refusal);
+  }
 }
 
 // skybake's writer refuses to write what its reader would refuse, and the

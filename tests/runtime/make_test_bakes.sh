@@ -2,8 +2,10 @@
 # CTest fixture: bakes the built-in Earth at its default sizes, once with all
 # orders and once with single scattering only, for the runtime tests.
 # Usage: make_test_bakes.sh SKYBAKE_BINARY OUT_DIR
+# SKYBAKE_TEST_BAKER, when set, names the skybake that bakes instead (the
+# sanitizer run's runtime tests read bakes of the ordinary build).
 set -euo pipefail
-skybake=$1
+skybake=${SKYBAKE_TEST_BAKER:-$1}
 out=$2
 mkdir -p "$out"
 "$skybake" bake -o "$out/earth.exr" --reproducible 2>/dev/null
