@@ -1,0 +1,7 @@
+#include "runtime/version.h"
+
+namespace skybake {
+
+const char* runtimeLibraryVersion() { return SKYBAKE_VERSION; }
+
+}  // namespace skybake

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Installs the build into a temporary prefix and builds two programs against
+# it as a renderer would, one with find_package(skybake), one with
+# pkg-config, and a third that adds the source tree with add_subdirectory.
+# Each prints the zenith sky radiance of BAKE; all must print exactly what
+# the installed `skybake lookup radiance` prints for the query.
+# Usage: install_test.sh SOURCE_DIR BUILD_DIR BAKE
+set -euo pipefail
+source_dir=$1
+build_dir=$2
+bake=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+prefix="$work/prefix"
+cmake --install "$build_dir" --prefix "$prefix" >"$work/install.log" || {
+  cat "$work/install.log"
+  exit 1
+}
+# Everything the package puts under include/ sits under include/skybake/.
+others=$(find "$prefix/include" -mindepth 1 -maxdepth 1 ! -name skybake)
+[ -z "$others" ] || fail "headers outside include/skybake: $others"
+for f in bin/skybake lib/cmake/skybake/skybakeConfig.cmake lib/cmake/skybake/skybakeConfigVersion.cmake \
+  lib/pkgconfig/skybake.pc include/skybake/runtime/sky.h; do
+  [ -e "$prefix/$f" ] || fail "the install lacks $f"
+done
+
+altitude_m=1000
+sun_zenith_deg=30
+printf 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n%s,%s,0,0\n' "$altitude_m" "$sun_zenith_deg" \
+  >"$work/query.csv"
+# The radiance_<nm> columns, one per channel in the bake's order.
+"$prefix/bin/skybake" lookup radiance "$bake" --queries "$work/query.csv" >"$work/lookup.csv"
+expected=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i ~ /^radiance_/) keep[i] = 1 }
+  NR == 2 { out = ""; for (i = 1; i <= NF; ++i) if (i in keep) out = out (out == "" ? "" : ",") $i; print out }' \
+  "$work/lookup.csv")
+echo "skybake lookup radiance: $expected"
+
+# find_package(skybake)
+cmake -S "$source_dir/tests/install/find_package_consumer" -B "$work/find_package" \
+  -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >"$work/fp.log" 2>&1 &&
+  cmake --build "$work/find_package" >>"$work/fp.log" 2>&1 || {
+  cat "$work/fp.log"
+  fail "the find_package(skybake) consumer does not build"
+}
+if [ -x "$work/find_package/sky_zenith" ]; then
+  got=$("$work/find_package/sky_zenith" "$bake" "$altitude_m" "$sun_zenith_deg" 2>/dev/null)
+  echo "find_package consumer:   $got"
+  [ "$got" = "$expected" ] || fail "the find_package consumer printed $got, skybake lookup $expected"
+fi
+
+# pkg-config, with nothing but the compiler and what the .pc file gives.
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+flags=$(pkg-config --cflags --libs skybake)
+libdir=$(pkg-config --variable=libdir skybake)
+# shellcheck disable=SC2086
+c++ -std=c++20 -O2 "$source_dir/tests/install/sky_zenith.cpp" $flags -Wl,-rpath,"$libdir" \
+  -o "$work/pkg_config_sky_zenith" 2>"$work/pc.log" || {
+  cat "$work/pc.log"
+  fail "the pkg-config consumer does not build with: $flags"
+}
+if [ -x "$work/pkg_config_sky_zenith" ]; then
+  got=$("$work/pkg_config_sky_zenith" "$bake" "$altitude_m" "$sun_zenith_deg" 2>/dev/null)
+  echo "pkg-config consumer:     $got"
+  [ "$got" = "$expected" ] || fail "the pkg-config consumer printed $got, skybake lookup $expected"
+fi
+
+# add_subdirectory of the source tree, the runtime alone.
+cmake -S "$source_dir/tests/install/subproject_consumer" -B "$work/subproject" -DCMAKE_BUILD_TYPE=Release \
+  -DSKYBAKE_SOURCE_DIR="$source_dir" >"$work/sub.log" 2>&1 &&
+  cmake --build "$work/subproject" -j"$(nproc)" >>"$work/sub.log" 2>&1 || {
+  tail -n 40 "$work/sub.log"
+  fail "the add_subdirectory consumer does not build"
+}
+if [ -x "$work/subproject/sky_zenith" ]; then
+  got=$("$work/subproject/sky_zenith" "$bake" "$altitude_m" "$sun_zenith_deg" 2>/dev/null)
+  echo "add_subdirectory consumer: $got"
+  [ "$got" = "$expected" ] || fail "the add_subdirectory consumer printed $got, skybake lookup $expected"
+fi
+
+[ -n "$expected" ] || fail "skybake lookup printed nothing"
+if [ "$failures" -eq 0 ]; then echo "install test: 4 passed, 0 failed"; else exit 1; fi
