@@ -6,19 +6,10 @@
 
 #include "runtime/segment_radiance.h"
 #include "runtime/sky.h"
+#include "runtime/sky_lookup_constants.h"
 #include "runtime/sky_lookup_start.h"
 
 namespace skybake {
-namespace {
-
-// A bake whose tables hold no rays toward the ground ([scene]
-// views_below_horizon = false) integrates such a ray at each lookup: single
-// scattering as twilight lookups do, multiple scattering from its tabulated
-// density, over this many sub-intervals of 4 Gauss nodes (more changed no
-// validated figure: docs/MEASUREMENTS.md).
-constexpr int kGroundRaySubintervals = 4;
-
-}  // namespace
 
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                           const glm::dvec3& sun_dir, double shadow_length_m) const {

@@ -7,39 +7,11 @@
 #include "data_formats/error.h"
 #include "runtime/segment_radiance.h"
 #include "runtime/sky.h"
+#include "runtime/sky_lookup_constants.h"
 #include "runtime/sky_lookup_start.h"
 
 namespace skybake {
 namespace {
-
-// Below this sun elevation cosine, single Mie scattering toward a point is
-// faded out: the difference of two Mie lookups at neighbouring twilight
-// texels is noise larger than the signal (Bruneton 2017 does the same).
-constexpr double kMieTwilightFadeCosine = 0.01;
-
-// Half-width, in view zenith cosine, of the band around the geometric horizon
-// where radiance to a point blends the ground-ray and sky-ray halves of the
-// table. Each half is interpolated separately, so at the horizon the two
-// estimates of the same segment integral differ by interpolation error; the
-// blend removes that step. 0.002 is about 0.1 deg, a few texels of the mu axis
-// near the horizon at the default 128.
-constexpr double kHorizonBlendCosine = 0.002;
-
-// Radiance toward a point is found two ways. Over long segments, as the
-// scattering to the ray's end seen from the camera minus that seen from the
-// point (two lookups). Over short ones that difference is a few percent of
-// either term, so the tables' interpolation kinks, amplified 30 to 100 times,
-// show as seams; there the segment is integrated directly from the
-// single-scattering source and the tabulated multiple-scattering source.
-// Between the two lengths the results are blended linearly in distance.
-// With the sun below the horizon every segment is integrated directly, as
-// single scattering along whole rays is: the tables' difference is further
-// off there (docs/MEASUREMENTS.md).
-constexpr double kDirectSegmentMaxLength_m = 20000.0;
-constexpr double kDifferenceSegmentMinLength_m = 10000.0;
-// 4 sub-intervals x 4 Gauss nodes: a vertical 20 km segment holds 17 Mie
-// scale heights, 4 per sub-interval, integrated to ~1e-3.
-constexpr int kDirectSegmentSubintervals = 4;
 
 struct SegmentScattering {
   Spectrum rayleigh;  // over the Rayleigh phase

@@ -4,19 +4,11 @@
 #include <glm/geometric.hpp>
 
 #include "runtime/sky.h"
+#include "runtime/sky_lookup_constants.h"
 #include "runtime/sky_lookup_start.h"
 
 namespace skybake {
 namespace {
-
-// A ray whose closest approach to the planet centre lies within this distance
-// below the ground only grazes it. Points along an exactly tangent ray give
-// directions that differ by rounding (~1e-16 rad), so the same ray was
-// classified as hitting the ground or not from one point to the next, and the
-// transmittance to points past the tangent point flickered between 0 and its
-// value. 1 mm is far above that rounding (~1e-6 m at 1e10 m) and far below
-// any geometry a renderer resolves.
-constexpr double kGroundGrazeTolerance_m = 1e-3;
 
 bool grazesGround(const AtmosphereDomain& domain, const AtmosphereRay& ray) {
   const double closest_approach_m = ray.r * safeSqrt(1.0 - ray.mu * ray.mu);

@@ -8,21 +8,9 @@
 
 #include "runtime/single_scattering_ray.h"
 #include "runtime/sky.h"
+#include "runtime/sky_lookup_constants.h"
 
 namespace skybake {
-namespace {
-
-// From the horizon up to this sun elevation (as a zenith cosine, sin 1 deg)
-// the integral's weight falls smoothly from 1 to 0, so no step shows as the
-// sun sets; the tables are within 1 % of the integral there.
-constexpr double kIntegratedSingleScatteringTopCosine = 0.0175;
-// Sub-intervals of 4 Gauss nodes over the ray for that integral (the bake
-// uses 8): 0.12 % RMS of the sky radiance off a 64-sub-interval rule on a
-// grid of twilight views, at about 6 times a day lookup's cost
-// (docs/MEASUREMENTS.md).
-constexpr int kLookupSingleScatteringSegments = 4;
-
-}  // namespace
 
 double Sky::integratedSingleScatteringWeight(double mu_s) {
   const double x = std::clamp(1.0 - mu_s / kIntegratedSingleScatteringTopCosine, 0.0, 1.0);

@@ -1,0 +1,167 @@
+#include "runtime/gl/sky_gl_parameters.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "data_formats/error.h"
+#include "runtime/atmosphere_media.h"
+#include "runtime/ray_quadrature.h"
+#include "runtime/sky_lookup_constants.h"
+
+namespace skybake::gl {
+
+extern const std::string_view kGlslLibrarySource;
+
+namespace {
+
+// A GLSL float literal: always with an exponent, so ES 3.00 (no implicit
+// int-to-float conversion) never reads it as an int.
+std::string glslFloat(double value) { return fmt::format("{:.9e}", value); }
+
+void put(float (&out)[4], const Spectrum& s) {
+  for (int c = 0; c < 4; ++c) out[c] = s[c];
+}
+
+void putLayers(SkyUniformBlock& block, int profile, const DensityProfile& layers, const char* name) {
+  if (static_cast<int>(layers.size()) > kMaxGlDensityLayers) {
+    throw Error(ErrorKind::BadInput,
+                fmt::format("the GL backend holds at most {} density layers, the {} profile has {}",
+                            kMaxGlDensityLayers, name, layers.size()));
+  }
+  block.profile_layers[profile] = static_cast<int32_t>(layers.size());
+  for (size_t i = 0; i < layers.size(); ++i) {
+    const int at = profile * kMaxGlDensityLayers + static_cast<int>(i);
+    const DensityLayer& l = layers[i];
+    block.layer_shape[at][0] = static_cast<float>(l.width_m);
+    block.layer_shape[at][1] = static_cast<float>(l.exp_term);
+    block.layer_shape[at][2] = static_cast<float>(l.exp_scale);
+    block.layer_shape[at][3] = static_cast<float>(l.linear_term);
+    block.layer_constant[at][0] = static_cast<float>(l.constant_term);
+  }
+}
+
+// m_column^2 of the multiple-scattering shape, per channel: its peak weight
+// at an altitude where Mie scatters, over Mie's local share there (the
+// shape keeps the column share to itself). Where no altitude has Mie
+// scattering the weight is 0 everywhere and so is this.
+Spectrum columnMieSharePower(const Sky& sky, const MultipleScatteringPhase& shape) {
+  const AtmosphereParameters& a = sky.atmosphere();
+  const AtmosphereMedia media(a);
+  constexpr int kProbeAltitudes = 64;  // any altitude with Mie serves; the first found is used
+  Spectrum power(0.0f);
+  for (int c = 0; c < kMaxChannels; ++c) {
+    for (int i = 0; i < kProbeAltitudes; ++i) {
+      const double altitude_m = (a.top_radius_m - a.bottom_radius_m) * i / kProbeAltitudes;
+      const double rayleigh = a.rayleigh_scattering[c] * media.rayleighDensity(altitude_m);
+      const double mie = a.mie_scattering[c] * media.mieDensity(altitude_m);
+      if (!(mie > 0.0)) continue;
+      power[c] = static_cast<float>(shape.peakWeightAt(altitude_m)[c] / (mie / (rayleigh + mie)));
+      break;
+    }
+  }
+  return power;
+}
+
+}  // namespace
+
+SkyUniformBlock skyUniformBlock(const Sky& sky) {
+  SkyUniformBlock b{};
+  const AtmosphereParameters& a = sky.atmosphere();
+  const AtmosphereDomain& d = sky.sampler().domain();
+  const TextureSizes& s = sky.contents().sizes;
+  const BakeTables& t = sky.tables();
+  const MultipleScatteringPhase shape(a);
+  const CornetteShanksPhase mie_phase(a.mie_phase_g);
+  const CornetteShanksPhase multiple_peak(shape.g());
+  const BakedRanges& ranges = sky.bakedRanges();
+  const MuSUnitCoordMap unit = MuSUnitCoordMap::of(d);
+  const ScatteringMuSCoordMap mu_s_coord = ScatteringMuSCoordMap::of(d, s.scattering_mu_s);
+
+  b.radii_m[0] = static_cast<float>(d.bottom_radius_m);
+  b.radii_m[1] = static_cast<float>(d.top_radius_m);
+  b.radii_m[2] = static_cast<float>(d.horizonToTopDistance());
+  b.radii_m[3] = static_cast<float>(a.sun_angular_radius_rad);
+  b.scattering_domain[0] = static_cast<float>(d.scattering_rho_min_m);
+  b.scattering_domain[1] = static_cast<float>(d.scattering_rho_max_m);
+  b.scattering_domain[2] = static_cast<float>(mu_s_coord.coord_min);
+  b.scattering_domain[3] = static_cast<float>(mu_s_coord.inverse_coord_span);
+  b.mu_s_map[0] = static_cast<float>(unit.d_min);
+  b.mu_s_map[1] = static_cast<float>(unit.inverse_d_span);
+  b.mu_s_map[2] = static_cast<float>(unit.inverse_A);
+  b.mu_s_map[3] = static_cast<float>(unit.defined);
+  // As Sky's constructor derives its baked sun range.
+  b.sun_angles[0] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_max_deg)));
+  b.sun_angles[1] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_min_deg)));
+  b.sun_angles[2] = static_cast<float>(a.mie_phase_g);
+  b.sun_angles[3] = static_cast<float>(shape.g());
+  b.phase[0] = static_cast<float>(mie_phase.normalisation());
+  b.phase[1] = static_cast<float>(multiple_peak.normalisation());
+  const double half_chord = std::sin(0.5 * a.sun_angular_radius_rad);
+  b.phase[2] = static_cast<float>(4.0 * half_chord * half_chord);
+  b.scattering_size[0] = s.scattering_r;
+  b.scattering_size[1] = s.scattering_mu;
+  b.scattering_size[2] = s.scattering_mu_s;
+  b.scattering_size[3] = s.scattering_nu;
+  b.table_2d_size[0] = t.optical_depth.width;
+  b.table_2d_size[1] = t.optical_depth.height;
+  b.table_2d_size[2] = s.irradiance_mu_s;
+  b.table_2d_size[3] = s.irradiance_r;
+  b.parts[0] = d.scattering_ground_views ? 1 : 0;
+  b.parts[1] = sky.hasSingleMie() ? 1 : 0;
+  b.parts[2] = t.multiple_density.texels.empty() ? 0 : 1;
+  b.parts[3] = t.irradiance.texels.empty() ? 0 : 1;
+  b.outputs[0] = sky.outputs().radiance_to_points ? 1 : 0;
+  b.outputs[1] = sky.outputs().ground_irradiance ? 1 : 0;
+  b.outputs[2] = sky.channelCount();
+  put(b.sun_irradiance, a.sun_irradiance);
+  put(b.solar_radiance, sky.solarRadiance());
+  put(b.rayleigh_scattering, a.rayleigh_scattering);
+  put(b.mie_scattering, a.mie_scattering);
+  put(b.mie_extinction, a.mie_extinction);
+  put(b.absorption_extinction, a.absorption_extinction);
+  put(b.ground_albedo, a.ground_albedo);
+  put(b.column_mie_share_power, columnMieSharePower(sky, shape));
+  for (int c = 0; c < sky.channelCount(); ++c) b.wavelengths_nm[c] = static_cast<float>(a.wavelengths_nm[c]);
+  putLayers(b, 0, a.rayleigh_density, "rayleigh");
+  putLayers(b, 1, a.mie_density, "mie");
+  putLayers(b, 2, a.absorption_density, "absorption");
+  return b;
+}
+
+std::string skyGlslDefines() {
+  std::string out = "// Generated from the C++ constants (runtime/gl/sky_gl_parameters.cpp).\n";
+  auto define = [&](const char* name, const std::string& value) { out += fmt::format("#define {} {}\n", name, value); };
+  auto floatArray = [](const double(&values)[kGaussNodes]) {
+    std::string list;
+    for (int i = 0; i < kGaussNodes; ++i) list += (i > 0 ? ", " : "") + glslFloat(values[i]);
+    return fmt::format("float[{}]({})", kGaussNodes, list);
+  };
+  define("SKYBAKE_PI", glslFloat(kPi));
+  define("SKYBAKE_MAX_DENSITY_LAYERS", std::to_string(kMaxGlDensityLayers));
+  define("SKYBAKE_GAUSS_NODES", std::to_string(kGaussNodes));
+  define("SKYBAKE_GAUSS_ABSCISSA", floatArray(kGaussAbscissa));
+  define("SKYBAKE_GAUSS_WEIGHT", floatArray(kGaussWeight));
+  define("SKYBAKE_MAX_PIECE_OPTICAL_DEPTH", glslFloat(kMaxPieceOpticalDepth));
+  define("SKYBAKE_REFINED_OPTICAL_DEPTH", glslFloat(kRefinedOpticalDepth));
+  define("SKYBAKE_MAX_PIECES_PER_SUBINTERVAL", std::to_string(kMaxPiecesPerSubinterval));
+  define("SKYBAKE_GEOMETRIC_BLEND_RATIO", glslFloat(kGeometricBlendRatio));
+  define("SKYBAKE_RAYLEIGH_PHASE_NORMALISATION", glslFloat(kRayleighPhaseNormalisation));
+  define("SKYBAKE_BROAD_PHASE", glslFloat(MultipleScatteringPhase::kBroad));
+  define("SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE", glslFloat(kIntegratedSingleScatteringTopCosine));
+  define("SKYBAKE_LOOKUP_SINGLE_SCATTERING_SEGMENTS", std::to_string(kLookupSingleScatteringSegments));
+  define("SKYBAKE_GROUND_RAY_SUBINTERVALS", std::to_string(kGroundRaySubintervals));
+  define("SKYBAKE_MIE_TWILIGHT_FADE_COSINE", glslFloat(kMieTwilightFadeCosine));
+  define("SKYBAKE_HORIZON_BLEND_COSINE", glslFloat(kHorizonBlendCosine));
+  define("SKYBAKE_DIRECT_SEGMENT_MAX_LENGTH_M", glslFloat(kDirectSegmentMaxLength_m));
+  define("SKYBAKE_DIFFERENCE_SEGMENT_MIN_LENGTH_M", glslFloat(kDifferenceSegmentMinLength_m));
+  define("SKYBAKE_DIRECT_SEGMENT_SUBINTERVALS", std::to_string(kDirectSegmentSubintervals));
+  define("SKYBAKE_GROUND_GRAZE_TOLERANCE_M", glslFloat(kGroundGrazeTolerance_m));
+  return out;
+}
+
+std::string_view skyGlslLibrarySource() { return kGlslLibrarySource; }
+
+std::string skyGlslLibrary() { return skyGlslDefines() + std::string(kGlslLibrarySource); }
+
+}  // namespace skybake::gl

@@ -1,0 +1,225 @@
+// skybake GLSL library, part 2 of 5: rays in the atmosphere's shell, the
+// planet's shadow, the sun disk, phase functions and the media. Mirrors
+// runtime/atmosphere_ray.h, data_formats/ray_sphere.h, planet_shadow.h,
+// sun_disk.h, phase_functions.h and atmosphere_media.h.
+//
+// The C++ computes in double, this in float, whose resolution at a planet's
+// radius is about half a metre. The formulas are therefore rearranged so
+// that no result is the small difference of two radius-sized numbers: a
+// distance to a sphere is written as (radius^2 - r^2) / (sum of two
+// positive terms) where the direct form would cancel, and r^2 - R^2 as
+// (r - R) (r + R), exact in float for r near R.
+
+float skybakeClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }
+
+// sqrt of a quantity >= 0 in exact arithmetic that rounding may leave a tiny
+// negative.
+float skybakeSafeSqrt(float a) { return sqrt(max(a, 0.0)); }
+
+// Distance from radius r along zenith cosine mu to the sphere of radius
+// `radius` >= r that encloses the point.
+float skybakeDistanceToOuterSphere(float r, float mu, float radius) {
+  float q = (radius - r) * (radius + r);
+  float rmu = r * mu;
+  float root = skybakeSafeSqrt(rmu * rmu + q);
+  if (mu < 0.0) return max(root - rmu, 0.0);
+  float denominator = rmu + root;
+  return denominator > 0.0 ? max(q / denominator, 0.0) : 0.0;
+}
+
+// True when the ray (r, mu) from r >= radius hits the sphere of radius `radius`.
+bool skybakeRayIntersectsSphere(float r, float mu, float radius) {
+  float rmu = r * mu;
+  return mu < 0.0 && rmu * rmu - (r - radius) * (r + radius) >= 0.0;
+}
+
+// Distance to the nearer intersection with the sphere below (r >= radius);
+// meaningful where skybakeRayIntersectsSphere.
+float skybakeDistanceToInnerSphere(float r, float mu, float radius) {
+  float q = (r - radius) * (r + radius);
+  float rmu = r * mu;
+  float denominator = skybakeSafeSqrt(rmu * rmu - q) - rmu;
+  return mu < 0.0 && denominator > 0.0 ? max(q / denominator, 0.0) : 0.0;
+}
+
+float skybakeDistanceToAtmosphereEnd(float r, float mu, bool ray_intersects_ground) {
+  return ray_intersects_ground ? skybakeDistanceToInnerSphere(r, mu, skybake_radii_m.x)
+                               : skybakeDistanceToOuterSphere(r, mu, skybake_radii_m.y);
+}
+
+// Zenith cosine of the rays from r tangent to the sphere of radius `radius`.
+float skybakeTangentZenithCosine(float r, float radius) {
+  return -skybakeSafeSqrt((r - radius) * (r + radius)) / r;
+}
+
+// rho: the distance to the horizon from radius r, m.
+float skybakeDistanceToHorizon(float r) {
+  float bottom = skybake_radii_m.x;
+  return skybakeSafeSqrt((r - bottom) * (r + bottom));
+}
+
+// Radius and zenith cosine at distance d along the ray (r, mu).
+float skybakeRadiusAlongRay(float r, float mu, float d) { return sqrt(max(d * (d + 2.0 * r * mu) + r * r, 0.0)); }
+float skybakeCosineAlongRay(float r, float mu, float d, float r_d) {
+  return r_d > 0.0 ? skybakeClampCosine((r * mu + d) / r_d) : 1.0;
+}
+// The same radius kept in the shell, as every lookup along a ray takes it.
+float skybakeShellRadiusAlongRay(float r, float mu, float d) {
+  return clamp(skybakeRadiusAlongRay(r, mu, d), skybake_radii_m.x, skybake_radii_m.y);
+}
+
+// A ray in the shell (runtime/atmosphere_ray.h): a start in space moved to
+// where the ray enters the atmosphere, one below the ground put on the
+// ground directly above.
+struct SkybakeRay {
+  bool inside;  // false: the ray misses the atmosphere
+  vec3 origin;  // in the atmosphere, m from the planet's centre
+  float r;      // |origin|, m
+  float mu;     // zenith cosine of the direction at origin
+  float length_m;  // to the ground or the top
+  bool ends_on_ground;
+  float moved_m;  // from the given start to origin
+};
+
+SkybakeRay skybakeEnterAtmosphere(vec3 start, vec3 dir) {
+  float bottom = skybake_radii_m.x;
+  float top = skybake_radii_m.y;
+  SkybakeRay ray = SkybakeRay(false, start, 0.0, 0.0, 0.0, false, 0.0);
+  float r = length(start);
+  if (r < bottom) {
+    start = r > 0.0 ? start * (bottom / r) : vec3(0.0, 0.0, bottom);
+    r = bottom;
+  }
+  float rmu = dot(start, dir);
+  if (r > top) {
+    float q = (r - top) * (r + top);
+    float discriminant = rmu * rmu - q;
+    // Entering needs the ray to point inward (rmu < 0); the distance written
+    // without the cancellation of -rmu - sqrt(discriminant).
+    if (discriminant < 0.0 || !(rmu < 0.0)) return ray;
+    float entry = q / (skybakeSafeSqrt(discriminant) - rmu);
+    start += dir * entry;
+    ray.moved_m = entry;
+    r = top;
+    rmu += entry;
+  }
+  ray.inside = true;
+  ray.origin = start;
+  ray.r = r;
+  ray.mu = skybakeClampCosine(rmu / r);
+  ray.ends_on_ground = skybakeRayIntersectsSphere(r, ray.mu, bottom);
+  ray.length_m = skybakeDistanceToAtmosphereEnd(r, ray.mu, ray.ends_on_ground);
+  return ray;
+}
+
+// Where the ray (r, mu) with the sun at (mu_s, nu) crosses the edge of the
+// planet's shadow over (0, length_m): runtime/planet_shadow.h, with the ray
+// in the x-z plane above the +z pole. Distances ascending.
+struct SkybakeShadowCrossings {
+  int count;
+  vec2 distance_m;
+};
+
+SkybakeShadowCrossings skybakePlanetShadowCrossings(float r, float mu, float mu_s, float nu, float length_m) {
+  SkybakeShadowCrossings out_crossings = SkybakeShadowCrossings(0, vec2(0.0));
+  float bottom = skybake_radii_m.x;
+  float view_sin = skybakeSafeSqrt(1.0 - mu * mu);
+  float sun_sin = skybakeSafeSqrt(1.0 - mu_s * mu_s);
+  float sun_x = view_sin > 0.0 ? clamp((nu - mu * mu_s) / view_sin, -sun_sin, sun_sin) : sun_sin;
+  vec3 sun = vec3(sun_x, skybakeSafeSqrt(sun_sin * sun_sin - sun_x * sun_x), mu_s);
+  vec3 dir = vec3(view_sin, 0.0, mu);
+  float origin_along = r * mu_s;
+  float dir_along = dot(dir, sun);
+  vec3 origin_across = vec3(0.0, 0.0, r) - sun * origin_along;
+  vec3 dir_across = dir - sun * dir_along;
+  float qa = dot(dir_across, dir_across);
+  float qb = 2.0 * dot(origin_across, dir_across);
+  // |origin_across|^2 - R^2 = (r sin - R)(r sin + R), and r sin - R written
+  // as (r - R) - r mu_s^2 / (1 + sin): the shadow's edge passes near the
+  // camera exactly when these nearly cancel.
+  float qc = ((r - bottom) - r * mu_s * mu_s / (1.0 + sun_sin)) * (r * sun_sin + bottom);
+  float discriminant = qb * qb - 4.0 * qa * qc;
+  if (!(qa > 0.0) || !(discriminant > 0.0)) return out_crossings;
+  float root = sqrt(discriminant);
+  // The two roots without cancellation: q / qa and qc / q.
+  float q = -0.5 * (qb + (qb < 0.0 ? -root : root));
+  float t0 = q / qa;
+  float t1 = q != 0.0 ? qc / q : t0;
+  vec2 roots = vec2(min(t0, t1), max(t0, t1));
+  for (int i = 0; i < 2; ++i) {
+    float t = roots[i];
+    // Only the cylinder's half behind the planet casts the shadow.
+    bool behind_planet = origin_along + t * dir_along < 0.0;
+    if (t > 0.0 && t < length_m && behind_planet) {
+      if (out_crossings.count == 0)
+        out_crossings.distance_m.x = t;
+      else
+        out_crossings.distance_m.y = t;
+      out_crossings.count += 1;
+    }
+  }
+  return out_crossings;
+}
+
+// How many of a rule's `segments` sub-intervals a piece of the ray gets.
+int skybakeSegmentsForPiece(int segments, float piece_length_m, float ray_length_m) {
+  float share = ray_length_m > 0.0 ? piece_length_m / ray_length_m : 1.0;
+  return clamp(int(ceil(float(segments) * share)), 1, segments);
+}
+
+// Fraction of the sun disk above the horizon (runtime/sun_disk.h): `height`
+// of its centre above the horizon and its half-size, both in zenith cosine.
+float skybakeSunDiskVisibleFraction(float height, float half_size) {
+  float t = height > 0.0 ? 1.0 : 0.0;
+  if (half_size > 0.0) t = clamp((height + half_size) / (2.0 * half_size), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Whether the unit view direction lies within the sun disk: the chord
+// |view - sun| against the disk edge's, which float resolves where the
+// cosine 0.99999 of a small disk would not.
+bool skybakeInSunDisk(vec3 view_dir, vec3 sun_dir) {
+  vec3 chord = view_dir - sun_dir;
+  return dot(chord, chord) < skybake_phase.z;
+}
+
+// Phase functions, sr^-1 (runtime/phase_functions.h).
+float skybakeRayleighPhase(float nu) { return SKYBAKE_RAYLEIGH_PHASE_NORMALISATION * (1.0 + nu * nu); }
+float skybakeCornetteShanksPhase(float g, float normalisation, float nu) {
+  float base = 1.0 + g * g - 2.0 * g * nu;
+  return normalisation * (1.0 + nu * nu) / (base * sqrt(base));
+}
+float skybakeMiePhase(float nu) { return skybakeCornetteShanksPhase(skybake_sun_angles.z, skybake_phase.x, nu); }
+
+// Density in [0, 1] of profile 0 (Rayleigh), 1 (Mie) or 2 (absorption) at
+// an altitude (runtime/density_profile.h).
+float skybakeLayerDensity(int layer, float altitude_m) {
+  vec4 shape = skybake_layer_shape[layer];
+  float value = shape.y * exp(shape.z * altitude_m) + shape.w * altitude_m + skybake_layer_constant[layer].x;
+  return clamp(value, 0.0, 1.0);
+}
+
+float skybakeProfileDensity(int profile, float altitude_m) {
+  int count = skybake_profile_layers[profile];
+  float layer_bottom_m = 0.0;
+  for (int i = 0; i < SKYBAKE_MAX_DENSITY_LAYERS; ++i) {
+    if (i >= count) break;
+    int layer = profile * SKYBAKE_MAX_DENSITY_LAYERS + i;
+    float layer_top_m = layer_bottom_m + skybake_layer_shape[layer].x;
+    if (i + 1 == count || altitude_m < layer_top_m) return skybakeLayerDensity(layer, altitude_m);
+    layer_bottom_m = layer_top_m;
+  }
+  return 0.0;
+}
+
+float skybakeRayleighDensity(float altitude_m) { return skybakeProfileDensity(0, altitude_m); }
+float skybakeMieDensity(float altitude_m) { return skybakeProfileDensity(1, altitude_m); }
+
+// Extinction coefficient per channel, m^-1.
+vec4 skybakeExtinction(float altitude_m) {
+  return skybake_rayleigh_scattering * skybakeRayleighDensity(altitude_m) +
+         skybake_mie_extinction * skybakeMieDensity(altitude_m) +
+         skybake_absorption_extinction * skybakeProfileDensity(2, altitude_m);
+}
+
+float skybakeLargestChannel(vec4 s) { return max(max(s.x, s.y), max(s.z, s.w)); }

@@ -1,0 +1,187 @@
+// skybake GLSL library, part 4 of 5: integrals along a ray
+// (runtime/ray_quadrature.h, single_scattering_ray.cpp, segment_radiance.cpp):
+// composite 4-point Gauss-Legendre rules whose optically thick sub-intervals
+// are split into pieces, single scattering with the ray cut at the edges of
+// the planet's shadow, and the direct integral of a segment's scattering
+// sources.
+
+struct SkybakeSingleScattering {
+  vec4 rayleigh;  // without its phase function, W m^-2 nm^-1
+  vec4 mie;
+};
+
+// The pieces of [a, b] that forEachOpticallyThinPiece yields, one per call
+// of skybakeNextPiece: `segments` equal sub-intervals, each split into
+// pieces of optical depth at most SKYBAKE_MAX_PIECE_OPTICAL_DEPTH until the
+// depth from a passes SKYBAKE_REFINED_OPTICAL_DEPTH. The extinction is that
+// of the most attenuated channel along the ray (r, mu).
+struct SkybakePieces {
+  float r, mu;      // the ray
+  float a, step_m;  // start, sub-interval length
+  float b;
+  float lowest_t;  // the ray's lowest point
+  int segments;
+  int next_segment;
+  float depth;             // optical depth travelled (estimate)
+  float extinction_start;  // at the next sub-interval's start, m^-1
+  // A sub-interval being split: its ends, piece length, pieces and the next.
+  float split_start, split_end, split_step;
+  int split_count, split_next;
+};
+
+float skybakeLargestExtinctionAlongRay(float r, float mu, float t) {
+  return skybakeLargestChannel(skybakeExtinction(skybakeShellRadiusAlongRay(r, mu, t) - skybake_radii_m.x));
+}
+
+SkybakePieces skybakePieces(float r, float mu, float a, float b, int segments) {
+  return SkybakePieces(r, mu, a, (b - a) / float(segments), b, -r * mu, segments, 0, 0.0,
+                       skybakeLargestExtinctionAlongRay(r, mu, a), 0.0, 0.0, 0.0, 0, 0);
+}
+
+bool skybakeNextPiece(inout SkybakePieces p, out float piece_start, out float piece_end) {
+  // Bounded: each pass yields a piece or starts a split sub-interval.
+  for (int guard = 0; guard < 2 * SKYBAKE_MAX_PIECES_PER_SUBINTERVAL + 4; ++guard) {
+    if (p.split_next < p.split_count) {
+      piece_start = p.split_start + float(p.split_next) * p.split_step;
+      if (!(p.depth < SKYBAKE_REFINED_OPTICAL_DEPTH)) {
+        piece_end = p.split_end;
+        p.split_count = 0;
+        return true;
+      }
+      piece_end = p.split_next + 1 == p.split_count ? p.split_end : piece_start + p.split_step;
+      p.split_next += 1;
+      if (p.split_next == p.split_count) p.split_count = 0;
+      p.depth += skybakeLargestExtinctionAlongRay(p.r, p.mu, 0.5 * (piece_start + piece_end)) * (piece_end - piece_start);
+      return true;
+    }
+    if (p.next_segment >= p.segments) return false;
+    int s = p.next_segment;
+    p.next_segment += 1;
+    float start = p.a + float(s) * p.step_m;
+    float end = s + 1 == p.segments ? p.b : start + p.step_m;
+    piece_start = start;
+    piece_end = end;
+    if (!(p.depth < SKYBAKE_REFINED_OPTICAL_DEPTH)) return true;
+    float extinction_end = skybakeLargestExtinctionAlongRay(p.r, p.mu, end);
+    float peak = max(max(p.extinction_start, skybakeLargestExtinctionAlongRay(p.r, p.mu, 0.5 * (start + end))),
+                     extinction_end);
+    if (p.lowest_t > start && p.lowest_t < end)
+      peak = max(peak, skybakeLargestExtinctionAlongRay(p.r, p.mu, p.lowest_t));
+    p.extinction_start = extinction_end;
+    float piece_depth = peak * (end - start);
+    if (!(piece_depth > SKYBAKE_MAX_PIECE_OPTICAL_DEPTH && !isinf(peak))) {
+      p.depth += piece_depth;
+      return true;
+    }
+    p.split_count = int(min(float(SKYBAKE_MAX_PIECES_PER_SUBINTERVAL), ceil(piece_depth / SKYBAKE_MAX_PIECE_OPTICAL_DEPTH)));
+    p.split_next = 0;
+    p.split_start = start;
+    p.split_end = end;
+    p.split_step = (end - start) / float(p.split_count);
+  }
+  return false;
+}
+
+// Single scattering over [t_start, t_end] of the ray (r, mu) with the sun at
+// (mu_s, nu), seen from the ray's start; `segments` sub-intervals shared
+// among the pieces between shadow crossings (integrateSingleScattering).
+SkybakeSingleScattering skybakeIntegrateSingleScattering(float r, float mu, float mu_s, float nu,
+                                                         bool ray_intersects_ground, float t_start, float t_end,
+                                                         int segments) {
+  vec4 rayleigh = vec4(0.0);
+  vec4 mie = vec4(0.0);
+  // A light shaft's shadow can reach past the ray's end: nothing is lit.
+  if (!(t_end > t_start)) return SkybakeSingleScattering(rayleigh, mie);
+  float bottom = skybake_radii_m.x;
+  // The ray's own legs to the top, the same at every node.
+  vec4 start_to_top_up = skybakeOpticalDepthToTop(r, mu);
+  vec4 start_to_top_down = skybakeOpticalDepthToTop(r, -mu);
+  float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
+  float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
+  SkybakeShadowCrossings crossings = skybakePlanetShadowCrossings(r, mu, mu_s, nu, t_end);
+  float ray_length_m = t_end - t_start;
+  float piece_start = t_start;
+  for (int i = 0; i <= crossings.count; ++i) {
+    bool last = i == crossings.count;
+    float piece_end = last ? t_end : clamp(crossings.distance_m[i], t_start, t_end);
+    if (!last && !(piece_end > piece_start)) continue;
+    SkybakePieces pieces = skybakePieces(r, mu, piece_start, piece_end,
+                                         skybakeSegmentsForPiece(segments, piece_end - piece_start, ray_length_m));
+    float a, b;
+    while (skybakeNextPiece(pieces, a, b)) {
+      float h = b - a;
+      for (int k = 0; k < SKYBAKE_GAUSS_NODES; ++k) {
+        float t = a + 0.5 * h * (1.0 + gauss_abscissa[k]);
+        float w = 0.5 * h * gauss_weight[k];
+        float r_t = skybakeShellRadiusAlongRay(r, mu, t);
+        float altitude_m = r_t - bottom;
+        float mu_s_t = skybakeClampCosine((r * mu_s + t * nu) / r_t);
+        float visible = skybakeSunDiskVisibleFraction(mu_s_t - skybakeTangentZenithCosine(r_t, bottom),
+                                                      bottom / r_t * skybake_radii_m.w);
+        if (visible <= 0.0) continue;  // in the planet's shadow
+        // The sunlight's whole path in one exponential: to the node, then
+        // on to the ray's start.
+        float mu_t = skybakeCosineAlongRay(r, mu, t, r_t);
+        bool reversed = ray_intersects_ground || t <= -r * mu;
+        vec4 along = reversed ? max(skybakeOpticalDepthToTop(r_t, -mu_t) - start_to_top_down, vec4(0.0))
+                              : max(start_to_top_up - skybakeOpticalDepthToTop(r_t, mu_t), vec4(0.0));
+        vec4 light = exp(-(skybakeOpticalDepthToTop(r_t, mu_s_t) + along)) * visible;
+        rayleigh += light * (w * skybakeRayleighDensity(altitude_m));
+        mie += light * (w * skybakeMieDensity(altitude_m));
+      }
+    }
+    piece_start = piece_end;
+  }
+  return SkybakeSingleScattering(rayleigh * skybake_sun_irradiance * skybake_rayleigh_scattering,
+                                 mie * skybake_sun_irradiance * skybake_mie_scattering);
+}
+
+// In-scattered radiance over [0, length_m] of the ray (r, mu) with the sun
+// at (mu_s, nu), each source attenuated back to the start, and the
+// segment's transmittance, the optical depth integrated from the density
+// profiles (directSegmentRadiance). `with_single` false leaves single
+// scattering out.
+SkybakeRadianceAndTransmittance skybakeDirectSegmentRadiance(float r, float mu, float mu_s, float nu, float length_m,
+                                                             int subintervals, bool with_single) {
+  float bottom = skybake_radii_m.x;
+  float rayleigh_phase = skybakeRayleighPhase(nu);
+  float mie_phase = skybakeMiePhase(nu);
+  float multiple_peak = skybakeMultiplePeak(nu);
+  float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
+  float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
+  vec4 sum = vec4(0.0);
+  vec4 before = vec4(0.0);  // optical depth from 0 to the current piece
+  SkybakePieces pieces = skybakePieces(r, mu, 0.0, length_m, subintervals);
+  float a, b;
+  while (skybakeNextPiece(pieces, a, b)) {
+    float h = b - a;
+    vec4 whole = vec4(0.0);
+    for (int k = 0; k < SKYBAKE_GAUSS_NODES; ++k) {
+      float d = a + 0.5 * h * (1.0 + gauss_abscissa[k]);
+      float partial_length_m = d - a;
+      vec4 partial = vec4(0.0);
+      for (int j = 0; j < SKYBAKE_GAUSS_NODES; ++j) {
+        float t = a + 0.5 * partial_length_m * (1.0 + gauss_abscissa[j]);
+        partial += skybakeExtinction(skybakeShellRadiusAlongRay(r, mu, t) - bottom) *
+                   (0.5 * partial_length_m * gauss_weight[j]);
+      }
+      float w = 0.5 * h * gauss_weight[k];
+      float r_d = skybakeShellRadiusAlongRay(r, mu, d);
+      float altitude_m = r_d - bottom;
+      whole += skybakeExtinction(altitude_m) * w;
+      float mu_d = skybakeCosineAlongRay(r, mu, d, r_d);
+      float mu_s_d = skybakeClampCosine((r * mu_s + d * nu) / r_d);
+      vec4 single_source = vec4(0.0);
+      if (with_single) {
+        single_source = (skybake_rayleigh_scattering * (skybakeRayleighDensity(altitude_m) * rayleigh_phase) +
+                         skybake_mie_scattering * (skybakeMieDensity(altitude_m) * mie_phase)) *
+                        (skybake_sun_irradiance * skybakeTransmittanceToSun(r_d, mu_s_d));
+      }
+      vec4 multiple_source = skybakeMultipleDensity(r_d, mu_d, mu_s_d, nu) *
+                             skybakeMultipleShapeWithPeak(skybakeMultiplePeakWeight(altitude_m), multiple_peak);
+      sum += (single_source + multiple_source) * exp(-(before + partial)) * w;
+    }
+    before += whole;
+  }
+  return SkybakeRadianceAndTransmittance(sum, exp(-before));
+}

@@ -1,0 +1,291 @@
+// The GLSL library's lookups equal skybake::Sky's: sky radiance (with light
+// shafts), radiance to a point (aerial perspective), irradiance and
+// transmittance, evaluated for the same queries on a headless OpenGL
+// context and on the CPU, and finite for hostile geometry.
+//
+// Tolerance: RMS relative difference <= 0.5 %, max <= 2 %, over values
+// above 1e-5 (W m^-2 sr^-1 nm^-1, or W m^-2 nm^-1, or transmittance). The
+// GLSL computes in float where the CPU computes coordinates and sums in
+// double: float resolves a planet-sized radius to half a metre, which
+// moves a texture coordinate by up to 1e-3 of a texel near the ground and
+// more along rays that graze the horizon, where the tables change fastest;
+// quadrature sums of 16 to 64 float terms add 1e-6 each. Interpolation is
+// done in the shader from texelFetch with the CPU's weights (hardware
+// filtering has 8 bits of sub-texel weight, 0.4 % of a texel-to-texel step,
+// more than the whole budget where neighbouring texels differ tenfold in
+// twilight). The 2 % maximum leaves room for the few queries within float
+// resolution of a discontinuity (a ray that grazes the ground is classified
+// by a sign the float and double arithmetic can disagree on).
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "runtime/gl/gl_program.h"
+#include "runtime/gl/headless_gl_context.h"
+#include "runtime/gl/sky_gl_resources.h"
+#include "runtime/sky.h"
+
+namespace skybake {
+namespace {
+
+// Query kinds, as the shader below reads them.
+enum class Kind { SkyRadiance = 0, RadianceToPoint = 1, Irradiance = 2, Transmittance = 3, Received = 4 };
+
+struct Query {
+  Kind kind;
+  glm::vec3 a;  // camera or point, m
+  glm::vec3 b;  // view direction, point or normal
+  glm::vec3 sun;
+  float shadow_length_m = 0.0f;
+};
+
+// Each pixel evaluates one query; two outputs (radiance and transmittance,
+// or sun and sky irradiance).
+const char* const kQueryMain = R"(
+uniform sampler2D query_a;  // xyz, w shadow length
+uniform sampler2D query_b;  // xyz
+uniform sampler2D query_c;  // xyz sun, w kind
+layout(location = 0) out vec4 first;
+layout(location = 1) out vec4 second;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 qa = texelFetch(query_a, p, 0);
+  vec4 qb = texelFetch(query_b, p, 0);
+  vec4 qc = texelFetch(query_c, p, 0);
+  int kind = int(qc.w);
+  first = vec4(0.0);
+  second = vec4(0.0);
+  if (kind == 0) {
+    SkybakeRadianceAndTransmittance v = skybakeSkyRadiance(qa.xyz, qb.xyz, qc.xyz, qa.w);
+    first = v.radiance;
+    second = v.transmittance;
+  } else if (kind == 1) {
+    SkybakeRadianceAndTransmittance v = skybakeRadianceToPoint(qa.xyz, qb.xyz, qc.xyz, qa.w);
+    first = v.radiance;
+    second = v.transmittance;
+  } else if (kind == 2) {
+    SkybakeSunAndSkyIrradiance e = skybakeSunAndSkyIrradiance(qa.xyz, qb.xyz, qc.xyz);
+    first = e.sun;
+    second = e.sky;
+  } else if (kind == 3) {
+    first = skybakeTransmittance(qa.xyz, qb.xyz);
+  } else {
+    SkybakeRadianceAndTransmittance v = skybakeReceivedRadiance(qa.xyz, qb.xyz, qc.xyz);
+    first = v.radiance;
+    second = v.transmittance;
+  }
+}
+)";
+
+constexpr int kQueryRowWidth = 64;
+
+struct Outputs {
+  std::vector<Spectrum> first, second;
+};
+
+GLuint floatTexture(int width, int height, const std::vector<glm::vec4>& texels) {
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  glActiveTexture(GL_TEXTURE15);  // a unit neither the tables nor the queries use
+  glBindTexture(GL_TEXTURE_2D, id);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT,
+               texels.empty() ? nullptr : texels.data());
+  return id;
+}
+
+class GlLookups {
+ public:
+  explicit GlLookups(const Sky& sky)
+      : resources_(sky),
+        program_(gl::kFullScreenVertexShader, "#version 330 core\n" + gl::skyGlslLibrary() + kQueryMain) {}
+
+  Outputs evaluate(const std::vector<Query>& queries) const {
+    const int width = kQueryRowWidth;
+    const int height = static_cast<int>((queries.size() + width - 1) / width);
+    std::vector<glm::vec4> a(static_cast<size_t>(width) * height), b(a.size()), c(a.size());
+    for (size_t i = 0; i < queries.size(); ++i) {
+      const Query& q = queries[i];
+      a[i] = glm::vec4(q.a, q.shadow_length_m);
+      b[i] = glm::vec4(q.b, 0.0f);
+      c[i] = glm::vec4(q.sun, static_cast<float>(q.kind));
+    }
+    const GLuint p = program_.id();
+    resources_.bind(p, 0);
+    const GLuint inputs[3] = {floatTexture(width, height, a), floatTexture(width, height, b),
+                              floatTexture(width, height, c)};
+    const char* names[3] = {"query_a", "query_b", "query_c"};
+    for (int i = 0; i < 3; ++i) {
+      glActiveTexture(GL_TEXTURE8 + i);
+      glBindTexture(GL_TEXTURE_2D, inputs[i]);
+      glUniform1i(glGetUniformLocation(p, names[i]), 8 + i);
+    }
+    const GLuint targets[2] = {floatTexture(width, height, {}), floatTexture(width, height, {})};
+    GLuint framebuffer = 0;
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, targets[0], 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, targets[1], 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, buffers);
+    EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+    glViewport(0, 0, width, height);
+    gl::drawFullScreenTriangle();
+    Outputs out;
+    std::vector<glm::vec4> pixels(a.size());
+    for (int i = 0; i < 2; ++i) {
+      glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
+      glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data());
+      (i == 0 ? out.first : out.second).assign(pixels.begin(), pixels.begin() + queries.size());
+    }
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(2, targets);
+    glDeleteTextures(3, inputs);
+    return out;
+  }
+
+ private:
+  gl::SkyGlResources resources_;
+  gl::GlProgram program_;
+};
+
+Outputs evaluateOnCpu(const Sky& sky, const std::vector<Query>& queries) {
+  Outputs out;
+  for (const Query& q : queries) {
+    const glm::dvec3 a(q.a), b(q.b), sun(q.sun);
+    Spectrum first(0.0f), second(0.0f);
+    switch (q.kind) {
+      case Kind::SkyRadiance: {
+        const RadianceAndTransmittance v = sky.skyRadiance(a, b, sun, q.shadow_length_m);
+        first = v.radiance, second = v.transmittance;
+        break;
+      }
+      case Kind::RadianceToPoint: {
+        const RadianceAndTransmittance v = sky.radianceToPoint(a, b, sun, q.shadow_length_m);
+        first = v.radiance, second = v.transmittance;
+        break;
+      }
+      case Kind::Irradiance: {
+        const SunAndSkyIrradiance e = sky.irradiance(a, b, sun);
+        first = e.sun, second = e.sky;
+        break;
+      }
+      case Kind::Transmittance:
+        first = sky.transmittance(a, b);
+        break;
+      case Kind::Received: {
+        const RadianceAndTransmittance v = sky.receivedRadiance(a, b, sun);
+        first = v.radiance, second = v.transmittance;
+        break;
+      }
+    }
+    out.first.push_back(first);
+    out.second.push_back(second);
+  }
+  return out;
+}
+
+// See the tolerance note at the top.
+constexpr double kValueFloor = 1e-5;
+constexpr double kMaxRmsRelative = 0.005;
+constexpr double kMaxRelative = 0.02;
+
+struct Difference {
+  double rms = 0.0, largest = 0.0;
+  size_t count = 0, non_finite = 0, worst = 0;
+};
+
+Difference compare(const std::vector<Spectrum>& cpu, const std::vector<Spectrum>& gpu, int channels) {
+  Difference d;
+  double sum = 0.0;
+  for (size_t i = 0; i < cpu.size(); ++i) {
+    for (int c = 0; c < channels; ++c) {
+      if (!std::isfinite(gpu[i][c])) ++d.non_finite;
+      if (!(cpu[i][c] > kValueFloor)) continue;
+      const double relative = std::abs(static_cast<double>(gpu[i][c]) - cpu[i][c]) / cpu[i][c];
+      sum += relative * relative;
+      if (relative > d.largest) d.largest = relative, d.worst = i;
+      ++d.count;
+    }
+  }
+  d.rms = d.count > 0 ? std::sqrt(sum / d.count) : 0.0;
+  return d;
+}
+
+void expectParity(const Sky& sky, const GlLookups& gl, const std::vector<Query>& queries, const std::string& what) {
+  const Outputs cpu = evaluateOnCpu(sky, queries);
+  const Outputs gpu = gl.evaluate(queries);
+  for (int output = 0; output < 2; ++output) {
+    const Difference d =
+        compare(output == 0 ? cpu.first : cpu.second, output == 0 ? gpu.first : gpu.second, sky.channelCount());
+    const Spectrum& c = (output == 0 ? cpu.first : cpu.second)[d.worst];
+    const Spectrum& g = (output == 0 ? gpu.first : gpu.second)[d.worst];
+    std::printf("%s, output %d: rms %.4f %% max %.4f %% over %zu values (worst query %zu: cpu %g %g %g, gl %g %g %g)\n",
+                what.c_str(), output, 100.0 * d.rms, 100.0 * d.largest, d.count, d.worst, c[0], c[1], c[2], g[0], g[1],
+                g[2]);
+    EXPECT_EQ(d.non_finite, 0u) << what;
+    EXPECT_LE(d.rms, kMaxRmsRelative) << what << " output " << output;
+    EXPECT_LE(d.largest, kMaxRelative) << what << " output " << output;
+  }
+}
+
+glm::vec3 sunAt(double zenith_deg, double azimuth_deg = 0.0) {
+  const double z = radiansFromDegrees(zenith_deg), a = radiansFromDegrees(azimuth_deg);
+  return glm::vec3(std::sin(z) * std::cos(a), std::sin(z) * std::sin(a), std::cos(z));
+}
+
+// Unit directions uniform over the sphere, fixed seed.
+std::vector<glm::vec3> directions(size_t count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  std::vector<glm::vec3> out;
+  for (size_t i = 0; i < count; ++i) {
+    const float z = 2.0f * uniform(rng) - 1.0f, phi = 6.2831853f * uniform(rng);
+    const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    out.emplace_back(s * std::cos(phi), s * std::sin(phi), z);
+  }
+  return out;
+}
+
+std::string bakePath(const char* name) { return std::string(SKYBAKE_GL_TEST_BAKE_DIR) + "/" + name; }
+
+class GlParity : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { context_ = new gl::HeadlessGlContext(); }
+  static void TearDownTestSuite() {
+    delete context_;
+    context_ = nullptr;
+  }
+  static gl::HeadlessGlContext* context_;
+};
+gl::HeadlessGlContext* GlParity::context_ = nullptr;
+
+// Sky radiance from the ground, 30 km and orbit, day to deep twilight,
+// with and without light shafts.
+TEST_F(GlParity, SkyRadiance) {
+  const Sky sky = Sky::load(bakePath("gl_earth.exr"));
+  const GlLookups gl(sky);
+  const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  for (double sun_zenith : {30.0, 85.0, 95.0}) {
+    for (float altitude : {0.0f, 30000.0f, 400000.0f}) {
+      std::vector<Query> queries;
+      for (const glm::vec3& d : directions(512, 7)) {
+        queries.push_back({Kind::SkyRadiance, glm::vec3(0.0f, 0.0f, bottom + altitude), d, sunAt(sun_zenith, 20.0)});
+      }
+      expectParity(
+          sky, gl, queries,
+          "sky radiance, sun " + std::to_string(sun_zenith) + " deg, altitude " + std::to_string(altitude) + " m");
+    }
+  }
+}
+}  // namespace
+}  // namespace skybake
