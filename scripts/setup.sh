@@ -18,6 +18,15 @@ packages=(
   # GNU time: tests/cli/lookup_memory_test.sh measures peak memory with it.
   time
   python3 python3-numpy python3-matplotlib snakemake
+  # The GL backend (runtime/gl, skybake render --backend gl): libepoxy loads
+  # the GL functions, libegl-dev and libgl-dev give EGL and desktop GL to
+  # link, libgles-dev the ES headers, libegl-mesa0 Mesa's EGL (its
+  # surfaceless platform), libgl1-mesa-dri the llvmpipe renderer for
+  # machines without a GPU.
+  libepoxy-dev libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
+  # tests/gl/glsl_spirv_test.sh: the GLSL compiles to SPIR-V (glslangValidator)
+  # and translates to HLSL and MSL (spirv-cross).
+  glslang-tools spirv-cross
 )
 
 missing=()

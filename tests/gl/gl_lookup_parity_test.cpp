@@ -20,12 +20,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "data_formats/error.h"
 #include "runtime/gl/gl_program.h"
 #include "runtime/gl/headless_gl_context.h"
 #include "runtime/gl/sky_gl_resources.h"
@@ -286,6 +288,118 @@ TEST_F(GlParity, SkyRadiance) {
           "sky radiance, sun " + std::to_string(sun_zenith) + " deg, altitude " + std::to_string(altitude) + " m");
     }
   }
+}
+
+// Aerial perspective toward points on the ground and in the air, short
+// (integrated directly) and long (difference of lookups), day and twilight,
+// with and without a shadow; in the whole and in the narrowed bake.
+TEST_F(GlParity, RadianceToPoint) {
+  for (const char* bake : {"gl_earth.exr", "gl_scene.exr"}) {
+    const Sky sky = Sky::load(bakePath(bake));
+    const GlLookups gl(sky);
+    const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+    for (double sun_zenith : {30.0, 85.0, 95.0}) {
+      std::vector<Query> queries;
+      const glm::vec3 camera(0.0f, 0.0f, bottom + 1000.0f);
+      int i = 0;
+      for (const glm::vec3& d : directions(768, 11)) {
+        // 2 km to 60 km: both sides of the direct / difference blend.
+        const float distance_m = 2000.0f * std::pow(30.0f, static_cast<float>(i % 16) / 15.0f);
+        // Positions rounded to float, so the CPU sees the query the GPU does.
+        const glm::vec3 point = camera + d * distance_m;
+        queries.push_back({Kind::RadianceToPoint, camera, point, sunAt(sun_zenith, 40.0), i % 5 == 0 ? 500.0f : 0.0f});
+        ++i;
+      }
+      expectParity(sky, gl, queries, std::string(bake) + ": radiance to a point, sun " + std::to_string(sun_zenith));
+    }
+  }
+}
+
+// Light shafts, the lit ground, the narrowed bake's integrated ground rays.
+TEST_F(GlParity, ShadowsGroundAndNarrowedScene) {
+  for (const char* bake : {"gl_earth.exr", "gl_scene.exr"}) {
+    const Sky sky = Sky::load(bakePath(bake));
+    const GlLookups gl(sky);
+    const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+    for (double sun_zenith : {40.0, 92.0}) {
+      std::vector<Query> queries;
+      int i = 0;
+      for (const glm::vec3& d : directions(512, 5)) {
+        const glm::vec3 camera(0.0f, 0.0f, bottom + 2000.0f);
+        const Kind kind = i % 2 == 0 ? Kind::SkyRadiance : Kind::Received;
+        queries.push_back({kind, camera, d, sunAt(sun_zenith), kind == Kind::SkyRadiance ? 3000.0f * (i % 4) : 0.0f});
+        ++i;
+      }
+      expectParity(sky, gl, queries, std::string(bake) + ": shafts and ground, sun " + std::to_string(sun_zenith));
+    }
+  }
+}
+
+// Sun and sky irradiance on tilted surfaces at several altitudes, and
+// transmittance along segments (some through the ground, some from space).
+TEST_F(GlParity, IrradianceAndTransmittance) {
+  const Sky sky = Sky::load(bakePath("gl_earth.exr"));
+  const GlLookups gl(sky);
+  const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  std::vector<Query> irradiance, transmittance;
+  int i = 0;
+  for (const glm::vec3& d : directions(512, 3)) {
+    const glm::vec3 point(0.0f, 0.0f, bottom + 500.0f * static_cast<float>(i % 9));
+    const glm::vec3 normal = glm::normalize(d + glm::vec3(0.0f, 0.0f, 1.0f));
+    irradiance.push_back({Kind::Irradiance, point, normal, sunAt(5.0 + 0.2 * (i % 470))});
+    const glm::vec3 a(0.0f, 0.0f, bottom + (i % 3 == 0 ? 500000.0f : 100.0f * (i % 7)));
+    transmittance.push_back({Kind::Transmittance, a, a + d * (1000.0f + 200.0f * (i % 50) * (i % 50)), sunAt(30.0)});
+    ++i;
+  }
+  expectParity(sky, gl, irradiance, "irradiance");
+  expectParity(sky, gl, transmittance, "transmittance");
+}
+
+// Hostile geometry: cameras below the ground, at the centre, far in space,
+// rays grazing the ground and the top, suns below every baked angle: every
+// GL output finite.
+TEST_F(GlParity, HostileGeometryIsFinite) {
+  const Sky sky = Sky::load(bakePath("gl_scene.exr"));
+  const GlLookups gl(sky);
+  const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  const float top = static_cast<float>(sky.atmosphere().top_radius_m);
+  const glm::vec3 cameras[] = {glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, bottom - 5000.0f), glm::vec3(0.0f, 0.0f, bottom),
+                               glm::vec3(0.0f, 0.0f, top), glm::vec3(0.0f, 0.0f, 1e9f)};
+  const glm::vec3 grazing[] = {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, -1.0f),
+                               glm::normalize(glm::vec3(1.0f, 0.0f, -1e-4f))};
+  std::vector<Query> queries;
+  for (const glm::vec3& camera : cameras) {
+    for (const glm::vec3& d : grazing) {
+      for (double sun_zenith : {0.0, 90.0, 120.0, 180.0}) {
+        for (int kind = 0; kind < 5; ++kind) {
+          queries.push_back({static_cast<Kind>(kind), camera, kind == 1 || kind == 3 ? camera + d * 1e5f : d,
+                             sunAt(sun_zenith), kind == 0 ? 1e7f : 0.0f});
+        }
+      }
+    }
+  }
+  const Outputs out = gl.evaluate(queries);
+  for (size_t i = 0; i < queries.size(); ++i) {
+    for (int c = 0; c < 4; ++c) {
+      EXPECT_TRUE(std::isfinite(out.first[i][c]) && std::isfinite(out.second[i][c])) << "query " << i;
+    }
+  }
+}
+
+// No EGL display at all: a BadInput error that says so, not a crash.
+TEST(GlContext, NoDisplayIsBadInput) {
+  const char* saved = std::getenv("EGL_PLATFORM");
+  setenv("EGL_PLATFORM", "nonexistent_platform", 1);
+  setenv("EGL_DRIVERS_PATH", "/nonexistent", 1);
+  setenv("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent.json", 1);
+  try {
+    gl::HeadlessGlContext context;
+    SUCCEED() << "a context was made anyway: " << context.description();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("no headless OpenGL"), std::string::npos) << e.what();
+  }
+  if (saved != nullptr) setenv("EGL_PLATFORM", saved, 1);
 }
 }  // namespace
 }  // namespace skybake
