@@ -51,6 +51,17 @@ if [ -x "$work/find_package/sky_zenith" ]; then
   [ "$got" = "$expected" ] || fail "the find_package consumer printed $got, skybake lookup $expected"
 fi
 
+# skybake::gl, where the build has it: the installed helper makes a context
+# and uploads the tables.
+if [ -e "$prefix/lib/libskybake_gl.so" ]; then
+  if [ -x "$work/find_package/gl_upload" ]; then
+    "$work/find_package/gl_upload" "$bake" >"$work/gl.out" 2>&1 || fail "gl_upload failed: $(cat "$work/gl.out")"
+    cat "$work/gl.out"
+  else
+    fail "the package has libskybake_gl.so but find_package(skybake) gave no skybake::gl"
+  fi
+fi
+
 # pkg-config, with nothing but the compiler and what the .pc file gives.
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
 flags=$(pkg-config --cflags --libs skybake)
