@@ -76,18 +76,6 @@ void main() {
 }
 )";
 
-glm::dvec3 fromZenithAzimuth(double zenith, double azimuth) {
-  return {std::sin(zenith) * std::cos(azimuth), std::sin(zenith) * std::sin(azimuth), std::cos(zenith)};
-}
-
-int nearestChannel(const std::vector<double>& wavelengths_nm, double target_nm) {
-  int best = 0;
-  for (int c = 1; c < static_cast<int>(wavelengths_nm.size()); ++c) {
-    if (std::abs(wavelengths_nm[c] - target_nm) < std::abs(wavelengths_nm[best] - target_nm)) best = c;
-  }
-  return best;
-}
-
 GLint at(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
 
 }  // namespace
@@ -102,7 +90,7 @@ std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) 
   glUseProgram(p);
 
   const double bottom = sky.atmosphere().bottom_radius_m;
-  const glm::dvec3 sun = fromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
+  const glm::dvec3 sun = sunDirection(v);
   const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
   const double elevation = radiansFromDegrees(v.view_elevation_deg);
   const glm::dvec3 forward(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
@@ -125,8 +113,8 @@ std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) 
   glUniform2f(at(p, "half_size"), static_cast<float>(half_width), static_cast<float>(half_width * v.height / v.width));
   glUniform3f(at(p, "camera_m"), 0.0f, 0.0f, static_cast<float>(bottom + v.altitude_m));
   glUniform3f(at(p, "sun_dir"), static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z));
-  glUniform3i(at(p, "rgb_channels"), nearestChannel(wavelengths, 680.0), nearestChannel(wavelengths, 550.0),
-              nearestChannel(wavelengths, 440.0));
+  const std::array<int, 3> rgb = displayChannels(wavelengths);
+  glUniform3i(at(p, "rgb_channels"), rgb[0], rgb[1], rgb[2]);
   glUniform1i(at(p, "ground_lit"), sky.outputs().ground_irradiance ? 1 : 0);
 
   const int strip_rows = std::min(v.height, kStripRows);

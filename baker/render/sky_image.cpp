@@ -11,19 +11,6 @@
 namespace skybake {
 namespace {
 
-glm::dvec3 fromZenithAzimuth(double zenith, double azimuth) {
-  return {std::sin(zenith) * std::cos(azimuth), std::sin(zenith) * std::sin(azimuth), std::cos(zenith)};
-}
-
-// Channel index nearest to a wavelength.
-int nearestChannel(const std::vector<double>& wavelengths_nm, double target_nm) {
-  int best = 0;
-  for (int c = 1; c < static_cast<int>(wavelengths_nm.size()); ++c) {
-    if (std::abs(wavelengths_nm[c] - target_nm) < std::abs(wavelengths_nm[best] - target_nm)) best = c;
-  }
-  return best;
-}
-
 // The view direction through pixel centre (x, y), or false outside the projection.
 bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
   const double u = (x + 0.5) / v.width;
@@ -31,7 +18,7 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
   switch (v.projection) {
     case Projection::LatLong: {
       // The sun's azimuth in the middle column, the zenith on the top row.
-      dir = fromZenithAzimuth(w * kPi, radiansFromDegrees(v.sun_azimuth_deg) + (u - 0.5) * 2.0 * kPi);
+      dir = directionFromZenithAzimuth(w * kPi, radiansFromDegrees(v.sun_azimuth_deg) + (u - 0.5) * 2.0 * kPi);
       return true;
     }
     case Projection::Fisheye: {
@@ -41,8 +28,8 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
       const double rho = std::sqrt(px * px + py * py);
       if (rho > 1.0) return false;
       // The sun's azimuth toward the top of the image.
-      dir = fromZenithAzimuth(rho * radiansFromDegrees(v.fov_deg) * 0.5,
-                              radiansFromDegrees(v.sun_azimuth_deg) + std::atan2(px, py));
+      dir = directionFromZenithAzimuth(rho * radiansFromDegrees(v.fov_deg) * 0.5,
+                                       radiansFromDegrees(v.sun_azimuth_deg) + std::atan2(px, py));
       return true;
     }
     case Projection::Perspective: {
@@ -78,13 +65,32 @@ Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec
 
 }  // namespace
 
+glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad) {
+  return {std::sin(zenith_rad) * std::cos(azimuth_rad), std::sin(zenith_rad) * std::sin(azimuth_rad),
+          std::cos(zenith_rad)};
+}
+
+glm::dvec3 sunDirection(const SkyView& v) {
+  return directionFromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
+}
+
+std::array<int, 3> displayChannels(const std::vector<double>& wavelengths_nm) {
+  auto nearest = [&](double target_nm) {
+    int best = 0;
+    for (int c = 1; c < static_cast<int>(wavelengths_nm.size()); ++c) {
+      if (std::abs(wavelengths_nm[c] - target_nm) < std::abs(wavelengths_nm[best] - target_nm)) best = c;
+    }
+    return best;
+  };
+  return {nearest(680.0), nearest(550.0), nearest(440.0)};
+}
+
 std::vector<float> renderSkyRadiance(const Sky& sky, const SkyView& v) {
   std::vector<float> image(static_cast<size_t>(v.width) * v.height * 3, 0.0f);
   const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m);
-  const glm::dvec3 sun = fromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
+  const glm::dvec3 sun = sunDirection(v);
   const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
-  const int rgb[3] = {nearestChannel(wavelengths, 680.0), nearestChannel(wavelengths, 550.0),
-                      nearestChannel(wavelengths, 440.0)};
+  const std::array<int, 3> rgb = displayChannels(wavelengths);
 #pragma omp parallel for schedule(dynamic)
   for (int y = 0; y < v.height; ++y) {
     for (int x = 0; x < v.width; ++x) {

@@ -2,8 +2,11 @@
 // sees (sky, sun disk, lit ground), and display encoding.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "runtime/sky.h"
 
@@ -26,6 +29,16 @@ struct SkyView {
   int width = 512;
   int height = 512;
 };
+
+// The unit vector at `zenith_rad` from +z and `azimuth_rad` from +x toward +y.
+glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad);
+
+// The channels an image shows as R, G and B: the bake's channels nearest
+// 680, 550 and 440 nm.
+std::array<int, 3> displayChannels(const std::vector<double>& wavelengths_nm);
+
+// The sun's direction in a view's frame (its zenith and azimuth angles).
+glm::dvec3 sunDirection(const SkyView& view);
 
 // Linear RGB radiance, W m^-2 sr^-1 nm^-1, width * height * 3 floats, rows top
 // to bottom. R, G and B are the bake's channels nearest 680, 550 and 440 nm.
