@@ -91,13 +91,10 @@ std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) 
 
   const double bottom = sky.atmosphere().bottom_radius_m;
   const glm::dvec3 sun = sunDirection(v);
-  const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
-  const double elevation = radiansFromDegrees(v.view_elevation_deg);
-  const glm::dvec3 forward(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                           std::sin(elevation));
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 0.0, 1.0)));
-  const glm::dvec3 up = glm::cross(right, forward);
-  const double half_width = std::tan(radiansFromDegrees(v.fov_deg) * 0.5);
+  const PerspectiveFrame frame = perspectiveFrame(v);
+  const glm::dvec3& forward = frame.forward;
+  const glm::dvec3& right = frame.right;
+  const glm::dvec3& up = frame.up;
   const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
 
   glUniform2f(at(p, "image_size"), static_cast<float>(v.width), static_cast<float>(v.height));
@@ -110,7 +107,7 @@ std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) 
               static_cast<float>(forward.z));
   glUniform3f(at(p, "right"), static_cast<float>(right.x), static_cast<float>(right.y), static_cast<float>(right.z));
   glUniform3f(at(p, "up"), static_cast<float>(up.x), static_cast<float>(up.y), static_cast<float>(up.z));
-  glUniform2f(at(p, "half_size"), static_cast<float>(half_width), static_cast<float>(half_width * v.height / v.width));
+  glUniform2f(at(p, "half_size"), static_cast<float>(frame.half_width), static_cast<float>(frame.half_height));
   glUniform3f(at(p, "camera_m"), 0.0f, 0.0f, static_cast<float>(bottom + v.altitude_m));
   glUniform3f(at(p, "sun_dir"), static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z));
   const std::array<int, 3> rgb = displayChannels(wavelengths);

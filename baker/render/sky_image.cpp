@@ -33,15 +33,9 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
       return true;
     }
     case Projection::Perspective: {
-      const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
-      const double elevation = radiansFromDegrees(v.view_elevation_deg);
-      const glm::dvec3 forward(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                               std::sin(elevation));
-      const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 0.0, 1.0)));
-      const glm::dvec3 up = glm::cross(right, forward);
-      const double half_width = std::tan(radiansFromDegrees(v.fov_deg) * 0.5);
-      const double half_height = half_width * v.height / v.width;
-      dir = glm::normalize(forward + right * ((2.0 * u - 1.0) * half_width) + up * ((1.0 - 2.0 * w) * half_height));
+      const PerspectiveFrame f = perspectiveFrame(v);
+      dir = glm::normalize(f.forward + f.right * ((2.0 * u - 1.0) * f.half_width) +
+                           f.up * ((1.0 - 2.0 * w) * f.half_height));
       return true;
     }
   }
@@ -72,6 +66,18 @@ glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad) {
 
 glm::dvec3 sunDirection(const SkyView& v) {
   return directionFromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
+}
+
+PerspectiveFrame perspectiveFrame(const SkyView& v) {
+  const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
+  const double elevation = radiansFromDegrees(v.view_elevation_deg);
+  PerspectiveFrame f;
+  f.forward = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
+  f.right = glm::normalize(glm::cross(f.forward, glm::dvec3(0.0, 0.0, 1.0)));
+  f.up = glm::cross(f.right, f.forward);
+  f.half_width = std::tan(radiansFromDegrees(v.fov_deg) * 0.5);
+  f.half_height = f.half_width * v.height / v.width;
+  return f;
 }
 
 std::array<int, 3> displayChannels(const std::vector<double>& wavelengths_nm) {

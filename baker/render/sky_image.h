@@ -40,6 +40,14 @@ std::array<int, 3> displayChannels(const std::vector<double>& wavelengths_nm);
 // The sun's direction in a view's frame (its zenith and azimuth angles).
 glm::dvec3 sunDirection(const SkyView& view);
 
+// A perspective view's camera frame: unit vectors along the view, to the
+// image's right and up, and the image plane's half extents at distance 1.
+struct PerspectiveFrame {
+  glm::dvec3 forward, right, up;
+  double half_width, half_height;
+};
+PerspectiveFrame perspectiveFrame(const SkyView& view);
+
 // Linear RGB radiance, W m^-2 sr^-1 nm^-1, width * height * 3 floats, rows top
 // to bottom. R, G and B are the bake's channels nearest 680, 550 and 440 nm.
 // Pixels outside the projection (the corners of a fisheye) are 0.
