@@ -18,6 +18,8 @@ packages=(
   # GNU time: tests/cli/lookup_memory_test.sh measures peak memory with it.
   time
   python3 python3-numpy python3-matplotlib snakemake
+  # The Python module (baker/python) and its tests.
+  pybind11-dev python3-dev python3-pytest
   # The GL backend (runtime/gl, skybake render --backend gl): libepoxy loads
   # the GL functions, libegl-dev and libgl-dev give EGL and desktop GL to
   # link, libgles-dev the ES headers, libegl-mesa0 Mesa's EGL (its

@@ -1,0 +1,14 @@
+// What the Python module's source files share: the pieces each registers
+// with the module (python_module.cpp makes the module and calls them).
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace skybake::python {
+
+// skybake._skybake.Sky: the lookups over rows of float64 vectors.
+void registerLookups(pybind11::module_& m);
+// skybake._skybake.bake: a config (TOML path or dict) into a bake file.
+void registerBake(pybind11::module_& m);
+
+}  // namespace skybake::python

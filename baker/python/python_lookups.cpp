@@ -1,0 +1,195 @@
+// skybake._skybake.Sky: Sky's lookups over N rows at once. The Python layer
+// (skybake/__init__.py) broadcasts its arguments and hands over C-contiguous
+// float64 arrays of shape (N, 3) (directions, positions in metres from the
+// planet's centre) and (N,) (lengths in metres); results are float32 arrays
+// of shape (N, channels), the lookups' own Spectrum values unchanged. The GIL
+// is released during the lookups, and calls of many rows are split over
+// threads (every Sky lookup is const and thread-safe).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "baker/python/python_bindings.h"
+#include "data_formats/error.h"
+#include "runtime/sky.h"
+
+namespace py = pybind11;
+
+namespace skybake::python {
+namespace {
+
+using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Spectra = py::array_t<float>;
+
+// Fewer rows than this per thread cost more in thread start-up (tens of
+// microseconds) than the lookups they would take off the first thread.
+constexpr size_t kMinRowsPerThread = 4096;
+
+size_t rowCount(const Rows& a, int columns, const char* name) {
+  if (a.ndim() != 2 || a.shape(1) != columns) {
+    throw Error(ErrorKind::BadInput, std::string(name) + ": needs shape (N, " + std::to_string(columns) + ")");
+  }
+  return static_cast<size_t>(a.shape(0));
+}
+
+glm::dvec3 row3(const double* base, size_t i) { return {base[3 * i], base[3 * i + 1], base[3 * i + 2]}; }
+
+// Runs body(first, last) over [0, n) on as many threads as the rows warrant,
+// without the GIL; rethrows the first exception a thread raised.
+template <typename Body>
+void forRows(size_t n, Body body) {
+  py::gil_scoped_release release;
+  const size_t hardware = std::max(1u, std::thread::hardware_concurrency());
+  const size_t threads = std::clamp<size_t>(n / kMinRowsPerThread, 1, hardware);
+  std::vector<std::exception_ptr> errors(threads);
+  auto run = [&](size_t t) {
+    try {
+      body(n * t / threads, n * (t + 1) / threads);
+    } catch (...) {
+      errors[t] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(run, t);
+  run(0);
+  for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+}
+
+Spectra spectra(size_t n, int channels) {
+  return Spectra({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(channels)});
+}
+
+void store(float* out, size_t i, int channels, const Spectrum& s) {
+  for (int c = 0; c < channels; ++c) out[i * channels + c] = s[c];
+}
+
+py::tuple radianceRows(const Sky& sky, const Rows& from, const Rows& to, const Rows& sun, const Rows& shadow_m,
+                       bool to_point) {
+  const size_t n = rowCount(from, 3, to_point ? "camera_m" : "camera_m");
+  if (rowCount(to, 3, to_point ? "point_m" : "view_dir") != n || rowCount(sun, 3, "sun_dir") != n ||
+      static_cast<size_t>(shadow_m.size()) != n) {
+    throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
+  }
+  const int channels = sky.channelCount();
+  Spectra radiance = spectra(n, channels), transmittance = spectra(n, channels);
+  const double *a = from.data(), *b = to.data(), *s = sun.data(), *shadow = shadow_m.data();
+  float *r = radiance.mutable_data(), *t = transmittance.mutable_data();
+  forRows(n, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      const RadianceAndTransmittance v = to_point ? sky.radianceToPoint(row3(a, i), row3(b, i), row3(s, i), shadow[i])
+                                                  : sky.skyRadiance(row3(a, i), row3(b, i), row3(s, i), shadow[i]);
+      store(r, i, channels, v.radiance);
+      store(t, i, channels, v.transmittance);
+    }
+  });
+  return py::make_tuple(radiance, transmittance);
+}
+
+py::dict atmosphereDict(const AtmosphereParameters& a) {
+  auto spectrum = [&](const Spectrum& s) {
+    std::vector<double> v;
+    for (int c = 0; c < a.channelCount(); ++c) v.push_back(s[c]);
+    return v;
+  };
+  py::dict d;
+  d["wavelengths_nm"] = a.wavelengths_nm;
+  d["bottom_radius_m"] = a.bottom_radius_m;
+  d["top_radius_m"] = a.top_radius_m;
+  d["ground_albedo"] = spectrum(a.ground_albedo);
+  d["sun_irradiance"] = spectrum(a.sun_irradiance);
+  d["sun_angular_radius_rad"] = a.sun_angular_radius_rad;
+  d["sun_max_zenith_deg"] = a.sun_max_zenith_deg;
+  d["rayleigh_scattering"] = spectrum(a.rayleigh_scattering);
+  d["mie_scattering"] = spectrum(a.mie_scattering);
+  d["mie_extinction"] = spectrum(a.mie_extinction);
+  d["mie_phase_g"] = a.mie_phase_g;
+  d["absorption_extinction"] = spectrum(a.absorption_extinction);
+  return d;
+}
+
+}  // namespace
+
+void registerLookups(py::module_& m) {
+  py::class_<Sky>(m, "Sky")
+      .def(py::init([](const std::string& path) { return Sky::load(path); }), py::arg("path"),
+           py::call_guard<py::gil_scoped_release>())
+      .def("_sky_radiance", [](const Sky& sky, const Rows& camera, const Rows& view, const Rows& sun,
+                               const Rows& shadow) { return radianceRows(sky, camera, view, sun, shadow, false); })
+      .def("_radiance_to_point", [](const Sky& sky, const Rows& camera, const Rows& point, const Rows& sun,
+                                    const Rows& shadow) { return radianceRows(sky, camera, point, sun, shadow, true); })
+      .def("_irradiance",
+           [](const Sky& sky, const Rows& point, const Rows& normal, const Rows& sun) {
+             const size_t n = rowCount(point, 3, "point_m");
+             if (rowCount(normal, 3, "normal") != n || rowCount(sun, 3, "sun_dir") != n) {
+               throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
+             }
+             const int channels = sky.channelCount();
+             Spectra direct = spectra(n, channels), diffuse = spectra(n, channels);
+             const double *p = point.data(), *q = normal.data(), *s = sun.data();
+             float *d = direct.mutable_data(), *f = diffuse.mutable_data();
+             forRows(n, [&](size_t first, size_t last) {
+               for (size_t i = first; i < last; ++i) {
+                 const SunAndSkyIrradiance e = sky.irradiance(row3(p, i), row3(q, i), row3(s, i));
+                 store(d, i, channels, e.sun);
+                 store(f, i, channels, e.sky);
+               }
+             });
+             return py::make_tuple(direct, diffuse);
+           })
+      .def("_transmittance",
+           [](const Sky& sky, const Rows& a, const Rows& b) {
+             const size_t n = rowCount(a, 3, "a_m");
+             if (rowCount(b, 3, "b_m") != n) throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
+             const int channels = sky.channelCount();
+             Spectra out = spectra(n, channels);
+             const double *pa = a.data(), *pb = b.data();
+             float* o = out.mutable_data();
+             forRows(n, [&](size_t first, size_t last) {
+               for (size_t i = first; i < last; ++i) store(o, i, channels, sky.transmittance(row3(pa, i), row3(pb, i)));
+             });
+             return out;
+           })
+      .def(
+          "solar_radiance",
+          [](const Sky& sky) {
+            Spectra out = spectra(1, sky.channelCount());
+            store(out.mutable_data(), 0, sky.channelCount(), sky.solarRadiance());
+            return out.reshape({sky.channelCount()});
+          },
+          "Radiance of the sun disk above the atmosphere, W m^-2 sr^-1 nm^-1, one value per channel.")
+      .def_property_readonly("channel_count", &Sky::channelCount)
+      .def_property_readonly("orders", &Sky::orders)
+      .def_property_readonly("wavelengths_nm", [](const Sky& sky) { return sky.atmosphere().wavelengths_nm; })
+      .def_property_readonly("atmosphere", [](const Sky& sky) { return atmosphereDict(sky.atmosphere()); })
+      .def_property_readonly("bake_report_json", &Sky::bakeReportJson)
+      .def_property_readonly("baked_ranges",
+                             [](const Sky& sky) {
+                               const BakedRanges& r = sky.bakedRanges();
+                               py::dict d;
+                               d["altitude_min_m"] = r.altitude_min_m;
+                               d["altitude_max_m"] = r.altitude_max_m;
+                               d["sun_zenith_min_deg"] = r.sun_zenith_min_deg;
+                               d["sun_zenith_max_deg"] = r.sun_zenith_max_deg;
+                               d["atmosphere_top_m"] = r.atmosphere_top_m;
+                               return d;
+                             })
+      .def_property_readonly("outputs", [](const Sky& sky) {
+        py::dict d;
+        d["sky_radiance"] = true;
+        d["radiance_to_points"] = sky.outputs().radiance_to_points;
+        d["ground_irradiance"] = sky.outputs().ground_irradiance;
+        return d;
+      });
+}
+
+}  // namespace skybake::python

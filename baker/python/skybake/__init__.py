@@ -1,0 +1,127 @@
+"""skybake: precomputed atmospheric scattering from Python.
+
+    sky = skybake.Sky("earth.exr")
+    radiance, transmittance = sky.sky_radiance(camera_m, view_dir, sun_dir)
+
+Positions are metres from the planet's centre and directions unit vectors,
+as arrays whose last axis has length 3; any leading shapes that numpy
+broadcasts together. Results are float32 arrays of the broadcast shape plus
+one axis of the bake's channels, in its channel order (`sky.wavelengths_nm`):
+radiance in W m^-2 sr^-1 nm^-1, irradiance in W m^-2 nm^-1. The values are
+the C++ runtime's (runtime/sky.h) bit for bit; the GIL is released while a
+lookup runs, and calls of many rows use several threads.
+
+Bad input (a missing or corrupt file, a config value, a left-out output)
+raises skybake.BadInput, a ValueError with the message the command line
+prints.
+"""
+import json as _json
+
+import numpy as _np
+
+from . import _skybake
+from ._skybake import BadInput
+
+__all__ = ["Sky", "BadInput", "bake"]
+
+
+def _rows(*vectors, scalars=()):
+    """Broadcasts (..., 3) vectors and (...) scalars to one leading shape;
+    returns that shape and each as C-contiguous float64 rows."""
+    vectors = [_np.asarray(v, dtype=_np.float64) for v in vectors]
+    scalars = [_np.asarray(s, dtype=_np.float64) for s in scalars]
+    for v in vectors:
+        if v.ndim == 0 or v.shape[-1] != 3:
+            raise BadInput(f"a position or direction needs a last axis of length 3, not shape {v.shape}")
+    try:
+        shape = _np.broadcast_shapes(*[v.shape[:-1] for v in vectors], *[s.shape for s in scalars])
+    except ValueError as e:
+        raise BadInput(f"the arguments' shapes do not broadcast: {e}") from None
+    n = int(_np.prod(shape, dtype=_np.int64))
+    out = [_np.ascontiguousarray(_np.broadcast_to(v, shape + (3,)).reshape(n, 3)) for v in vectors]
+    out += [_np.ascontiguousarray(_np.broadcast_to(s, shape).reshape(n)) for s in scalars]
+    return shape, out
+
+
+class Sky:
+    """A bake file's lookups (skybake::Sky). Thread-safe."""
+
+    def __init__(self, path):
+        self._sky = _skybake.Sky(str(path))
+
+    @property
+    def wavelengths_nm(self):
+        return list(self._sky.wavelengths_nm)
+
+    @property
+    def channel_count(self):
+        return self._sky.channel_count
+
+    @property
+    def orders(self):
+        """Scattering orders the bake computed."""
+        return self._sky.orders
+
+    @property
+    def atmosphere(self):
+        """The atmosphere the file states (SI units; spectra per channel)."""
+        return self._sky.atmosphere
+
+    @property
+    def baked_ranges(self):
+        """The camera altitudes (m) and sun zenith angles (deg) the tables cover."""
+        return self._sky.baked_ranges
+
+    @property
+    def outputs(self):
+        """What the bake holds: sky_radiance, radiance_to_points, ground_irradiance."""
+        return self._sky.outputs
+
+    @property
+    def bake_report(self):
+        """The bake report the file carries, as a dict."""
+        return _json.loads(self._sky.bake_report_json)
+
+    def _shaped(self, shape, *results):
+        c = self.channel_count
+        return tuple(r.reshape(shape + (c,)) for r in results)
+
+    def sky_radiance(self, camera_m, view_dir, sun_dir, shadow_length_m=0.0):
+        """Radiance toward the camera along view_dir and the transmittance to
+        the ray's end (the ground's reflected light not included)."""
+        shape, (c, v, s, d) = _rows(camera_m, view_dir, sun_dir, scalars=(shadow_length_m,))
+        return self._shaped(shape, *self._sky._sky_radiance(c, v, s, d))
+
+    def radiance_to_point(self, camera_m, point_m, sun_dir, shadow_length_m=0.0):
+        """Aerial perspective: radiance between camera and point, and the
+        transmittance between them."""
+        shape, (c, p, s, d) = _rows(camera_m, point_m, sun_dir, scalars=(shadow_length_m,))
+        return self._shaped(shape, *self._sky._radiance_to_point(c, p, s, d))
+
+    def irradiance(self, point_m, normal, sun_dir):
+        """(sun, sky) irradiance on a surface at point_m with unit normal."""
+        shape, (p, n, s) = _rows(point_m, normal, sun_dir)
+        return self._shaped(shape, *self._sky._irradiance(p, n, s))
+
+    def transmittance(self, a_m, b_m):
+        """Transmittance along the segment from a_m to b_m (0 through the ground)."""
+        shape, (a, b) = _rows(a_m, b_m)
+        return self._shaped(shape, self._sky._transmittance(a, b))[0]
+
+    def solar_radiance(self):
+        """The sun disk's radiance above the atmosphere, per channel."""
+        return self._sky.solar_radiance()
+
+
+def bake(config, output, threads=0, orders=None, reproducible=False, progress=None):
+    """Bakes `config` (a TOML file's path, or a dict in the config schema of
+    data_formats/CONFIG.md, validated with the same messages) into `output`,
+    as `skybake bake` does, and returns the bake report as a dict.
+
+    threads: OpenMP threads (0: all cores); orders: overrides bake.orders;
+    reproducible: leave the run's facts (time, threads) out of the file;
+    progress: progress(stage, fraction) called as each stage starts, at each
+    tenth of its work and at its end; None draws the command line's bar when
+    stderr is a terminal."""
+    return _skybake.bake(config if isinstance(config, dict) else str(config), str(output),
+                         threads, orders, reproducible, progress)

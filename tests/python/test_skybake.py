@@ -1,0 +1,147 @@
+"""The Python module against the C++ runtime and the command line.
+
+Run by CTest (python_module): SKYBAKE_BINARY names the skybake command,
+SKYBAKE_TEST_BAKE a default-size Earth bake, SKYBAKE_SOURCE_DIR the
+checkout; PYTHONPATH holds the build's python/ folder.
+"""
+import concurrent.futures
+import csv
+import io
+import os
+import subprocess
+import tomllib
+
+import numpy as np
+import pytest
+
+import skybake
+
+BINARY = os.environ["SKYBAKE_BINARY"]
+BAKE = os.environ["SKYBAKE_TEST_BAKE"]
+SOURCE = os.environ["SKYBAKE_SOURCE_DIR"]
+SMALL_EARTH = os.path.join(SOURCE, "tests", "cli", "small_earth.toml")
+
+
+@pytest.fixture(scope="module")
+def sky():
+    return skybake.Sky(BAKE)
+
+
+def direction(zenith_deg, azimuth_deg):
+    """The command line's local frame (baker/validation/local_frame.h)."""
+    t, p = np.broadcast_arrays(np.radians(zenith_deg), np.radians(azimuth_deg))
+    return np.stack([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)], axis=-1)
+
+
+# Queries in the command line's columns: altitude_m, sun_zenith_deg,
+# view_zenith_deg, view_azimuth_deg, distance_m (0: the whole ray). Day,
+# low sun, twilight, looking down, from orbit, and points at a distance.
+QUERIES = [
+    (0, 30, 0, 0, 0), (1000, 30, 60, 90, 0), (1000, 85, 89, 10, 0), (50, 95, 80, 0, 0),
+    (2000, 60, 120, 45, 0), (400000, 40, 110, 0, 0), (10, 45, 80, 30, 20000), (3000, 96, 95, 180, 5000),
+]
+
+
+def cli_lookup(queries):
+    text = "altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m\n"
+    text += "".join(",".join(str(v) for v in q) + "\n" for q in queries)
+    out = subprocess.run([BINARY, "lookup", "radiance", BAKE, "--queries", "/dev/stdin"], input=text,
+                         capture_output=True, text=True, check=True).stdout
+    rows = list(csv.DictReader(io.StringIO(out)))
+    names = [k for k in rows[0] if k.startswith("radiance_")]
+    tnames = [k for k in rows[0] if k.startswith("transmittance_")]
+    # %.9g round-trips a float32 exactly, so these are the C++ values themselves.
+    radiance = np.array([[float(r[k]) for k in names] for r in rows], dtype=np.float32)
+    transmittance = np.array([[float(r[k]) for k in tnames] for r in rows], dtype=np.float32)
+    return radiance, transmittance
+
+
+def test_lookups_equal_the_command_lines_bit_for_bit(sky):
+    # The command line and the module call the same Sky lookups on the same
+    # doubles: the float32 results must be identical, not merely close.
+    expected_radiance, expected_transmittance = cli_lookup(QUERIES)
+    bottom = sky.atmosphere["bottom_radius_m"]
+    for q, er, et in zip(QUERIES, expected_radiance, expected_transmittance):
+        altitude, sun_zenith, view_zenith, view_azimuth, distance = q
+        camera = np.array([0.0, 0.0, bottom + altitude])
+        view = direction(view_zenith, view_azimuth)
+        sun = direction(sun_zenith, 0.0)
+        if distance > 0:
+            r, t = sky.radiance_to_point(camera, camera + view * distance, sun)
+        else:
+            r, t = sky.sky_radiance(camera, view, sun)
+        np.testing.assert_array_equal(r, er, err_msg=str(q))
+        np.testing.assert_array_equal(t, et, err_msg=str(q))
+
+
+def test_shapes_broadcast_and_results_are_float32_per_channel(sky):
+    bottom = sky.atmosphere["bottom_radius_m"]
+    views = direction(np.linspace(0, 180, 7)[:, None], np.linspace(0, 360, 5)[None, :])  # (7, 5, 3)
+    r, t = sky.sky_radiance([0, 0, bottom + 100], views, direction(30, 0))
+    assert r.shape == (7, 5, sky.channel_count) and t.shape == r.shape
+    assert r.dtype == np.float32 and t.dtype == np.float32
+    assert np.all(np.isfinite(r)) and np.all(r >= 0) and np.all((t >= 0) & (t <= 1))
+    # Each entry is that row's own lookup.
+    one, _ = sky.sky_radiance([0, 0, bottom + 100], views[3, 2], direction(30, 0))
+    np.testing.assert_array_equal(r[3, 2], one)
+    sun, diffuse = sky.irradiance([[0, 0, bottom]] * 4, [0, 0, 1], direction([0, 30, 60, 89], 0))
+    assert sun.shape == (4, sky.channel_count) and np.all(np.diff(sun[:, 1]) < 0)  # lower sun, less direct light
+    assert np.all(diffuse > 0)
+    assert sky.transmittance([0, 0, bottom + 10], [0, 0, bottom + 20000]).shape == (sky.channel_count,)
+    assert sky.solar_radiance().shape == (sky.channel_count,)
+    assert sky.wavelengths_nm == [680.0, 550.0, 440.0]
+    assert sky.baked_ranges["sun_zenith_max_deg"] == pytest.approx(102.0)
+    assert sky.outputs == {"sky_radiance": True, "radiance_to_points": True, "ground_irradiance": True}
+
+
+def test_many_rows_over_threads_and_many_callers_equal_one_by_one(sky):
+    bottom = sky.atmosphere["bottom_radius_m"]
+    rng = np.random.default_rng(7)
+    views = rng.normal(size=(20000, 3))  # enough rows to be split over threads
+    views /= np.linalg.norm(views, axis=-1, keepdims=True)
+    camera, sun = [0, 0, bottom + 500], direction(80, 0)
+    whole, _ = sky.sky_radiance(camera, views, sun)
+    sample = rng.choice(len(views), 50, replace=False)
+    for i in sample:
+        np.testing.assert_array_equal(whole[i], sky.sky_radiance(camera, views[i], sun)[0])
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        results = list(pool.map(lambda _: sky.sky_radiance(camera, views, sun)[0], range(4)))
+    for r in results:
+        np.testing.assert_array_equal(r, whole)
+
+
+def test_bad_input_raises_badinput_with_the_command_lines_message(sky, tmp_path):
+    with pytest.raises(skybake.BadInput, match="no such bake file"):
+        skybake.Sky(tmp_path / "missing.exr")
+    garbage = tmp_path / "garbage.exr"
+    garbage.write_bytes(b"not an exr" * 100)
+    with pytest.raises(ValueError):
+        skybake.Sky(garbage)
+    with pytest.raises(skybake.BadInput, match="last axis of length 3"):
+        sky.sky_radiance([0, 0, 1], [0, 1], [0, 0, 1])
+    with pytest.raises(skybake.BadInput, match="broadcast"):
+        sky.sky_radiance(np.zeros((2, 3)), np.zeros((3, 3)), [0, 0, 1])
+    config = tomllib.load(open(SMALL_EARTH, "rb"))
+    config["mie"]["phase_g"] = 1.5
+    with pytest.raises(skybake.BadInput, match="mie.phase_g"):
+        skybake.bake(config, tmp_path / "x.exr")
+    assert not (tmp_path / "x.exr").exists()
+
+
+def test_bake_from_a_dict_gives_the_same_file_as_the_command_line(tmp_path):
+    config = tomllib.load(open(SMALL_EARTH, "rb"))
+    calls = []
+    report = skybake.bake(config, tmp_path / "py.exr", threads=1, reproducible=True,
+                          progress=lambda stage, fraction: calls.append((stage, fraction)))
+    assert len(report["orders"]) >= 1  # one entry per computed order
+    assert calls and all(0.0 <= f <= 1.0 for _, f in calls)
+    assert any(f == 1.0 for _, f in calls) and any(f == 0.0 for _, f in calls)
+    subprocess.run([BINARY, "bake", SMALL_EARTH, "-o", str(tmp_path / "cli.exr"), "--reproducible", "--threads", "1"],
+                   check=True, capture_output=True)
+    # A dict read from the file and the file itself are the same config: the
+    # lookups of the two bakes agree exactly.
+    a, b = skybake.Sky(tmp_path / "py.exr"), skybake.Sky(tmp_path / "cli.exr")
+    bottom = a.atmosphere["bottom_radius_m"]
+    views = direction(np.linspace(0, 170, 18), 20.0)
+    np.testing.assert_array_equal(a.sky_radiance([0, 0, bottom + 10], views, direction(50, 0))[0],
+                                  b.sky_radiance([0, 0, bottom + 10], views, direction(50, 0))[0])
