@@ -13,6 +13,15 @@ namespace {
 // than the rows.
 constexpr auto kRedrawInterval = std::chrono::milliseconds(100);
 constexpr int kBarWidth = 30;
+// Off a terminal (a log file, a CI job), a line per 1/kLogSteps of a stage
+// and at least one per kLogInterval: a long stage (a reference run takes
+// hours) would otherwise leave the log silent until it ends, which reads as
+// hung; more often would bury the log in lines.
+constexpr size_t kLogSteps = 10;
+constexpr auto kLogInterval = std::chrono::seconds(10);
+// No such lines in a stage's first second: most bake stages end sooner, and
+// ten lines each would bury a bake's log (its done line says enough).
+constexpr auto kLogQuietStart = std::chrono::seconds(1);
 
 }  // namespace
 
@@ -25,16 +34,26 @@ void TerminalProgress::beginStage(const std::string& name, size_t work_units) {
   stage_ = name;
   total_ = std::max<size_t>(work_units, 1);
   done_ = 0;
+  {
+    const std::lock_guard lock(draw_mutex_);
+    stage_start_ = std::chrono::steady_clock::now();
+    last_log_ = stage_start_;
+    next_log_step_ = 1;
+  }
   if (interactive_) draw(0);
 }
 
 void TerminalProgress::advance(size_t units) {
   const size_t done = done_.fetch_add(units) + units;
-  if (!interactive_) return;
-  // Only one thread draws; the others carry on computing.
+  // Only one thread draws; the others carry on computing (a step it misses
+  // is taken by the next advance, as `done` only grows).
   std::unique_lock lock(draw_mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
   const auto now = std::chrono::steady_clock::now();
+  if (!interactive_) {
+    logLine(done, now);
+    return;
+  }
   if (now - last_draw_ < kRedrawInterval) return;
   last_draw_ = now;
   draw(done);
@@ -46,6 +65,24 @@ void TerminalProgress::draw(size_t done) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - bake_start_).count();
   fmt::print(stderr, "\r\033[K{:<36} [{}{}] {:3.0f}%  {:6.1f} s", stage_, std::string(filled, '#'),
              std::string(kBarWidth - filled, '.'), 100.0 * fraction, elapsed);
+  std::fflush(stderr);
+}
+
+void TerminalProgress::logLine(size_t done, std::chrono::steady_clock::time_point now) {
+  // The finished stage gets endStage's line instead.
+  if (done >= total_ || now - stage_start_ < kLogQuietStart) return;
+  // Steps in integers: done / total_ >= step / kLogSteps, exactly.
+  const size_t step = done * kLogSteps / total_;
+  if (step < next_log_step_ && now - last_log_ < kLogInterval) return;
+  last_log_ = now;
+  // The step after the one just passed (not simply the next one: a late
+  // line, after a quiet start or a missed lock, would be followed at once).
+  next_log_step_ = step + 1;
+  const double fraction = static_cast<double>(done) / total_;
+  const double stage_s = std::chrono::duration<double>(now - stage_start_).count();
+  const double elapsed = std::chrono::duration<double>(now - bake_start_).count();
+  fmt::print(stderr, "{:<36} {:3.0f}% ({}/{}) after {:6.1f} s  (elapsed {:6.1f} s)\n", stage_, 100.0 * fraction, done,
+             total_, stage_s, elapsed);
   std::fflush(stderr);
 }
 

@@ -1,5 +1,7 @@
-// Progress on stderr: a live bar (stage, percent, elapsed) on a terminal, one
-// line per finished stage otherwise (logs stay readable).
+// Progress on stderr: a live bar (stage, percent, elapsed) on a terminal;
+// otherwise (logs) plain lines: once a stage has run a second, one per 10 %
+// of it or per 10 s, whichever comes first, with the time so far, and one per
+// finished stage.
 #pragma once
 
 #include <atomic>
@@ -19,6 +21,9 @@ class TerminalProgress final : public ProgressSink {
 
  private:
   void draw(size_t done);
+  // Off a terminal: a line when the stage has passed its next step or has
+  // been silent too long. Called with draw_mutex_ held.
+  void logLine(size_t done, std::chrono::steady_clock::time_point now);
 
   bool interactive_;
   std::string stage_;
@@ -27,6 +32,10 @@ class TerminalProgress final : public ProgressSink {
   std::mutex draw_mutex_;
   std::chrono::steady_clock::time_point bake_start_;
   std::chrono::steady_clock::time_point last_draw_;
+  // Guarded by draw_mutex_: the non-terminal lines' schedule.
+  std::chrono::steady_clock::time_point stage_start_;
+  std::chrono::steady_clock::time_point last_log_;
+  size_t next_log_step_ = 1;
 };
 
 }  // namespace skybake::cli

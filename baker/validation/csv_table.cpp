@@ -23,19 +23,74 @@ constexpr size_t kMaxLineBytes = 65536;
 // The byte-order mark some spreadsheets put before the header.
 constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
 
-std::vector<std::string> splitCells(const std::string& line) {
+constexpr std::string_view kBlank = " \t\r";
+
+std::string_view trimmed(std::string_view text) {
+  const size_t first = text.find_first_not_of(kBlank);
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(kBlank) - first + 1);
+}
+
+// Splits one line into cells (RFC 4180 on a single line): a cell may be
+// quoted, so that R's write.csv headers ("altitude_m") and quoted numbers
+// read as their text; inside quotes a doubled quote is one quote and commas
+// and spaces belong to the cell. Unquoted cells are trimmed of blanks (and
+// of the '\r' of a CRLF line end). A quoted cell that does not end on its
+// line, or has text after its closing quote, throws Error(BadInput) with its
+// line and column: a query file has no multi-line cells, so this is a broken
+// file, and guessing would misalign every later column.
+std::vector<std::string> splitCells(std::string_view line, const std::string& path, int line_number) {
   std::vector<std::string> cells;
-  size_t start = 0;
+  size_t pos = 0;
   while (true) {
-    const size_t comma = line.find(',', start);
-    std::string cell = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const size_t first = cell.find_first_not_of(" \t\r");
-    const size_t last = cell.find_last_not_of(" \t\r");
-    cells.push_back(first == std::string::npos ? "" : cell.substr(first, last - first + 1));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+    const size_t start = line.find_first_not_of(" \t", pos);
+    if (start != std::string_view::npos && line[start] == '"') {
+      std::string cell;
+      size_t i = start + 1;
+      while (true) {
+        const size_t quote = line.find('"', i);
+        if (quote == std::string_view::npos) {
+          throwBadInput(fmt::format("{}:{}:{}: quoted cell has no closing quote on its line", path, line_number,
+                                    cells.size() + 1));
+        }
+        cell.append(line.substr(i, quote - i));
+        if (quote + 1 < line.size() && line[quote + 1] == '"') {
+          cell += '"';
+          i = quote + 2;
+          continue;
+        }
+        i = quote + 1;
+        break;
+      }
+      const size_t after = line.find_first_not_of(kBlank, i);
+      if (after != std::string_view::npos && line[after] != ',') {
+        throwBadInput(fmt::format("{}:{}:{}: text after the closing quote of a quoted cell", path, line_number,
+                                  cells.size() + 1));
+      }
+      cells.push_back(std::move(cell));
+      if (after == std::string_view::npos) break;
+      pos = after + 1;
+      continue;
+    }
+    const size_t comma = line.find(',', pos);
+    cells.emplace_back(
+        trimmed(line.substr(pos, comma == std::string_view::npos ? std::string_view::npos : comma - pos)));
+    if (comma == std::string_view::npos) break;
+    pos = comma + 1;
   }
   return cells;
+}
+
+bool isBlankLine(const std::string& line) { return line.find_first_not_of(kBlank) == std::string::npos; }
+
+bool isCommentLine(const std::string& line) { return !line.empty() && line[0] == '#'; }
+
+// Whether `text` is a whole finite number (what a data cell must be).
+bool parseNumber(const std::string& text, double& value) {
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  return !text.empty() && ec == std::errc() && ptr == end && std::isfinite(value);
 }
 
 // Reads one line of at most kMaxLineBytes into `line`; false at the end of
@@ -62,24 +117,51 @@ CsvReader::CsvReader(const std::filesystem::path& path) : path_(path.string()) {
   }
   in_.open(path, std::ios::binary);
   if (!in_) throwBadInput(fmt::format("{}: cannot open query file: {}", path_, std::strerror(errno)));
+  // The last '#' line before the first other line: numpy.savetxt writes its
+  // header as "# name,name,...", so when no header follows it is the header.
+  std::string last_comment;
+  int last_comment_line = 0;
   while (readLine(in_, line_, path_, line_number_ + 1)) {
     ++line_number_;
     if (line_number_ == 1 && line_.starts_with(kUtf8ByteOrderMark)) line_.erase(0, kUtf8ByteOrderMark.size());
-    if (line_.find_first_not_of(" \t\r") == std::string::npos || line_[0] == '#') continue;
-    std::vector<std::string> names = splitCells(line_);
+    if (isBlankLine(line_)) continue;
+    if (isCommentLine(line_)) {
+      last_comment = line_.substr(1);
+      last_comment_line = line_number_;
+      continue;
+    }
+    std::vector<std::string> names = splitCells(line_, path_, line_number_);
+    header_line_ = line_number_;
+    if (last_comment_line != 0 && !isBlankLine(last_comment)) {
+      double unused = 0.0;
+      bool all_numbers = true;
+      for (const std::string& cell : names) all_numbers = all_numbers && parseNumber(cell, unused);
+      if (all_numbers) {
+        // This line is the first data row; read it again in next().
+        pending_row_ = true;
+        names = splitCells(last_comment, path_, last_comment_line);
+        header_line_ = last_comment_line;
+      }
+    }
+    // R's write.csv puts the row names first, under an empty name: that
+    // column is left out (it may hold any text, and is not a query's).
+    if (names.size() > 1 && names[0].empty()) {
+      skipped_columns_ = 1;
+      names.erase(names.begin());
+    }
     for (size_t c = 0; c < names.size(); ++c) {
       if (names[c].empty()) {
-        throwBadInput(fmt::format("{}:{}:{}: empty column name in the header", path_, line_number_, c + 1));
+        throwBadInput(
+            fmt::format("{}:{}:{}: empty column name in the header", path_, header_line_, c + 1 + skipped_columns_));
       }
       for (size_t earlier = 0; earlier < c; ++earlier) {
         if (names[earlier] == names[c]) {
-          throwBadInput(fmt::format("{}:{}:{}: column '{}' appears twice (also column {})", path_, line_number_, c + 1,
-                                    names[c], earlier + 1));
+          throwBadInput(fmt::format("{}:{}:{}: column '{}' appears twice (also column {})", path_, header_line_,
+                                    c + 1 + skipped_columns_, names[c], earlier + 1 + skipped_columns_));
         }
       }
     }
     columns_ = std::move(names);
-    header_line_ = line_number_;
     return;
   }
   if (in_.bad()) throwBadInput(fmt::format("{}:{}: read error", path_, line_number_ + 1));
@@ -97,26 +179,26 @@ bool CsvReader::next(CsvRow& row) {
 }
 
 bool CsvReader::readRow(CsvRow& row) {
-  while (readLine(in_, line_, path_, line_number_ + 1)) {
-    ++line_number_;
-    if (line_.find_first_not_of(" \t\r") == std::string::npos || line_[0] == '#') continue;
-    std::vector<std::string> cells = splitCells(line_);
-    if (cells.size() != columns_.size()) {
-      throwBadInput(fmt::format("{}:{}:{}: {} cells, the header (line {}) has {} columns", path_, line_number_,
-                                std::min(cells.size(), columns_.size()) + 1, cells.size(), header_line_,
-                                columns_.size()));
+  while (pending_row_ || readLine(in_, line_, path_, line_number_ + 1)) {
+    if (pending_row_) {
+      pending_row_ = false;
+    } else {
+      ++line_number_;
     }
+    if (isBlankLine(line_) || isCommentLine(line_)) continue;
+    std::vector<std::string> cells = splitCells(line_, path_, line_number_);
+    const size_t file_columns = columns_.size() + skipped_columns_;
+    if (cells.size() != file_columns) {
+      throwBadInput(fmt::format("{}:{}:{}: {} cells, the header (line {}) has {} columns", path_, line_number_,
+                                std::min(cells.size(), file_columns) + 1, cells.size(), header_line_, file_columns));
+    }
+    cells.erase(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(skipped_columns_));
     row.values.resize(cells.size());
     for (size_t c = 0; c < cells.size(); ++c) {
-      double v = 0.0;
-      const char* begin = cells[c].data();
-      const char* end = begin + cells[c].size();
-      const auto [ptr, ec] = std::from_chars(begin, end, v);
-      if (cells[c].empty() || ec != std::errc() || ptr != end || !std::isfinite(v)) {
-        throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", path_, line_number_, c + 1, columns_[c],
-                                  cells[c]));
+      if (!parseNumber(cells[c], row.values[c])) {
+        throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", path_, line_number_,
+                                  c + 1 + skipped_columns_, columns_[c], cells[c]));
       }
-      row.values[c] = v;
     }
     row.texts = std::move(cells);
     row.line_number = line_number_;
@@ -145,8 +227,8 @@ void CsvReader::requireRange(const CsvRow& row, size_t column, double lo, double
 }
 
 void CsvReader::failCell(const CsvRow& row, size_t column, const std::string& reason) const {
-  throwBadInput(fmt::format("{}:{}:{} ({}): {} {}", path_, row.line_number, column + 1, columns_[column],
-                            row.texts[column], reason));
+  throwBadInput(fmt::format("{}:{}:{} ({}): {} {}", path_, row.line_number, column + 1 + skipped_columns_,
+                            columns_[column], row.texts[column], reason));
 }
 
 void writeCsvOutput(const std::string& path,

@@ -1,6 +1,10 @@
 // Numeric CSV query files for `skybake lookup` and `--queries`: a header row
 // of column names, then rows of numbers, read one row at a time so that
 // memory does not grow with the file. Errors name the file, line and column.
+// What common tools write is read as is: cells may be quoted (RFC 4180 on
+// one line: "" is a quote, commas inside quotes belong to the cell), lines
+// may end in CRLF, a header may be numpy.savetxt's "# a,b,..." line, and R's
+// write.csv leading row-name column (empty name) is left out.
 #pragma once
 
 #include <filesystem>
@@ -24,7 +28,11 @@ struct CsvRow {
 class CsvReader {
  public:
   // Opens `path` and reads its header: distinct, non-empty names ('#' lines
-  // and blank lines are skipped throughout). Throws Error(BadInput)
+  // and blank lines are skipped throughout, except that when the first other
+  // line is all numbers the last '#' line before it, less its '#', is the
+  // header: numpy.savetxt's). A first column with an empty name, when there
+  // are others, is left out of columns() and rows; error columns still count
+  // it, as they are the file's. Throws Error(BadInput)
   // "<path>:<line>:<column>: <reason>" for a bad header, "<path>: <reason>"
   // for a missing file or one with no header.
   explicit CsvReader(const std::filesystem::path& path);
@@ -54,6 +62,12 @@ class CsvReader {
   std::string line_;
   int line_number_ = 0;
   int header_line_ = 0;
+  // Set when line_ holds the first data row, already read while looking for
+  // a numpy.savetxt header.
+  bool pending_row_ = false;
+  // Leading columns of the file left out of columns() and rows: 1 for the
+  // unnamed row-name column of R's write.csv, else 0.
+  size_t skipped_columns_ = 0;
   size_t rows_read_ = 0;
   std::vector<std::string> columns_;
 };

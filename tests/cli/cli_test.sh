@@ -80,6 +80,28 @@ expect_status 0 "" -- lookup irradiance "$work/good.exr" --queries "$work/e.csv"
 head -n1 "$work/e_out.csv" | grep -q 'sky_irradiance_440,sun_irradiance_680' || fail "lookup irradiance header: $(head -n1 "$work/e_out.csv")"
 awk -F, 'NR == 2 { if (!($3 > 0 && $6 > $3)) exit 1 }' "$work/e_out.csv" || fail "lookup irradiance: noon sun should outshine the sky: $(sed -n 2p "$work/e_out.csv")"
 
+# Query files as common tools write them read as the plain file does: R's
+# write.csv (quoted names, a leading unnamed row-name column, CRLF as on
+# Windows) and numpy.savetxt(delimiter=',', header=...) ("# " header).
+printf 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n0,30,60,0\n1500.5,85,90,180\n' >"$work/plain.csv"
+printf '"","altitude_m","sun_zenith_deg","view_zenith_deg","view_azimuth_deg"\r\n"1",0,30,60,0\r\n"2",1500.5,85,90,180\r\n' >"$work/r_write.csv"
+printf '%s\n' '# altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg' \
+  '0.000000000000000000e+00,3.000000000000000000e+01,6.000000000000000000e+01,0.000000000000000000e+00' \
+  '1.500500000000000000e+03,8.500000000000000000e+01,9.000000000000000000e+01,1.800000000000000000e+02' >"$work/numpy.csv"
+expect_status 0 "" -- lookup radiance "$work/good.exr" --queries "$work/plain.csv" -o "$work/plain_out.csv"
+for f in r_write numpy; do
+  expect_status 0 "" -- lookup radiance "$work/good.exr" --queries "$work/$f.csv" -o "$work/${f}_out.csv"
+  # Same header and the same looked-up values (columns 5 on; the query
+  # columns repeat each file's own spelling of the numbers).
+  cmp -s <(cut -d, -f5- "$work/plain_out.csv") <(cut -d, -f5- "$work/${f}_out.csv") \
+    || fail "lookup radiance of $f.csv differs from the plain file's: $(cat "$work/${f}_out.csv")"
+done
+printf '"","altitude_m","sun_zenith_deg","view_zenith_deg","view_azimuth_deg"\r\n"1",0,"thirty",60,0\r\n' >"$work/r_bad.csv"
+expect_status 2 "r_bad.csv:2:3 (sun_zenith_deg): 'thirty' is not a finite number" -- lookup radiance "$work/good.exr" --queries "$work/r_bad.csv" -o "$work/bad.csv"
+printf 'altitude_m,sun_zenith_deg\n"0,30\n' >"$work/unclosed.csv"
+expect_status 2 "unclosed.csv:2:1: quoted cell has no closing quote" -- lookup irradiance "$work/good.exr" --queries "$work/unclosed.csv" -o "$work/bad.csv"
+[ -e "$work/bad.csv" ] && fail "a failed lookup left an output file"
+
 # render: PNG and EXR; a bad extension or size is refused.
 expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection fisheye --size 32x32 -o "$work/sky.png"
 [ -s "$work/sky.png" ] || fail "render wrote no PNG"
@@ -95,6 +117,14 @@ expect_status 0 "sky_radiance" -- validate "$work/good.exr" --queries quick --re
 grep -q '"errors"' "$work/v.json" || fail "validate --json wrote no errors"
 grep -q '"validation"' "$work/good.report.json" || fail "validate did not add to the report sidecar"
 expect_status 2 "missing column" -- validate "$work/good.exr" --queries "$work/missing.csv" --no-cache
+# Off a terminal (stderr to a file, as in a log), a reference run of a few
+# seconds shows it is alive: lines with its percentage and time while it
+# runs, not only the final one.
+expect_status 0 "reference" -- validate "$work/good.exr" --queries quick --reference-samples 6144 --no-cache --threads 2
+progress_lines=$(grep -cE '^reference +[0-9]+% \([0-9]+/[0-9]+\) after +[0-9.]+ s' "$work/stderr")
+[ "$progress_lines" -ge 2 ] || fail "validate logged $progress_lines progress lines before its last: $(cat "$work/stderr")"
+grep -q $'\r' "$work/stderr" && fail "validate drew a terminal bar into a file"
+
 expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples 0
 
 # compare: every method on a quick query set (CI's reduced run).
