@@ -20,6 +20,7 @@ packages=(
   python3 python3-numpy python3-matplotlib snakemake
   # The Python module (baker/python) and its tests.
   pybind11-dev python3-dev python3-pytest
+  python3-tomli-w python3-pytest  # scripts/sweep/make_config.py writes TOML; its test runs under pytest
   # The GL backend (runtime/gl, skybake render --backend gl): libepoxy loads
   # the GL functions, libegl-dev and libgl-dev give EGL and desktop GL to
   # link, libgles-dev the ES headers, libegl-mesa0 Mesa's EGL (its

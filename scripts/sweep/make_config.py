@@ -3,41 +3,59 @@
 
 Usage: make_config.py BASE.toml FACTOR OUT.toml
 Every size is multiplied by FACTOR and rounded (scattering mu kept even, every
-size at least 2, mu at least 4); the rest of the config is copied unchanged.
+size at least 2, mu at least 4) and the name gets the suffix _x<FACTOR>. Sizes
+the base leaves out get data_formats/CONFIG.md's defaults first, so they are
+scaled too. The config is read and written as TOML (tomllib, tomli_w), so any
+valid spelling works (`{r=8, mu=32}` as well as `{ r = 8, mu = 32 }`); the
+values of the rest of the config are copied unchanged, its comments are not.
 """
-import re
 import sys
+import tomllib
+
+import tomli_w
+
+# The defaults of data_formats/CONFIG.md, used for sizes the base leaves out.
+DEFAULT_RESOLUTION = {
+    "transmittance": [256, 64],
+    "irradiance": [64, 16],
+    "scattering": {"r": 32, "mu": 128, "mu_s": 32, "nu": 8},
+}
+# The smallest sizes the baker accepts: every axis needs two samples to
+# interpolate, and the view zenith (mu) two per half (above and below the
+# horizon), kept even so that the horizon falls between samples.
+MIN_SIZE = 2
+MIN_MU = 4
 
 
-def scaled(value, factor, minimum=2, even=False):
+def scaled(value, factor, minimum=MIN_SIZE, even=False):
     s = max(minimum, round(value * factor))
     if even and s % 2:
         s += 1
     return s
 
 
+def scale_config(config, factor):
+    """The config (a dict as tomllib reads it) with its sizes and name scaled."""
+    resolution = config.setdefault("resolution", {})
+    for key in ("transmittance", "irradiance"):
+        pair = resolution.get(key, DEFAULT_RESOLUTION[key])
+        resolution[key] = [scaled(int(v), factor) for v in pair]
+    scattering = {**DEFAULT_RESOLUTION["scattering"], **resolution.get("scattering", {})}
+    resolution["scattering"] = {
+        axis: scaled(int(v), factor, MIN_MU if axis == "mu" else MIN_SIZE, even=axis == "mu")
+        for axis, v in scattering.items()
+    }
+    if "name" in config:
+        config["name"] = f"{config['name']}_x{factor:g}"
+    return config
+
+
 def main():
     base, factor, out = sys.argv[1], float(sys.argv[2]), sys.argv[3]
-    text = open(base).read()
-    if not re.search(r"^\[resolution\]", text, flags=re.M):
-        # The defaults of data_formats/CONFIG.md, written out so they can be scaled.
-        defaults = ("\n[resolution]\ntransmittance = [256, 64]\nirradiance = [64, 16]\n"
-                    "scattering = { r = 32, mu = 128, mu_s = 32, nu = 8 }\n")
-        text = text.replace("\n[bake]", defaults + "\n[bake]", 1) if "\n[bake]" in text else text + defaults
-    pair = r"(\s*=\s*\[)\s*(\d+)\s*,\s*(\d+)\s*\]"
-
-    def scale_pair(m):
-        return f"{m.group(1)}{m.group(2)}{scaled(int(m.group(3)), factor)}, {scaled(int(m.group(4)), factor)}]"
-
-    text = re.sub(r"^(transmittance|irradiance)" + pair, scale_pair, text, flags=re.M)
-
-    def scale_axis(m):
-        minimum = 4 if m.group(1) == "mu" else 2
-        return f"{m.group(1)} = {scaled(int(m.group(2)), factor, minimum, even=m.group(1) == 'mu')}"
-
-    text = re.sub(r"\b(r|mu|mu_s|nu) = (\d+)", scale_axis, text)
-    text = re.sub(r'^name = "(.*)"', lambda m: f'name = "{m.group(1)}_x{factor:g}"', text, flags=re.M)
-    open(out, "w").write(text)
+    with open(base, "rb") as f:
+        config = tomllib.load(f)
+    with open(out, "wb") as f:
+        tomli_w.dump(scale_config(config, factor), f)
 
 
 if __name__ == "__main__":
