@@ -62,6 +62,19 @@ if [ -e "$prefix/lib/libskybake_gl.so" ]; then
   fi
 fi
 
+# The Python module, where the build has it, imported from the prefix.
+python_dir="$prefix/lib/python3/dist-packages"
+if [ -d "$python_dir/skybake" ]; then
+  got=$(PYTHONPATH="$python_dir" /usr/bin/python3 -c "
+import sys, numpy as np, skybake
+sky = skybake.Sky(sys.argv[1])
+z = np.radians(float(sys.argv[3]))
+r, _ = sky.sky_radiance([0, 0, sky.atmosphere['bottom_radius_m'] + float(sys.argv[2])], [0, 0, 1], [np.sin(z), 0, np.cos(z)])
+print(','.join('%.9g' % v for v in r))" "$bake" "$altitude_m" "$sun_zenith_deg" 2>&1)
+  echo "installed Python module:   $got"
+  [ "$got" = "$expected" ] || fail "the installed Python module printed $got, skybake lookup $expected"
+fi
+
 # pkg-config, with nothing but the compiler and what the .pc file gives.
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
 flags=$(pkg-config --cflags --libs skybake)
