@@ -10,5 +10,7 @@ namespace skybake::python {
 void registerLookups(pybind11::module_& m);
 // skybake._skybake.bake: a config (TOML path or dict) into a bake file.
 void registerBake(pybind11::module_& m);
+// skybake._skybake.validate: a bake against the reference, as a dict.
+void registerValidate(pybind11::module_& m);
 
 }  // namespace skybake::python

@@ -24,4 +24,5 @@ PYBIND11_MODULE(_skybake, m) {
   });
   skybake::python::registerLookups(m);
   skybake::python::registerBake(m);
+  skybake::python::registerValidate(m);
 }

@@ -6,6 +6,7 @@ checkout; PYTHONPATH holds the build's python/ folder.
 """
 import concurrent.futures
 import csv
+import json
 import io
 import os
 import subprocess
@@ -145,3 +146,20 @@ def test_bake_from_a_dict_gives_the_same_file_as_the_command_line(tmp_path):
     views = direction(np.linspace(0, 170, 18), 20.0)
     np.testing.assert_array_equal(a.sky_radiance([0, 0, bottom + 10], views, direction(50, 0))[0],
                                   b.sky_radiance([0, 0, bottom + 10], views, direction(50, 0))[0])
+
+
+def test_validate_gives_the_command_lines_figures(tmp_path):
+    bake = tmp_path / "earth.exr"
+    bake.write_bytes(open(BAKE, "rb").read())  # the command line writes a sidecar beside it
+    settings = dict(queries="quick", reference_samples=256, no_cache=True)
+    report = skybake.validate(bake, **settings)
+    json_path = tmp_path / "validate.json"
+    subprocess.run([BINARY, "validate", str(bake), "--queries", "quick", "--reference-samples", "256", "--no-cache",
+                    "--json", str(json_path)], check=True, capture_output=True)
+    expected = json.loads(json_path.read_text())
+    # The reference's paths are seeded per query: the same settings give the
+    # same reference and so the same error figures, to the last digit.
+    assert report["errors"] == expected["errors"]
+    assert report["reference_paths"] == 256 and report["wavelengths_nm"] == [680.0, 550.0, 440.0]
+    with pytest.raises(skybake.BadInput):
+        skybake.validate(tmp_path / "missing.exr", **settings)

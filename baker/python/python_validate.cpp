@@ -1,0 +1,53 @@
+// skybake._skybake.validate: a bake's error against the independent
+// reference, as `skybake validate` measures it, returned as the report's
+// JSON object (the same keys as `validate --json`). The reference cache is
+// shared with the command line; unlike it, this writes no report sidecar.
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+#include "baker/cli/terminal_progress.h"
+#include "baker/python/python_bindings.h"
+#include "baker/stages/openmp_threads.h"
+#include "baker/validation/validation.h"
+#include "baker/validation/validation_queries.h"
+#include "runtime/sky.h"
+
+namespace py = pybind11;
+
+namespace skybake::python {
+namespace {
+
+py::object validate(const std::string& bake_path, const std::string& queries_name, int reference_samples,
+                    const std::string& cache_dir, bool no_cache, int threads) {
+  std::string report_json;
+  {
+    py::gil_scoped_release release;
+    const ScopedOpenMpThreads thread_count(threads);
+    const Sky sky = Sky::load(bake_path);
+    const AtmosphereParameters& a = sky.atmosphere();
+    std::string left_out;
+    const QuerySet queries =
+        queriesAnsweredBy(sky, querySetNamed(queries_name, a.top_radius_m - a.bottom_radius_m), left_out);
+    const ReferenceSettings settings = referenceSettings(reference_samples, cache_dir, no_cache);
+    cli::TerminalProgress progress;
+    const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
+    const MethodValues bake = evaluateBake(sky, queries);
+    nlohmann::ordered_json j = compareWithReference(a, queries, reference, bake, settings.paths).toJson();
+    j["bake_file"] = bake_path;
+    j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
+    if (!left_out.empty()) j["left_out"] = left_out;
+    report_json = j.dump();
+  }
+  return py::module_::import("json").attr("loads")(report_json);
+}
+
+}  // namespace
+
+void registerValidate(py::module_& m) {
+  m.def("validate", &validate, py::arg("bake"), py::arg("queries") = "standard",
+        py::arg("reference_samples") = ReferenceSettings{}.paths, py::arg("cache_dir") = "",
+        py::arg("no_cache") = false, py::arg("threads") = 0);
+}
+
+}  // namespace skybake::python
