@@ -130,16 +130,7 @@ void runBake(const BakeOptions& o) {
   const std::filesystem::path output(o.output_path);
   requireWritableOutput(output, {o.config_path});
   requireWritableOutput(reportSidecarPath(output), {o.config_path});
-  const BakeMemoryEstimate memory = estimateBakeMemory(config);
-  const TextureSizes& s = config.sizes;
-  const std::string kernel = memory.density_kernel_bytes > 0 ? fmt::format(" and the scattering density's {} kernel",
-                                                                           formatBytes(memory.density_kernel_bytes))
-                                                             : "";
-  requireMemoryAvailable(fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {} "
-                                     "alive at once{})",
-                                     source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
-                                     memory.tables_4d_at_peak, formatBytes(memory.table_4d_bytes), kernel),
-                         memory.peak_bytes);
+  requireMemoryForBake(config, source);
 
   if (size_choice) {
     const TextureSizes& c = size_choice->sizes;

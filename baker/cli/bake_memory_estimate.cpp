@@ -5,6 +5,9 @@
 #include <initializer_list>
 #include <limits>
 
+#include <fmt/format.h>
+
+#include "baker/cli/available_memory.h"
 #include "baker/stages/scattering_density_kernel.h"
 #include "data_formats/spectrum.h"
 #include "data_formats/texture_mapping.h"
@@ -81,6 +84,19 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   // multiple-scattering density, transmittance and irradiance.
   e.kept_bytes = sum({product({4, stored_bytes}), transmittance, irradiance});
   return e;
+}
+
+void requireMemoryForBake(const BakeConfig& config, const std::string& source) {
+  const BakeMemoryEstimate memory = estimateBakeMemory(config);
+  const TextureSizes& s = config.sizes;
+  const std::string kernel = memory.density_kernel_bytes > 0 ? fmt::format(" and the scattering density's {} kernel",
+                                                                           formatBytes(memory.density_kernel_bytes))
+                                                             : "";
+  requireMemoryAvailable(fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {} "
+                                     "alive at once{})",
+                                     source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
+                                     memory.tables_4d_at_peak, formatBytes(memory.table_4d_bytes), kernel),
+                         memory.peak_bytes);
 }
 
 }  // namespace skybake

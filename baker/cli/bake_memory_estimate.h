@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "data_formats/atmosphere_parameters.h"
 
@@ -22,5 +23,10 @@ struct BakeMemoryEstimate {
 // would overflow 64 bits saturate at UINT64_MAX instead of wrapping round to
 // a small number. The process's own code and libraries are not included.
 BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config);
+
+// Throws Error(BadInput), naming `source` (the config's file or origin), its
+// scattering sizes and the estimate, when the bake of `config` needs more
+// memory than this process may allocate (available_memory.h).
+void requireMemoryForBake(const BakeConfig& config, const std::string& source);
 
 }  // namespace skybake

@@ -17,6 +17,7 @@
 
 #include "baker/bake/bake.h"
 #include "baker/bake/bake_policy.h"
+#include "baker/cli/bake_memory_estimate.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/python/python_bindings.h"
 #include "data_formats/config.h"
@@ -157,6 +158,7 @@ py::object bake(const py::object& config_source, const std::string& output, int 
   }
   if (threads < 0) throw Error(ErrorKind::BadInput, "threads = " + std::to_string(threads) + ": must be >= 0");
   config = settledBakeConfig(config);
+  requireMemoryForBake(config, source);
   std::optional<PythonProgress> python_progress;
   std::optional<cli::TerminalProgress> terminal_progress;
   std::optional<SilentProgress> silent;

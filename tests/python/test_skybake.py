@@ -163,3 +163,22 @@ def test_validate_gives_the_command_lines_figures(tmp_path):
     assert report["reference_paths"] == 256 and report["wavelengths_nm"] == [680.0, 550.0, 440.0]
     with pytest.raises(skybake.BadInput):
         skybake.validate(tmp_path / "missing.exr", **settings)
+
+
+def test_a_bake_beyond_the_memory_it_may_allocate_is_refused_before_allocating(tmp_path):
+    # As the command line does (docs/STABILITY.md): under a 4 GB address-space
+    # limit, tables of 34 GB are refused with the estimate, not attempted.
+    script = f"""
+import skybake, tomllib
+config = tomllib.load(open({SMALL_EARTH!r}, "rb"))
+config["resolution"]["scattering"] = {{"r": 512, "mu": 1024, "mu_s": 256, "nu": 2}}
+try:
+    skybake.bake(config, {str(tmp_path / 'huge.exr')!r})
+except skybake.BadInput as e:
+    print("refused:", e)
+"""
+    out = subprocess.run(["bash", "-c", 'ulimit -v 4000000 && exec /usr/bin/python3 -c "$0"', script],
+                         capture_output=True, text=True, timeout=60)
+    assert "refused: config dict: resolution.scattering = 512 x 1024 x 256 x 2" in out.stdout, out.stdout + out.stderr
+    assert "needs about" in out.stdout
+    assert not (tmp_path / "huge.exr").exists()
