@@ -38,13 +38,16 @@ SkybakeAxisLerp skybakeAxisLerpNu(float u_nu, int size) {
   return SkybakeAxisLerp(i0, i0 + 1, x - float(i0));
 }
 
+// One row of a 2D table, interpolated along x.
+vec4 skybakeSampleRow(sampler2D table, SkybakeAxisLerp x, int row) {
+  vec4 a = texelFetch(table, ivec2(x.i0, row), 0);
+  vec4 b = texelFetch(table, ivec2(x.i1, row), 0);
+  return a + (b - a) * x.w1;
+}
+
 vec4 skybakeSampleBilinear(sampler2D table, SkybakeAxisLerp x, SkybakeAxisLerp y) {
-  vec4 a0 = texelFetch(table, ivec2(x.i0, y.i0), 0);
-  vec4 a1 = texelFetch(table, ivec2(x.i1, y.i0), 0);
-  vec4 b0 = texelFetch(table, ivec2(x.i0, y.i1), 0);
-  vec4 b1 = texelFetch(table, ivec2(x.i1, y.i1), 0);
-  vec4 a = a0 + (a1 - a0) * x.w1;
-  vec4 b = b0 + (b1 - b0) * x.w1;
+  vec4 a = skybakeSampleRow(table, x, y.i0);
+  vec4 b = skybakeSampleRow(table, x, y.i1);
   return a + (b - a) * y.w1;
 }
 
@@ -221,12 +224,8 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
   float v = skybakeTextureCoordFromUnitRange((r - bottom) / (skybake_radii_m.y - bottom), size_r);
   SkybakeAxisLerp x = skybakeAxisLerp(u, size_mu_s);
   SkybakeAxisLerp y = skybakeAxisLerp(v, size_r);
-  vec4 low0 = texelFetch(skybake_irradiance, ivec2(x.i0, y.i0), 0);
-  vec4 low1 = texelFetch(skybake_irradiance, ivec2(x.i1, y.i0), 0);
-  vec4 high0 = texelFetch(skybake_irradiance, ivec2(x.i0, y.i1), 0);
-  vec4 high1 = texelFetch(skybake_irradiance, ivec2(x.i1, y.i1), 0);
-  vec4 low = low0 + (low1 - low0) * x.w1;
-  vec4 high = high0 + (high1 - high0) * x.w1;
+  vec4 low = skybakeSampleRow(skybake_irradiance, x, y.i0);
+  vec4 high = skybakeSampleRow(skybake_irradiance, x, y.i1);
   bvec4 positive = bvec4(vec4(greaterThan(low, vec4(0.0))) * vec4(greaterThan(high, vec4(0.0))));
   vec4 safe_low = mix(vec4(1.0), low, positive);
   vec4 safe_high = mix(vec4(1.0), high, positive);
