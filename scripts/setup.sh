@@ -21,6 +21,9 @@ packages=(
   # The Python module (baker/python) and its tests.
   pybind11-dev python3-dev python3-pytest
   python3-tomli-w python3-pytest  # scripts/sweep/make_config.py writes TOML; its test runs under pytest
+  # tests/slurm: the sweep through a one-node Slurm cluster the test starts
+  # (and stops) itself; sbatch, scontrol and sinfo are in slurm-client.
+  slurmctld slurmd slurm-client munge
   # The GL backend (runtime/gl, skybake render --backend gl): libepoxy loads
   # the GL functions, libegl-dev and libgl-dev give EGL and desktop GL to
   # link, libgles-dev the ES headers, libegl-mesa0 Mesa's EGL (its

@@ -45,7 +45,24 @@ struct BakeOptions {
   bool reproducible = false;
   bool combined_single_mie = false;  // false: from the config
   bool sky_views_only = false;       // false: from the config
+  bool estimate = false;             // print the resources the bake needs, bake nothing
 };
+
+// What a bake of `config` needs, as JSON for job schedulers (a cluster
+// profile's memory and time requests): peak table memory and the
+// core-seconds estimate (bake_memory_estimate.h).
+void printBakeEstimate(const BakeConfig& config, const std::string& source) {
+  const BakeMemoryEstimate memory = estimateBakeMemory(config);
+  const TextureSizes& s = config.sizes;
+  const nlohmann::ordered_json j{
+      {"source", source},
+      {"scattering_size", {s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu}},
+      {"orders_at_most", config.bake.auto_orders ? config.bake.max_orders : config.bake.orders},
+      {"peak_table_bytes", memory.peak_bytes},
+      {"file_table_bytes", memory.kept_bytes},
+      {"estimated_core_seconds", estimateBakeCoreSeconds(config)}};
+  fmt::print("{}\n", j.dump(2));
+}
 
 std::string stageSummary(const BakeReport& report) {
   std::string text;
@@ -126,6 +143,11 @@ void runBake(const BakeOptions& o) {
                range[0], range[1], config.atmosphere.sun_max_zenith_deg);
   }
   config = settled;
+  if (o.estimate) {
+    printBakeEstimate(config, source);
+    return;
+  }
+  if (o.output_path.empty()) throwBadInput("bake: -o,--output is required (unless --estimate)");
 
   const std::filesystem::path output(o.output_path);
   requireWritableOutput(output, {o.config_path});
@@ -186,7 +208,7 @@ Command addBakeCommand(CLI::App& app) {
   cmd->add_option("config", options->config_path,
                   "Atmosphere config (TOML, see data_formats/CONFIG.md). Without it, the built-in "
                   "Earth (data_formats/presets/earth.toml).");
-  cmd->add_option("-o,--output", options->output_path, "Output bake file (.exr).")->required();
+  cmd->add_option("-o,--output", options->output_path, "Output bake file (.exr); required unless --estimate.");
   cmd->add_option("--orders", options->orders,
                   "Scattering orders to compute, or 'auto' to iterate until the last order adds less than "
                   "bake.order_tolerance of the total (overrides bake.orders).")
@@ -233,6 +255,9 @@ Command addBakeCommand(CLI::App& app) {
                 "Store single Mie scattering as one channel beside single Rayleigh scattering and rebuild the "
                 "others from the Rayleigh channels (sets bake.combined_single_mie): a smaller file, less "
                 "accurate near the sun (docs/LEAVE_OUT.md).");
+  cmd->add_flag("--estimate", options->estimate,
+                "Print (JSON) the peak table memory and the estimated core-seconds of this bake, with every other "
+                "option applied, and bake nothing.");
   cmd->add_flag("--reproducible", options->reproducible,
                 "Leave times, thread count and memory out of the file header, so the same config "
                 "always gives a byte-identical file.");

@@ -2,6 +2,7 @@
 #include "baker/bake/bake_policy.h"
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <limits>
 
@@ -84,6 +85,25 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   // multiple-scattering density, transmittance and irradiance.
   e.kept_bytes = sum({product({4, stored_bytes}), transmittance, irradiance});
   return e;
+}
+
+namespace {
+
+// Core-seconds per 4D texel and scattering order of the default Earth bake
+// (single scattering, then per order the density and multiple-scattering
+// stages, all proportional to the texels): measured on a 2-core AMD EPYC
+// (docs/MEASUREMENTS.md, "Job resources").
+constexpr double kBakeCoreSecondsPerTexelOrder = 1.2e-6;
+
+}  // namespace
+
+double estimateBakeCoreSeconds(const BakeConfig& config) {
+  const TextureSizes iteration = iterationTextureSizes(config);
+  const double texels = double(std::max(iteration.scattering_r, 0)) * std::max(iteration.scattering_mu, 0) *
+                        std::max(iteration.scattering_mu_s, 0) * std::max(iteration.scattering_nu, 0);
+  const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
+  // Rounded up to a tenth of a second: a time limit, not a measurement.
+  return std::ceil(texels * std::max(orders, 1) * kBakeCoreSecondsPerTexelOrder * 10.0) / 10.0;
 }
 
 void requireMemoryForBake(const BakeConfig& config, const std::string& source) {

@@ -24,6 +24,12 @@ struct BakeMemoryEstimate {
 // a small number. The process's own code and libraries are not included.
 BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config);
 
+// Core-seconds a bake of `config` takes, estimated from its 4D table's texels
+// and its orders (automatic: up to bake.max_orders), the stages' cost per
+// texel and order as measured (kBakeCoreSecondsPerTexelOrder). An estimate
+// for job time limits, not a promise: other machines and loads differ.
+double estimateBakeCoreSeconds(const BakeConfig& config);
+
 // Throws Error(BadInput), naming `source` (the config's file or origin), its
 // scattering sizes and the estimate, when the bake of `config` needs more
 // memory than this process may allocate (available_memory.h).

@@ -19,6 +19,7 @@ Command addInfoCommand(CLI::App& app);
 Command addLookupCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 Command addValidateCommand(CLI::App& app);
+Command addReferenceCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addStressCommand(CLI::App& app);
 

@@ -52,9 +52,9 @@ int main(int argc, char** argv) {
                                                 SKYBAKE_VERSION, skybake::kBakeFormatVersion,
                                                 skybake::kOldestReadBakeFormatVersion, skybake::kBakeFormatVersion));
   const std::vector<skybake::cli::Command> commands = {
-      skybake::cli::addBakeCommand(app),   skybake::cli::addInfoCommand(app),     skybake::cli::addLookupCommand(app),
-      skybake::cli::addRenderCommand(app), skybake::cli::addValidateCommand(app), skybake::cli::addCompareCommand(app),
-      skybake::cli::addStressCommand(app),
+      skybake::cli::addBakeCommand(app),   skybake::cli::addInfoCommand(app),      skybake::cli::addLookupCommand(app),
+      skybake::cli::addRenderCommand(app), skybake::cli::addValidateCommand(app),  skybake::cli::addCompareCommand(app),
+      skybake::cli::addStressCommand(app), skybake::cli::addReferenceCommand(app),
   };
 
   try {

@@ -1,5 +1,9 @@
 #include "baker/validation/reference_cache.h"
 
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
@@ -19,6 +23,36 @@ constexpr int kReferenceSolverVersion = 4;  // 4: the sun disk counted as the ba
 
 nlohmann::json toJson(const SpectrumD& s) { return {s.x, s.y, s.z, s.w}; }
 SpectrumD spectrumFromJson(const nlohmann::json& j) { return {j.at(0), j.at(1), j.at(2), j.at(3)}; }
+
+// Adds the entries of one chunk file to `entries`; false if the file is gone
+// or unreadable (then it is left alone: its queries are recomputed).
+bool readChunkFile(const std::filesystem::path& file, std::map<std::string, CachedReference>& entries) {
+  std::ifstream in(file);
+  if (!in) return false;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object() || !j.contains("entries") || !j["entries"].is_object()) return false;
+  std::map<std::string, CachedReference> read;
+  try {
+    for (const auto& [query, e] : j["entries"].items()) {
+      read[query] = {spectrumFromJson(e.at("value")), spectrumFromJson(e.at("standard_error")),
+                     spectrumFromJson(e.at("transmittance"))};
+    }
+  } catch (const std::exception&) {
+    return false;
+  }
+  entries.merge(read);
+  return true;
+}
+
+// A chunk name no other writer uses: this host (nodes of a cluster share the
+// cache), this process, the time it started writing and a counter.
+std::string uniqueChunkName(int counter) {
+  char host[256] = {};
+  if (::gethostname(host, sizeof(host) - 1) != 0 || host[0] == '\0') std::snprintf(host, sizeof(host), "host");
+  const auto now_ns =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  return fmt::format("{}-{}-{}-{}.json", host, ::getpid(), now_ns, counter);
+}
 
 }  // namespace
 
@@ -53,19 +87,31 @@ ReferenceCache::ReferenceCache(const std::filesystem::path& directory, const Atm
   physics_only.atmosphere.sun_max_zenith_deg = AtmosphereParameters{}.sun_max_zenith_deg;
   const uint64_t key =
       stableHash(fmt::format("solver {}\npaths {}\n{}", kReferenceSolverVersion, paths, configToToml(physics_only)));
-  file_ = directory / fmt::format("reference-{:016x}.json", key);
-  std::ifstream in(file_);
-  if (!in) return;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (!j.is_object() || !j.contains("entries")) return;  // unreadable: recompute, overwrite later
-  try {
-    for (const auto& [query, e] : j["entries"].items()) {
-      entries_[query] = {spectrumFromJson(e.at("value")), spectrumFromJson(e.at("standard_error")),
-                         spectrumFromJson(e.at("transmittance"))};
-    }
-  } catch (const std::exception&) {
-    entries_.clear();
+  directory_ = directory / fmt::format("reference-{:016x}", key);
+  // A cache written as one file (before caches were directories) is read as
+  // one more chunk, never removed.
+  readChunkFile(std::filesystem::path(directory_.string() + ".json"), entries_);
+  readChunks();
+}
+
+void ReferenceCache::readChunks() {
+  std::error_code error;
+  std::vector<std::filesystem::path> read;
+  for (const auto& entry : std::filesystem::directory_iterator(directory_, error)) {
+    const std::string name = entry.path().filename().string();
+    // Temporary files of writes in progress start with a dot.
+    if (name.empty() || name[0] == '.' || entry.path().extension() != ".json") continue;
+    if (readChunkFile(entry.path(), entries_)) read.push_back(entry.path());
   }
+  if (read.size() <= kReferenceChunksBeforeMerge) return;
+  for (const auto& [query, e] : entries_) unsaved_.push_back(query);
+  try {
+    saveChunk();
+  } catch (const Error&) {
+    unsaved_.clear();  // a cache this process may only read: merging is left to one that may write
+    return;
+  }
+  for (const std::filesystem::path& chunk : read) std::filesystem::remove(chunk, error);
 }
 
 std::optional<CachedReference> ReferenceCache::find(const std::string& query_key) const {
@@ -75,26 +121,28 @@ std::optional<CachedReference> ReferenceCache::find(const std::string& query_key
 }
 
 void ReferenceCache::store(const std::string& query_key, const CachedReference& result) {
-  if (file_.empty()) return;
-  entries_[query_key] = result;
-  dirty_ = true;
+  if (directory_.empty()) return;
+  if (entries_.insert_or_assign(query_key, result).second) unsaved_.push_back(query_key);
 }
 
-void ReferenceCache::save() const {
-  if (file_.empty() || !dirty_) return;
+void ReferenceCache::saveChunk() {
+  if (directory_.empty() || unsaved_.empty()) return;
   nlohmann::json entries = nlohmann::json::object();
-  for (const auto& [query, e] : entries_) {
+  for (const std::string& query : unsaved_) {
+    const CachedReference& e = entries_.at(query);
     entries[query] = {{"value", toJson(e.value)},
                       {"standard_error", toJson(e.standard_error)},
                       {"transmittance", toJson(e.transmittance)}};
   }
   std::error_code error;
-  std::filesystem::create_directories(file_.parent_path(), error);
+  std::filesystem::create_directories(directory_, error);
   if (error) {
-    throwBadInput(fmt::format("{}: cannot create the reference cache directory: {}", file_.parent_path().string(),
-                              error.message()));
+    throwBadInput(
+        fmt::format("{}: cannot create the reference cache directory: {}", directory_.string(), error.message()));
   }
-  writeFileContentsAtomically(file_, nlohmann::json{{"entries", entries}}.dump());
+  writeFileContentsAtomically(directory_ / uniqueChunkName(chunks_written_++),
+                              nlohmann::json{{"entries", entries}}.dump());
+  unsaved_.clear();
 }
 
 }  // namespace skybake

@@ -1,13 +1,22 @@
 // Reference results kept on disk, so validation is cheap after the first run.
-// One JSON file per atmosphere and sample count, keyed by a hash of the
+// One directory per atmosphere and sample count, named by a hash of the
 // atmosphere's parameters (not the table sizes: every bake of one atmosphere
 // shares it), the reference solver's version and the sample count.
+//
+// The directory holds chunk files, each written once, atomically, under a
+// name no other process uses. Readers merge every chunk. So any number of
+// processes, on one machine or on the nodes of a cluster sharing the file
+// system, can fill one cache at the same time without locks, and a process
+// killed part way (a cluster job at its time limit) keeps every chunk it
+// saved: computeReferenceValues saves one at least every
+// kReferenceCheckpointSeconds.
 #pragma once
 
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "data_formats/atmosphere_parameters.h"
 
@@ -25,21 +34,35 @@ uint64_t stableHash(const std::string& text);
 // $SKYBAKE_CACHE_DIR, else $XDG_CACHE_HOME/skybake, else ~/.cache/skybake.
 std::filesystem::path defaultReferenceCacheDirectory();
 
+// Once a cache holds more chunk files than this, the next reader merges them
+// into one: thousands of small files (a long history of checkpoints) would
+// make every later start slow. Merging writes the merged chunk before it
+// removes the chunks it read, so no entry is ever lost; a reader that misses
+// a removed chunk only recomputes its queries, to the same values.
+inline constexpr size_t kReferenceChunksBeforeMerge = 32;
+
 class ReferenceCache {
  public:
   // An empty directory disables the cache.
   ReferenceCache(const std::filesystem::path& directory, const AtmosphereParameters& atmosphere, int paths);
 
   std::optional<CachedReference> find(const std::string& query_key) const;
+  // Kept in memory until the next saveChunk().
   void store(const std::string& query_key, const CachedReference& result);
-  // Writes the file (atomically) if anything was stored.
-  void save() const;
-  const std::filesystem::path& file() const { return file_; }
+  // Writes what was stored since the last call as a new chunk file (nothing
+  // if nothing was). Throws Error(BadInput) if the directory cannot be made.
+  void saveChunk();
+  // This atmosphere's directory (empty if the cache is disabled).
+  const std::filesystem::path& directory() const { return directory_; }
+  size_t size() const { return entries_.size(); }
 
  private:
-  std::filesystem::path file_;
+  void readChunks();
+
+  std::filesystem::path directory_;
   std::map<std::string, CachedReference> entries_;
-  bool dirty_ = false;
+  std::vector<std::string> unsaved_;
+  int chunks_written_ = 0;
 };
 
 }  // namespace skybake

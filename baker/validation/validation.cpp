@@ -18,12 +18,6 @@
 namespace skybake {
 namespace {
 
-std::string radianceKey(const RadianceQuery& q) {
-  return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
-                     q.distance_m);
-}
-std::string irradianceKey(const IrradianceQuery& q) { return fmt::format("e {} {}", q.altitude_m, q.sun_zenith_deg); }
-
 enum class RayKind { Sky, Ground, ToPoint, Misses };
 
 RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
@@ -35,6 +29,12 @@ RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
 }
 
 }  // namespace
+
+std::string radianceKey(const RadianceQuery& q) {
+  return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
+                     q.distance_m);
+}
+std::string irradianceKey(const IrradianceQuery& q) { return fmt::format("e {} {}", q.altitude_m, q.sun_zenith_deg); }
 
 QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
   return {cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
@@ -64,51 +64,86 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
   ReferenceValues out;
   out.radiance.resize(queries.radiance.size());
   out.irradiance.resize(queries.irradiance.size());
-  // Fills the cached values of one kind of query; returns the indices of the others.
-  auto fromCache = [&](const auto& kind_queries, auto& values, auto keyOf) {
-    std::vector<size_t> missing;
-    for (size_t i = 0; i < kind_queries.size(); ++i) {
-      if (auto hit = cache.find(keyOf(kind_queries[i]))) {
-        values[i] = *hit;
-        ++out.cached;
-      } else {
-        missing.push_back(i);
-      }
+  // The queries the cache does not hold: radiance queries by index, then
+  // irradiance queries by index + radiance count.
+  std::vector<size_t> missing;
+  for (size_t i = 0; i < queries.radiance.size(); ++i) {
+    if (auto hit = cache.find(radianceKey(queries.radiance[i]))) {
+      out.radiance[i] = *hit;
+      ++out.cached;
+    } else {
+      missing.push_back(i);
     }
-    return missing;
-  };
-  const std::vector<size_t> missing_radiance =
-      fromCache(queries.radiance, out.radiance, [](const RadianceQuery& q) { return radianceKey(q); });
-  const std::vector<size_t> missing_irradiance =
-      fromCache(queries.irradiance, out.irradiance, [](const IrradianceQuery& q) { return irradianceKey(q); });
-  const auto start = std::chrono::steady_clock::now();
-  progress.beginStage("reference", missing_radiance.size() + missing_irradiance.size());
-  // Each query has its own seed (a hash of the query), so results do not
-  // depend on the order or the thread that computes them.
-#pragma omp parallel for schedule(dynamic)
-  for (size_t k = 0; k < missing_radiance.size(); ++k) {
-    const RadianceQuery& q = queries.radiance[missing_radiance[k]];
-    const QueryGeometry g = geometryOf(a, q);
-    const ReferenceRay ray{g.camera, g.view, g.sun, q.distance_m};
-    const ReferenceEstimate e = solver.radiance(ray, settings.paths, stableHash(radianceKey(q)));
-    out.radiance[missing_radiance[k]] = {e.value, e.standard_error, solver.transmittance(ray)};
-    progress.advance(1);
   }
+  for (size_t i = 0; i < queries.irradiance.size(); ++i) {
+    if (auto hit = cache.find(irradianceKey(queries.irradiance[i]))) {
+      out.irradiance[i] = *hit;
+      ++out.cached;
+    } else {
+      missing.push_back(queries.radiance.size() + i);
+    }
+  }
+  auto compute = [&](size_t item) {
+    if (item < queries.radiance.size()) {
+      const RadianceQuery& q = queries.radiance[item];
+      const QueryGeometry g = geometryOf(a, q);
+      const ReferenceRay ray{g.camera, g.view, g.sun, q.distance_m};
+      const ReferenceEstimate e = solver.radiance(ray, settings.paths, stableHash(radianceKey(q)));
+      out.radiance[item] = {e.value, e.standard_error, solver.transmittance(ray)};
+    } else {
+      const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];
+      const ReferenceEstimate e = solver.skyIrradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m},
+                                                       directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
+                                                       settings.paths, stableHash(irradianceKey(q)));
+      out.irradiance[item - queries.radiance.size()] = {e.value, e.standard_error, SpectrumD(1.0)};
+    }
+  };
+  auto storeInCache = [&](size_t item) {
+    if (item < queries.radiance.size()) {
+      cache.store(radianceKey(queries.radiance[item]), out.radiance[item]);
+    } else {
+      const size_t i = item - queries.radiance.size();
+      cache.store(irradianceKey(queries.irradiance[i]), out.irradiance[i]);
+    }
+  };
+  const auto start = std::chrono::steady_clock::now();
+  auto last_checkpoint = start;
+  progress.beginStage("reference", missing.size());
+  // In batches, so that what is done is saved to the cache at least every
+  // kReferenceCheckpointSeconds. Each query has its own seed (a hash of the
+  // query), so results depend neither on the order, the batches nor the
+  // thread that computes them.
+  const size_t batch = std::max<size_t>(kReferenceQueriesPerThreadPerBatch * omp_get_max_threads(), 1);
+  for (size_t first = 0; first < missing.size(); first += batch) {
+    const size_t last = std::min(first + batch, missing.size());
 #pragma omp parallel for schedule(dynamic)
-  for (size_t k = 0; k < missing_irradiance.size(); ++k) {
-    const IrradianceQuery& q = queries.irradiance[missing_irradiance[k]];
-    const ReferenceEstimate e = solver.skyIrradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m},
-                                                     directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
-                                                     settings.paths, stableHash(irradianceKey(q)));
-    out.irradiance[missing_irradiance[k]] = {e.value, e.standard_error, SpectrumD(1.0)};
-    progress.advance(1);
+    for (size_t k = first; k < last; ++k) {
+      compute(missing[k]);
+      progress.advance(1);
+    }
+    for (size_t k = first; k < last; ++k) storeInCache(missing[k]);
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_checkpoint).count() >= kReferenceCheckpointSeconds) {
+      cache.saveChunk();
+      last_checkpoint = now;
+    }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.endStage(out.seconds);
-  for (size_t i : missing_radiance) cache.store(radianceKey(queries.radiance[i]), out.radiance[i]);
-  for (size_t i : missing_irradiance) cache.store(irradianceKey(queries.irradiance[i]), out.irradiance[i]);
-  out.computed = static_cast<int>(missing_radiance.size() + missing_irradiance.size());
-  cache.save();
+  out.computed = static_cast<int>(missing.size());
+  cache.saveChunk();
+  return out;
+}
+
+QuerySet queryPiece(const QuerySet& queries, int piece, int pieces) {
+  QuerySet out{queries.name, {}, {}};
+  size_t item = 0;
+  for (const RadianceQuery& q : queries.radiance) {
+    if (static_cast<int>(item++ % pieces) == piece - 1) out.radiance.push_back(q);
+  }
+  for (const IrradianceQuery& q : queries.irradiance) {
+    if (static_cast<int>(item++ % pieces) == piece - 1) out.irradiance.push_back(q);
+  }
   return out;
 }
 

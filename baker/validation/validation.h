@@ -42,8 +42,28 @@ struct ReferenceValues {
   int cached = 0;
 };
 
+// A query's key in the reference cache and the seed of its Monte Carlo paths.
+std::string radianceKey(const RadianceQuery& query);
+std::string irradianceKey(const IrradianceQuery& query);
+
+// The reference is computed in batches of this many queries per thread: small
+// enough that a checkpoint comes soon after kReferenceCheckpointSeconds,
+// large enough that threads seldom wait for the batch's slowest query.
+inline constexpr int kReferenceQueriesPerThreadPerBatch = 16;
+// What a killed run may lose: the reference computed so far is saved to the
+// cache at least this often (seconds), so a cluster job stopped at its time
+// limit leaves its work for the next one.
+inline constexpr double kReferenceCheckpointSeconds = 60.0;
+
+// The reference for every query of the set, from the cache where it holds
+// them; the rest computed and added to the cache as it goes.
 ReferenceValues computeReferenceValues(const AtmosphereParameters& atmosphere, const QuerySet& queries,
                                        const ReferenceSettings& settings, ProgressSink& progress);
+
+// Piece `piece` (1 to `pieces`) of a query set: every pieces-th query,
+// radiance then irradiance, so pieces mix cheap and expensive queries alike.
+// The pieces together are the set; each can be computed by its own job.
+QuerySet queryPiece(const QuerySet& queries, int piece, int pieces);
 
 // A radiance query in the local frame: camera above the +z pole, sun in the
 // x-z plane, view azimuth from the sun's.

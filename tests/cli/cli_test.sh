@@ -127,6 +127,20 @@ grep -q $'\r' "$work/stderr" && fail "validate drew a terminal bar into a file"
 
 expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples 0
 
+# reference: two pieces into one cache, then validate finds every query there
+# and computes none; --estimate counts what the cache lacks.
+rcache="$work/rcache"
+expect_status 0 '"to_compute": 54' -- reference "$work/good.exr" --queries quick --reference-samples 64 --cache-dir "$rcache" --estimate
+expect_status 0 "piece 1 of 2" -- reference "$work/good.exr" --queries quick --reference-samples 64 --piece 1/2 --cache-dir "$rcache"
+expect_status 0 "piece 2 of 2" -- reference "$small" --queries quick --reference-samples 64 --piece 2/2 --cache-dir "$rcache"
+expect_status 0 '"to_compute": 0' -- reference --queries quick --reference-samples 64 --cache-dir "$rcache" --estimate
+expect_status 0 "(54 from the cache, 0 computed" -- validate "$work/good.exr" --queries quick --reference-samples 64 --cache-dir "$rcache"
+expect_status 2 "--piece = 3/2: must be K/N" -- reference --piece 3/2 --queries quick
+expect_status 2 "--piece = 1: must be K/N" -- reference --piece 1 --queries quick
+# bake --estimate: the resources, and no bake.
+expect_status 0 '"peak_table_bytes"' -- bake "$small" --estimate
+expect_status 2 "-o,--output is required" -- bake "$small"
+
 # compare: every method on a quick query set (CI's reduced run).
 expect_status 0 "" -- compare "$small" --queries quick --reference-samples 64 --resolutions 1 --no-cache --json "$work/c.json"
 for method in "ray-marched single scattering" "closed-form flat single scattering" "Hillaire 2020" "skybake 8x32x8x4"; do

@@ -1,0 +1,157 @@
+// The reference cache shared by concurrent jobs: chunks written by several
+// writers all count, merging loses nothing, pieces of a query set give the
+// values of the whole set.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "baker/validation/reference_cache.h"
+#include "baker/validation/validation.h"
+#include "data_formats/config.h"
+
+namespace skybake {
+namespace {
+
+class ReferenceCacheTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        std::filesystem::temp_directory_path() / ("skybake_reference_cache_test_" + std::to_string(::getpid()) + "_" +
+                                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  static CachedReference valueOf(double v) { return {SpectrumD(v), SpectrumD(v / 100.0), SpectrumD(0.5)}; }
+  size_t chunkFiles(const ReferenceCache& cache) const {
+    size_t n = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(cache.directory())) n += entry.is_regular_file();
+    return n;
+  }
+
+  std::filesystem::path dir_;
+  AtmosphereParameters atmosphere_ = builtinEarthConfig().atmosphere;
+};
+
+// Two jobs open the cache before either has saved (as a sweep's validate
+// jobs or a cluster's reference pieces do) and each adds its own queries:
+// neither overwrites the other.
+TEST_F(ReferenceCacheTest, ConcurrentWritersKeepEachOthersEntries) {
+  ReferenceCache first(dir_, atmosphere_, 64), second(dir_, atmosphere_, 64);
+  first.store("a", valueOf(1.0));
+  second.store("b", valueOf(2.0));
+  first.saveChunk();
+  second.saveChunk();
+  const ReferenceCache later(dir_, atmosphere_, 64);
+  ASSERT_TRUE(later.find("a").has_value());
+  ASSERT_TRUE(later.find("b").has_value());
+  EXPECT_EQ(later.find("a")->value.x, 1.0);
+  EXPECT_EQ(later.find("b")->value.x, 2.0);
+  // Another sample count is another reference.
+  EXPECT_FALSE(ReferenceCache(dir_, atmosphere_, 65).find("a").has_value());
+}
+
+// A run killed after a checkpoint keeps what the checkpoint saved.
+TEST_F(ReferenceCacheTest, SavedChunksSurviveTheWriter) {
+  {
+    ReferenceCache killed(dir_, atmosphere_, 64);
+    killed.store("saved", valueOf(3.0));
+    killed.saveChunk();
+    killed.store("lost", valueOf(4.0));  // never saved: the process dies here
+  }
+  const ReferenceCache next(dir_, atmosphere_, 64);
+  EXPECT_TRUE(next.find("saved").has_value());
+  EXPECT_FALSE(next.find("lost").has_value());
+}
+
+// Past kReferenceChunksBeforeMerge chunk files a reader merges them into one
+// and every entry is still there.
+TEST_F(ReferenceCacheTest, MergingManyChunksKeepsEveryEntry) {
+  const size_t chunks = kReferenceChunksBeforeMerge + 8;
+  // All opened before any writes, as by concurrent jobs: none merges.
+  std::vector<ReferenceCache> writers;
+  for (size_t i = 0; i < chunks; ++i) writers.emplace_back(dir_, atmosphere_, 64);
+  for (size_t i = 0; i < chunks; ++i) {
+    writers[i].store(fmt::format("q{}", i), valueOf(double(i)));
+    writers[i].saveChunk();
+  }
+  EXPECT_EQ(chunkFiles(writers[0]), chunks);
+  const ReferenceCache merging(dir_, atmosphere_, 64);
+  EXPECT_EQ(merging.size(), chunks);
+  EXPECT_EQ(chunkFiles(merging), 1u);
+  const ReferenceCache after(dir_, atmosphere_, 64);
+  ASSERT_EQ(after.size(), chunks);
+  for (size_t i = 0; i < chunks; ++i) {
+    ASSERT_TRUE(after.find(fmt::format("q{}", i)).has_value()) << i;
+    EXPECT_EQ(after.find(fmt::format("q{}", i))->value.x, double(i));
+  }
+}
+
+// A cache written as one file beside the directory is read too; a truncated
+// chunk is ignored (its queries are recomputed), not an error.
+TEST_F(ReferenceCacheTest, SingleFileCacheIsReadAndBrokenChunksIgnored) {
+  const ReferenceCache probe(dir_, atmosphere_, 64);
+  std::filesystem::create_directories(probe.directory());
+  std::ofstream(probe.directory().string() + ".json")
+      << R"({"entries": {"old": {"value": [1,2,3,4], "standard_error": [0,0,0,0], "transmittance": [1,1,1,1]}}})";
+  std::ofstream(probe.directory() / "broken.json") << R"({"entries": {"x": {"value": [1,)";
+  const ReferenceCache cache(dir_, atmosphere_, 64);
+  ASSERT_TRUE(cache.find("old").has_value());
+  EXPECT_EQ(cache.find("old")->value.y, 2.0);
+  EXPECT_EQ(cache.size(), 1u);
+}
+
+// The pieces of a query set partition it.
+TEST(ReferencePieces, PiecesPartitionTheSet) {
+  const QuerySet set = querySetNamed("quick", 100000.0);
+  for (int pieces : {1, 2, 3, 7}) {
+    size_t radiance = 0, irradiance = 0;
+    for (int k = 1; k <= pieces; ++k) {
+      const QuerySet piece = queryPiece(set, k, pieces);
+      radiance += piece.radiance.size();
+      irradiance += piece.irradiance.size();
+    }
+    EXPECT_EQ(radiance, set.radiance.size()) << pieces;
+    EXPECT_EQ(irradiance, set.irradiance.size()) << pieces;
+  }
+  const QuerySet first = queryPiece(set, 1, 2), second = queryPiece(set, 2, 2);
+  for (const RadianceQuery& a : first.radiance) {
+    for (const RadianceQuery& b : second.radiance) EXPECT_NE(radianceKey(a), radianceKey(b));
+  }
+}
+
+// The reference computed in two pieces, each by its own call sharing the
+// cache, is bit for bit the reference computed whole without a cache: each
+// query's paths are seeded by the query, not by the run.
+TEST_F(ReferenceCacheTest, PiecesGiveTheWholeSetsValues) {
+  const QuerySet set = querySetNamed("quick", atmosphere_.top_radius_m - atmosphere_.bottom_radius_m);
+  SilentProgress progress;
+  ReferenceSettings cached{64, dir_};
+  for (int k : {1, 2}) {
+    const ReferenceValues piece = computeReferenceValues(atmosphere_, queryPiece(set, k, 2), cached, progress);
+    EXPECT_EQ(piece.cached, 0);
+  }
+  const ReferenceValues from_pieces = computeReferenceValues(atmosphere_, set, cached, progress);
+  EXPECT_EQ(from_pieces.computed, 0);
+  EXPECT_EQ(from_pieces.cached, int(set.radiance.size() + set.irradiance.size()));
+  const ReferenceValues whole = computeReferenceValues(atmosphere_, set, ReferenceSettings{64, {}}, progress);
+  for (size_t i = 0; i < set.radiance.size(); ++i) {
+    for (int c = 0; c < atmosphere_.channelCount(); ++c) {
+      EXPECT_EQ(from_pieces.radiance[i].value[c], whole.radiance[i].value[c]) << radianceKey(set.radiance[i]);
+      EXPECT_EQ(from_pieces.radiance[i].standard_error[c], whole.radiance[i].standard_error[c]);
+    }
+  }
+  for (size_t i = 0; i < set.irradiance.size(); ++i) {
+    EXPECT_EQ(from_pieces.irradiance[i].value.x, whole.irradiance[i].value.x);
+  }
+}
+
+}  // namespace
+}  // namespace skybake
