@@ -11,6 +11,7 @@
 
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
+#include "baker/cli/reference_options.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/validation.h"
@@ -109,19 +110,10 @@ Command addReferenceCommand(CLI::App& app) {
       "compare to find there.");
   cmd->add_option("source", o->source_path,
                   "Config (.toml) or bake (.exr) whose atmosphere to compute (default: the built-in Earth).");
-  cmd->add_option("--queries", o->queries,
-                  "standard (docs/QUERIES.md), quick (a small subset) or a CSV with the columns of "
-                  "'lookup radiance'.")
-      ->capture_default_str();
-  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
-                     ->capture_default_str(),
-                 1, kMaxReferencePaths);
+  addReferenceOptions(*cmd, o->queries, o->reference_samples, o->cache_dir);
   cmd->add_option("--piece", o->piece,
                   "K/N: compute only the K-th of N interleaved pieces of the query set (each piece its own job; "
                   "together they are the set).");
-  cmd->add_option("--cache-dir", o->cache_dir,
-                  "Reference cache directory (default $SKYBAKE_CACHE_DIR, $XDG_CACHE_HOME/skybake or "
-                  "~/.cache/skybake).");
   cmd->add_flag("--estimate", o->estimate,
                 "Print (JSON) how many of the queries the cache lacks and the core-seconds computing them would "
                 "take, and compute nothing.");

@@ -5,6 +5,7 @@
 
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
+#include "baker/cli/reference_options.h"
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/stages/openmp_threads.h"
@@ -114,18 +115,9 @@ Command addValidateCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "validate", "Measure a bake's error against the independent reference solver (results cached on disk).");
   cmd->add_option("file", o->bake_path, "Bake file (.exr).")->required();
-  cmd->add_option("--queries", o->queries,
-                  "standard (docs/QUERIES.md), quick (a small subset) or a CSV with the columns of "
-                  "'lookup radiance'.")
-      ->capture_default_str();
-  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
-                     ->capture_default_str(),
-                 1, kMaxReferencePaths);
+  addReferenceOptions(*cmd, o->queries, o->reference_samples, o->cache_dir);
   cmd->add_option("--json", o->json_path, "Also write the report as JSON here.");
   cmd->add_option("--details", o->details_path, "Also write every query's bake and reference values (CSV).");
-  cmd->add_option("--cache-dir", o->cache_dir,
-                  "Reference cache directory (default $SKYBAKE_CACHE_DIR, $XDG_CACHE_HOME/skybake or "
-                  "~/.cache/skybake).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
   addThreadsOption(*cmd, o->threads);
   return {cmd, [o] { runValidate(*o); }};
