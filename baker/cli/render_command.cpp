@@ -125,8 +125,7 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
   spec.attribute("skybake:sun_angular_radius_rad", static_cast<float>(sky.atmosphere().sun_angular_radius_rad));
   spec.attribute("skybake:sun_in_image", view.sun_disk ? 1 : 0);
   // The sun at the camera, on a surface facing it.
-  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + view.altitude_m);
-  const Spectrum sun_irradiance = sky.sunIrradiance(camera, sun, sun);
+  const Spectrum sun_irradiance = sky.sunIrradiance(cameraPosition(sky, view), sun, sun);
   std::vector<float> irradiance(&sun_irradiance[0], &sun_irradiance[0] + sky.channelCount());
   // Text, as the wavelengths: OpenImageIO would store a float array as a
   // v2f, a v3f or a floatvector depending on the number of channels.

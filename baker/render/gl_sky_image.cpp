@@ -88,7 +88,6 @@ SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const
   const GLuint p = program.id();
   glUseProgram(p);
 
-  const double bottom = sky.atmosphere().bottom_radius_m;
   const glm::dvec3 sun = sunDirection(v);
   const PerspectiveFrame frame = perspectiveFrame(v);
   const glm::dvec3& forward = frame.forward;
@@ -106,7 +105,9 @@ SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const
   glUniform3f(at(p, "right"), static_cast<float>(right.x), static_cast<float>(right.y), static_cast<float>(right.z));
   glUniform3f(at(p, "up"), static_cast<float>(up.x), static_cast<float>(up.y), static_cast<float>(up.z));
   glUniform2f(at(p, "half_size"), static_cast<float>(frame.half_width), static_cast<float>(frame.half_height));
-  glUniform3f(at(p, "camera_m"), 0.0f, 0.0f, static_cast<float>(bottom + v.altitude_m));
+  const glm::dvec3 camera = cameraPosition(sky, v);
+  glUniform3f(at(p, "camera_m"), static_cast<float>(camera.x), static_cast<float>(camera.y),
+              static_cast<float>(camera.z));
   glUniform3f(at(p, "sun_dir"), static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z));
   glUniform1i(at(p, "ground_lit"), sky.outputs().ground_irradiance ? 1 : 0);
 

@@ -30,6 +30,10 @@ glm::dvec3 sunDirection(const SkyView& v) {
   return directionFromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
 }
 
+glm::dvec3 cameraPosition(const Sky& sky, const SkyView& v) {
+  return {0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m};
+}
+
 PerspectiveFrame perspectiveFrame(const SkyView& v) {
   const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
   const double elevation = radiansFromDegrees(v.view_elevation_deg);
@@ -102,7 +106,7 @@ double solidAnglePerPixelArea_sr(const SkyView& v, double x, double y) {
 SpectralImage renderSkyRadiance(const Sky& sky, const SkyView& v) {
   SpectralImage image{v.width, v.height, sky.channelCount(), {}};
   image.radiance.assign(static_cast<size_t>(v.width) * v.height * image.channels, 0.0f);
-  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m);
+  const glm::dvec3 camera = cameraPosition(sky, v);
   const glm::dvec3 sun = sunDirection(v);
 #pragma omp parallel for schedule(dynamic)
   for (int y = 0; y < v.height; ++y) {

@@ -47,6 +47,10 @@ glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad);
 // The sun's direction in a view's frame (its zenith and azimuth angles).
 glm::dvec3 sunDirection(const SkyView& view);
 
+// The camera's position, m from the planet's centre: above the frame's
+// origin on the +z axis, at the view's altitude.
+glm::dvec3 cameraPosition(const Sky& sky, const SkyView& view);
+
 // A perspective view's camera frame: unit vectors along the view, to the
 // image's right and up, and the image plane's half extents at distance 1.
 struct PerspectiveFrame {

@@ -59,7 +59,7 @@ void addSunDisk(const Sky& sky, const SkyView& v, SpectralImage& image) {
   const double radius = sky.atmosphere().sun_angular_radius_rad;
   if (!v.sun_disk || radius <= 0.0) return;
   const Spectrum solar = sky.solarRadiance();
-  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m);
+  const glm::dvec3 camera = cameraPosition(sky, v);
   const glm::dvec3 sun = sunDirection(v);
   const double bottom = sky.atmosphere().bottom_radius_m;
   const double top = sky.atmosphere().top_radius_m;
