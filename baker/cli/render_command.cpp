@@ -57,10 +57,13 @@ constexpr double kMaxPerspectiveFieldOfView_deg = 179.0;
 // W m^-2 sr^-1 nm^-1 for Earth's sun, leaving a factor of 1e4 to spare.
 constexpr double kMaxExposure = 1e30;
 
-// Memory per pixel while an image is rendered and written: linear RGB floats,
-// the tone-mapped bytes and the encoded file in memory, which is at most
-// about the raw floats but sits in a vector that may have grown to twice that.
-constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3 + 2 * 3 * sizeof(float);
+// Memory per pixel while an image is rendered and written, per channel of
+// the bake and per pixel: the spectral floats, and the encoded file in
+// memory, at most about the spectral floats but in a vector that may have
+// grown to twice that; besides them the linear sRGB floats and the
+// tone-mapped bytes.
+constexpr uint64_t kImageBytesPerPixelChannel = sizeof(float) + 2 * sizeof(float);
+constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3;
 
 // Largest image side: 16k pixels a side is far beyond any preview and keeps
 // the float image under 3 GiB.
@@ -83,7 +86,8 @@ bool isExrOutput(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
   const bool exr = extension == ".exr" || extension == ".EXR";
   if (!exr && extension != ".png" && extension != ".PNG") {
-    throwBadInput(fmt::format("{}: output must be .png (tone-mapped sRGB) or .exr (linear radiance)", path));
+    throwBadInput(
+        fmt::format("{}: output must be .png (tone-mapped sRGB) or .exr (linear sRGB or spectral radiance)", path));
   }
   return exr;
 }
@@ -232,7 +236,8 @@ void runRender(RenderOptions o) {
                                                       : ToneMap::Aces;
   const Sky sky = Sky::load(o.bake_path);
   requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
-                         static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) * kImageBytesPerPixel);
+                         static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) *
+                             (kImageBytesPerPixel + kImageBytesPerPixelChannel * sky.channelCount()));
   SpectralImage image = backend.render(sky, v);
   addSunDisk(sky, v, image);
   writeImage(o.output_path, sky, v, image, o.channels == "spectral", o.exposure, tone_map);
