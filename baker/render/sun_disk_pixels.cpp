@@ -22,9 +22,9 @@ constexpr double kSubsamplesPerSunRadius = 8.0;
 
 // Most subsamples along a pixel's side. Bounds the work where pixels are
 // far larger than the sun (a 64-pixel-wide map's pixels are 21 sun radii
-// across on Earth, 170 subsamples at the rate above); beyond it the ramp
-// widens with the spacing, which keeps the area right to the ramp's own
-// second-order error, ramp^2 / (12 radius^2) before the correction below.
+// across on Earth: about 240 subsamples a side at the rate above, counting
+// the pixel's diagonal); beyond it the ramp widens with the spacing, and the
+// correction below keeps the ramped disk's area the sun's.
 constexpr int kMaxSubsamplesPerPixelSide = 256;
 
 // A pixel is searched for the disk when its centre lies within the disk's
