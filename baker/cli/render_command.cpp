@@ -110,7 +110,6 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
     spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chromaticities);
     // OpenEXR's whiteLuminance: the luminance, cd m^-2, of RGB (1, 1, 1).
     spec.attribute("whiteLuminance", 1.0f);
-    spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("skybake:units", "cd m^-2");
     spec.attribute("skybake:content",
                    "linear sRGB (Rec. 709 primaries, D65 white) of spectral radiance through the CIE 1931 "
