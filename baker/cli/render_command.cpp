@@ -3,7 +3,6 @@
 //   [--exposure E] [--tonemap none|reinhard|aces] [--channels rgb|spectral] [--no-sun]
 //   [--backend cpu|gl] -o OUT.png|OUT.exr
 #include <optional>
-#include <span>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -66,7 +65,7 @@ constexpr uint64_t kImageBytesPerPixelChannel = sizeof(float) + 2 * sizeof(float
 constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3;
 
 // Largest image side: 16k pixels a side is far beyond any preview and keeps
-// the float image under 3 GiB.
+// the spectral float image within 4 GiB (four channels).
 constexpr int kMaxImageSide = 16384;
 
 void parseSize(const std::string& text, int& width, int& height) {
@@ -166,9 +165,9 @@ void writeImage(const std::string& path, const Sky& sky, const SkyView& view, co
   }
   bool ok = out->set_ioproxy(&memory) && out->open(path, spec);
   if (ok && exr) {
-    const std::vector<float> pixels =
-        spectral ? image.radiance : linearSrgbImage(image, wavelengths, colour::kMaxLuminousEfficacy_lm_per_W);
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
+    std::vector<float> rgb;
+    if (!spectral) rgb = linearSrgbImage(image, wavelengths, colour::kMaxLuminousEfficacy_lm_per_W);
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, spectral ? image.radiance.data() : rgb.data());
   } else if (ok) {
     const std::vector<unsigned char> display =
         encodeForDisplay(linearSrgbImage(image, wavelengths, previewScalePerExposure()), exposure, tone_map);
