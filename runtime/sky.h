@@ -123,6 +123,13 @@ class Sky {
   // horizontal surface would, scaled by (1 + normal . up) / 2.
   SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const;
 
+  // The direct sun's part of irradiance, W m^-2 nm^-1: the sun's irradiance
+  // at the top of the atmosphere times the transmittance to it and the part
+  // of its disk above the horizon, times the cosine of incidence (0 facing
+  // away; a normal along sun_dir gives the sun's irradiance at normal
+  // incidence). It needs no table a bake can leave out.
+  Spectrum sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const;
+
   // Radiance of the sun disk at the top of the atmosphere: irradiance over the
   // disk's solid angle. Multiply by the transmittance along the view ray.
   // Zero when the sun's angular radius is 0 (a point sun has no disk).

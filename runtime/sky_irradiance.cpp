@@ -8,24 +8,41 @@
 
 namespace skybake {
 
+namespace {
+
+// Where a surface point is for the irradiance lookups: its radius within
+// the tables' domain and its local up.
+struct SurfacePoint {
+  double r;
+  glm::dvec3 up;
+};
+SurfacePoint surfacePoint(const AtmosphereDomain& domain, const glm::dvec3& point) {
+  const double length = glm::length(point);
+  return {std::clamp(length, domain.bottom_radius_m, domain.top_radius_m),
+          length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0)};
+}
+
+}  // namespace
+
+Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const {
+  const SurfacePoint p = surfacePoint(sampler_.domain(), point);
+  const double mu_s = clampCosine(glm::dot(p.up, sun_dir));
+  return atmosphere().sun_irradiance *
+         sampler_.transmittanceToSun(bake_.tables.optical_depth, p.r, mu_s, atmosphere().sun_angular_radius_rad) *
+         static_cast<float>(std::max(glm::dot(normal, sun_dir), 0.0));
+}
+
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
                                     const glm::dvec3& sun_dir) const {
   if (!outputs().ground_irradiance) {
     throw Error(ErrorKind::BadInput,
                 "irradiance: this bake leaves it out (its scene.outputs lacks \"ground_irradiance\")");
   }
-  const AtmosphereDomain& domain = sampler_.domain();
-  const double length = glm::length(point);
-  const double r = std::clamp(length, domain.bottom_radius_m, domain.top_radius_m);
-  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
-  const double mu_s = clampCosine(glm::dot(up, sun_dir));
-  const BakeTables& t = bake_.tables;
-  const Spectrum sky =
-      sampler_.irradiance(t.irradiance, r, mu_s) * static_cast<float>(0.5 * (1.0 + glm::dot(normal, up)));
-  const Spectrum sun = atmosphere().sun_irradiance *
-                       sampler_.transmittanceToSun(t.optical_depth, r, mu_s, atmosphere().sun_angular_radius_rad) *
-                       static_cast<float>(std::max(glm::dot(normal, sun_dir), 0.0));
-  return {sun, sky};
+  const SurfacePoint p = surfacePoint(sampler_.domain(), point);
+  const double mu_s = clampCosine(glm::dot(p.up, sun_dir));
+  const Spectrum sky = sampler_.irradiance(bake_.tables.irradiance, p.r, mu_s) *
+                       static_cast<float>(0.5 * (1.0 + glm::dot(normal, p.up)));
+  return {sunIrradiance(point, normal, sun_dir), sky};
 }
 
 }  // namespace skybake

@@ -1,22 +1,29 @@
 // skybake render FILE.exr --altitude-m A --sun-zenith-deg Z [--sun-azimuth-deg P]
 //   --projection fisheye|latlong|perspective [--fov-deg F] [--size WxH]
-//   [--exposure E] [--tonemap none|reinhard|aces] [--backend cpu|gl] -o OUT.png|OUT.exr
+//   [--exposure E] [--tonemap none|reinhard|aces] [--channels rgb|spectral] [--no-sun]
+//   [--backend cpu|gl] -o OUT.png|OUT.exr
 #include <optional>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "baker/cli/available_memory.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
+#include "baker/render/image_colour.h"
 #include "baker/render/sky_image.h"
+#include "baker/render/sun_disk_pixels.h"
 #ifdef SKYBAKE_HAVE_GL
 #include "baker/render/gl_sky_image.h"
 #endif
 #include "baker/validation/validation_queries.h"
 #include "data_formats/atomic_file.h"
+#include "data_formats/bake_file.h"
 #include "data_formats/error.h"
+#include "runtime/colour/luminance.h"
+#include "runtime/colour/srgb_primaries.h"
 
 namespace skybake::cli {
 namespace {
@@ -33,6 +40,8 @@ struct RenderOptions {
   double view_elevation_deg = 10.0;
   std::optional<double> view_azimuth_deg;
   std::string backend = "cpu";
+  std::string channels = "rgb";
+  bool no_sun = false;
 };
 
 // --fov-deg: below a degree the view is finer than any table resolves; more
@@ -47,13 +56,16 @@ constexpr double kMaxPerspectiveFieldOfView_deg = 179.0;
 // W m^-2 sr^-1 nm^-1 for Earth's sun, leaving a factor of 1e4 to spare.
 constexpr double kMaxExposure = 1e30;
 
-// Memory per pixel while an image is rendered and written: linear RGB floats,
-// the tone-mapped bytes and the encoded file in memory, which is at most
-// about the raw floats but sits in a vector that may have grown to twice that.
-constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3 + 2 * 3 * sizeof(float);
+// Memory per pixel while an image is rendered and written, per channel of
+// the bake and per pixel: the spectral floats, and the encoded file in
+// memory, at most about the spectral floats but in a vector that may have
+// grown to twice that; besides them the linear sRGB floats and the
+// tone-mapped bytes.
+constexpr uint64_t kImageBytesPerPixelChannel = sizeof(float) + 2 * sizeof(float);
+constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3;
 
 // Largest image side: 16k pixels a side is far beyond any preview and keeps
-// the float image under 3 GiB.
+// the spectral float image within 4 GiB (four channels).
 constexpr int kMaxImageSide = 16384;
 
 void parseSize(const std::string& text, int& width, int& height) {
@@ -73,16 +85,64 @@ bool isExrOutput(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
   const bool exr = extension == ".exr" || extension == ".EXR";
   if (!exr && extension != ".png" && extension != ".PNG") {
-    throwBadInput(fmt::format("{}: output must be .png (tone-mapped sRGB) or .exr (linear radiance)", path));
+    throwBadInput(
+        fmt::format("{}: output must be .png (tone-mapped sRGB) or .exr (linear sRGB or spectral radiance)", path));
   }
   return exr;
+}
+
+// The header attributes of an EXR image (data_formats/FORMAT.md, "Images"):
+// its colour space and units, the bake's wavelengths, the camera and the
+// sun, whether the sun disk is in the pixels or not.
+void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, bool spectral) {
+  const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
+  if (spectral) {
+    spec.attribute("skybake:units", "W m^-2 sr^-1 nm^-1");
+    spec.attribute("skybake:content",
+                   "spectral radiance, one channel per wavelength of the bake, named after it (680nm)");
+  } else {
+    const colour::RgbChromaticities& c = colour::kSrgbChromaticities;
+    const float chromaticities[8] = {static_cast<float>(c.red.x),   static_cast<float>(c.red.y),
+                                     static_cast<float>(c.green.x), static_cast<float>(c.green.y),
+                                     static_cast<float>(c.blue.x),  static_cast<float>(c.blue.y),
+                                     static_cast<float>(c.white.x), static_cast<float>(c.white.y)};
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chromaticities);
+    // OpenEXR's whiteLuminance: the luminance, cd m^-2, of RGB (1, 1, 1).
+    spec.attribute("whiteLuminance", 1.0f);
+    spec.attribute("skybake:units", "cd m^-2");
+    spec.attribute("skybake:content",
+                   "linear sRGB (Rec. 709 primaries, D65 white) of spectral radiance through the CIE 1931 "
+                   "observer, in cd m^-2: Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance");
+  }
+  spec.attribute("skybake:wavelengths_nm", fmt::format("{}", fmt::join(wavelengths, " ")));
+  spec.attribute("skybake:projection", view.projection == Projection::LatLong   ? "latlong"
+                                       : view.projection == Projection::Fisheye ? "fisheye"
+                                                                                : "perspective");
+  spec.attribute("skybake:camera_altitude_m", static_cast<float>(view.altitude_m));
+  const glm::dvec3 sun = sunDirection(view);
+  const float sun_direction[3] = {static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z)};
+  spec.attribute("skybake:sun_direction", OIIO::TypeVector, sun_direction);
+  spec.attribute("skybake:sun_zenith_deg", static_cast<float>(view.sun_zenith_deg));
+  spec.attribute("skybake:sun_azimuth_deg", static_cast<float>(view.sun_azimuth_deg));
+  spec.attribute("skybake:sun_angular_radius_rad", static_cast<float>(sky.atmosphere().sun_angular_radius_rad));
+  spec.attribute("skybake:sun_in_image", view.sun_disk ? 1 : 0);
+  // The sun at the camera, on a surface facing it.
+  const Spectrum sun_irradiance = sky.sunIrradiance(cameraPosition(sky, view), sun, sun);
+  std::vector<float> irradiance(&sun_irradiance[0], &sun_irradiance[0] + sky.channelCount());
+  // Text, as the wavelengths: OpenImageIO would store a float array as a
+  // v2f, a v3f or a floatvector depending on the number of channels.
+  spec.attribute("skybake:sun_irradiance_W_m2_nm", fmt::format("{}", fmt::join(irradiance, " ")));
+  const SpectralImage sun_spectrum{1, 1, sky.channelCount(), irradiance};
+  const std::vector<float> illuminance =
+      linearSrgbImage(sun_spectrum, wavelengths, colour::kMaxLuminousEfficacy_lm_per_W);
+  spec.attribute("skybake:sun_illuminance_rgb_lx", OIIO::TypeColor, illuminance.data());
 }
 
 // Encodes the image in memory, then writes it out in one checked write: the
 // PNG writer does not report a full disk (it leaves a short file and says it
 // succeeded).
-void writeImage(const std::string& path, const SkyView& view, const std::vector<float>& linear, double exposure,
-                ToneMap tone_map) {
+void writeImage(const std::string& path, const Sky& sky, const SkyView& view, const SpectralImage& image, bool spectral,
+                double exposure, ToneMap tone_map) {
   const bool exr = isExrOutput(path);
   std::vector<unsigned char> encoded;
   OIIO::Filesystem::IOVecOutput memory(encoded);
@@ -90,13 +150,27 @@ void writeImage(const std::string& path, const SkyView& view, const std::vector<
   if (!out || !out->supports("ioproxy")) {
     throw Error(ErrorKind::Internal, fmt::format("{}: no in-memory image writer: {}", path, OIIO::geterror()));
   }
-  OIIO::ImageSpec spec(view.width, view.height, 3, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  if (exr) spec.attribute("compression", "zip");
+  const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
+  OIIO::ImageSpec spec(view.width, view.height, spectral ? image.channels : 3,
+                       exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (exr) {
+    spec.attribute("compression", "zip");
+    describeExr(spec, sky, view, spectral);
+    if (spectral) {
+      spec.channelnames.clear();
+      for (double w : wavelengths) spec.channelnames.push_back(channelName(w));
+    }
+  } else {
+    spec.attribute("oiio:ColorSpace", "sRGB");  // the PNG's sRGB chunk
+  }
   bool ok = out->set_ioproxy(&memory) && out->open(path, spec);
   if (ok && exr) {
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, linear.data());
+    std::vector<float> rgb;
+    if (!spectral) rgb = linearSrgbImage(image, wavelengths, colour::kMaxLuminousEfficacy_lm_per_W);
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, spectral ? image.radiance.data() : rgb.data());
   } else if (ok) {
-    const std::vector<unsigned char> display = encodeForDisplay(linear, exposure, tone_map);
+    const std::vector<unsigned char> display =
+        encodeForDisplay(linearSrgbImage(image, wavelengths, previewScalePerExposure()), exposure, tone_map);
     ok = out->write_image(OIIO::TypeDesc::UINT8, display.data());
   }
   if (!ok || !out->close()) throw Error(ErrorKind::Internal, fmt::format("{}: {}", path, out->geterror()));
@@ -120,7 +194,7 @@ class ImageBackend {
     refuseOptionValue("--backend", backend, "this skybake was built without OpenGL (libepoxy or EGL was not found)");
 #endif
   }
-  std::vector<float> render(const Sky& sky, const SkyView& view) const {
+  SpectralImage render(const Sky& sky, const SkyView& view) const {
 #ifdef SKYBAKE_HAVE_GL
     if (gl_) return gl_->render(sky, view);
 #endif
@@ -134,7 +208,10 @@ class ImageBackend {
 };
 
 void runRender(RenderOptions o) {
-  isExrOutput(o.output_path);
+  const bool exr = isExrOutput(o.output_path);
+  if (o.channels == "spectral" && !exr) {
+    refuseOptionValue("--channels", o.channels, "needs an .exr output; a PNG shows sRGB");
+  }
   const ImageBackend backend(o.backend);
   requireWritableOutput(o.output_path, {o.bake_path});
   SkyView& v = o.view;
@@ -151,13 +228,17 @@ void runRender(RenderOptions o) {
   if (!o.size.empty()) parseSize(o.size, v.width, v.height);
   v.view_elevation_deg = o.view_elevation_deg;
   v.view_azimuth_deg = o.view_azimuth_deg.value_or(v.sun_azimuth_deg);
+  v.sun_disk = !o.no_sun;
   const ToneMap tone_map = o.tone_map == "none"       ? ToneMap::None
                            : o.tone_map == "reinhard" ? ToneMap::Reinhard
                                                       : ToneMap::Aces;
   const Sky sky = Sky::load(o.bake_path);
   requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
-                         static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) * kImageBytesPerPixel);
-  writeImage(o.output_path, v, backend.render(sky, v), o.exposure, tone_map);
+                         static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) *
+                             (kImageBytesPerPixel + kImageBytesPerPixelChannel * sky.channelCount()));
+  SpectralImage image = backend.render(sky, v);
+  addSunDisk(sky, v, image);
+  writeImage(o.output_path, sky, v, image, o.channels == "spectral", o.exposure, tone_map);
 }
 
 }  // namespace
@@ -167,7 +248,8 @@ Command addRenderCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render the sky of a bake as an image.");
   cmd->add_option("file", o->bake_path, "Bake file (.exr).")->required();
   cmd->add_option("-o,--output", o->output_path,
-                  "Image: .png (tone-mapped sRGB, with the sun disk) or .exr (linear radiance, W m^-2 sr^-1 nm^-1).")
+                  "Image: .png (tone-mapped sRGB) or .exr (linear sRGB in cd m^-2, Rec. 709 primaries and D65 "
+                  "white in its chromaticities; or spectral radiance with --channels spectral).")
       ->required();
   requireFiniteIn(
       cmd->add_option("--altitude-m", o->view.altitude_m, "Camera altitude above the ground, m.")->required(),
@@ -184,9 +266,12 @@ Command addRenderCommand(CLI::App& app) {
                                   "horizontal, default 90)."),
                   kMinFieldOfView_deg, kMaxFieldOfView_deg);
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 512x512, latlong 1024x512).");
-  requirePositiveUpTo(cmd->add_option("--exposure", o->exposure, "Radiance multiplier before tone mapping (PNG only).")
-                          ->capture_default_str(),
-                      kMaxExposure);
+  requirePositiveUpTo(
+      cmd->add_option("--exposure", o->exposure,
+                      "PNG only: multiplier on spectral radiance (W m^-2 sr^-1 nm^-1) before tone "
+                      "mapping: a flat spectrum of 1 / E W m^-2 sr^-1 nm^-1 shows with Y = 1 before it.")
+          ->capture_default_str(),
+      kMaxExposure);
   cmd->add_option("--tonemap", o->tone_map, "Tone mapping for PNG: none, reinhard or aces.")
       ->check(CLI::IsMember({"none", "reinhard", "aces"}))
       ->capture_default_str();
@@ -197,6 +282,14 @@ Command addRenderCommand(CLI::App& app) {
   requireFiniteIn(cmd->add_option("--view-azimuth-deg", o->view_azimuth_deg,
                                   "Perspective: view azimuth, degrees (default: the sun's)."),
                   -kMaxAzimuth_deg, kMaxAzimuth_deg);
+  cmd->add_option("--channels", o->channels,
+                  "EXR only: rgb (linear sRGB, cd m^-2) or spectral (the bake's wavelengths as channels 680nm, "
+                  "550nm, ..., W m^-2 sr^-1 nm^-1).")
+      ->check(CLI::IsMember({"rgb", "spectral"}))
+      ->capture_default_str();
+  cmd->add_flag("--no-sun", o->no_sun,
+                "Leave the sun disk out of the pixels (for a renderer that adds the sun as a directional light; an "
+                "EXR's header still gives its direction and irradiance).");
   cmd->add_option("--backend", o->backend,
                   "cpu (the runtime's Sky lookups, all cores) or gl (the GLSL library of runtime/glsl on a headless "
                   "OpenGL 3.3 context: EGL, a GPU or Mesa's llvmpipe; float arithmetic, same images to within "

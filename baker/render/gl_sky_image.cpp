@@ -18,7 +18,10 @@ namespace {
 // 64 MiB) and each draw short.
 constexpr int kStripRows = 256;
 
-// pixelDirection and radianceAlong of sky_image.cpp, per pixel.
+// directionAtImagePoint and radianceAlong of sky_image.cpp, per pixel
+// centre: every channel of the bake (lanes past its channel count are 0).
+// The sun disk is added afterwards on the CPU (sun_disk_pixels.h), the same
+// for both backends.
 const char* const kFragmentMain = R"(
 uniform vec2 image_size;          // pixels
 uniform float strip_top_row;      // the first image row (from the top) of this draw
@@ -30,7 +33,6 @@ uniform vec3 forward, right, up;  // perspective camera frame
 uniform vec2 half_size;           // perspective: tan(fov / 2) across, times height / width down
 uniform vec3 camera_m;
 uniform vec3 sun_dir;
-uniform ivec3 rgb_channels;
 uniform int ground_lit;           // 1: the lit ground is added (the bake has ground irradiance)
 layout(location = 0) out vec4 pixel;
 
@@ -69,10 +71,7 @@ void main() {
   }
   SkybakeRadianceAndTransmittance received =
       ground_lit != 0 ? skybakeReceivedRadiance(camera_m, dir, sun_dir) : skybakeSkyRadiance(camera_m, dir, sun_dir);
-  vec4 radiance = received.radiance;
-  if (!skybakeEnterAtmosphere(camera_m, dir).ends_on_ground && skybakeInSunDisk(dir, sun_dir))
-    radiance += received.transmittance * skybakeSolarRadiance();
-  pixel = vec4(radiance[rgb_channels.x], radiance[rgb_channels.y], radiance[rgb_channels.z], 1.0);
+  pixel = received.radiance;
 }
 )";
 
@@ -82,20 +81,18 @@ GLint at(GLuint program, const char* name) { return glGetUniformLocation(program
 
 GlSkyImageRenderer::GlSkyImageRenderer() : context_(std::make_unique<gl::HeadlessGlContext>()) {}
 
-std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const {
+SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const {
   const gl::SkyGlResources resources(sky);
   const gl::GlProgram program(gl::kFullScreenVertexShader,
                               "#version 330 core\n" + gl::skyGlslLibrary() + kFragmentMain);
   const GLuint p = program.id();
   glUseProgram(p);
 
-  const double bottom = sky.atmosphere().bottom_radius_m;
   const glm::dvec3 sun = sunDirection(v);
   const PerspectiveFrame frame = perspectiveFrame(v);
   const glm::dvec3& forward = frame.forward;
   const glm::dvec3& right = frame.right;
   const glm::dvec3& up = frame.up;
-  const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
 
   glUniform2f(at(p, "image_size"), static_cast<float>(v.width), static_cast<float>(v.height));
   glUniform1i(at(p, "projection"), v.projection == Projection::Fisheye   ? 0
@@ -108,10 +105,10 @@ std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) 
   glUniform3f(at(p, "right"), static_cast<float>(right.x), static_cast<float>(right.y), static_cast<float>(right.z));
   glUniform3f(at(p, "up"), static_cast<float>(up.x), static_cast<float>(up.y), static_cast<float>(up.z));
   glUniform2f(at(p, "half_size"), static_cast<float>(frame.half_width), static_cast<float>(frame.half_height));
-  glUniform3f(at(p, "camera_m"), 0.0f, 0.0f, static_cast<float>(bottom + v.altitude_m));
+  const glm::dvec3 camera = cameraPosition(sky, v);
+  glUniform3f(at(p, "camera_m"), static_cast<float>(camera.x), static_cast<float>(camera.y),
+              static_cast<float>(camera.z));
   glUniform3f(at(p, "sun_dir"), static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z));
-  const std::array<int, 3> rgb = displayChannels(wavelengths);
-  glUniform3i(at(p, "rgb_channels"), rgb[0], rgb[1], rgb[2]);
   glUniform1i(at(p, "ground_lit"), sky.outputs().ground_irradiance ? 1 : 0);
 
   const int strip_rows = std::min(v.height, kStripRows);
@@ -126,7 +123,8 @@ std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) 
   // Last: creating the colour texture above rebinds the active unit.
   resources.bind(p);
 
-  std::vector<float> image(static_cast<size_t>(v.width) * v.height * 3, 0.0f);
+  SpectralImage image{v.width, v.height, sky.channelCount(), {}};
+  image.radiance.assign(static_cast<size_t>(v.width) * v.height * image.channels, 0.0f);
   std::vector<float> strip(static_cast<size_t>(v.width) * strip_rows * 4);
   for (int top = 0; complete && top < v.height; top += strip_rows) {
     const int rows = std::min(strip_rows, v.height - top);
@@ -138,9 +136,9 @@ std::vector<float> GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) 
     glReadPixels(0, 0, v.width, rows, GL_RGBA, GL_FLOAT, strip.data());
     for (int y = 0; y < rows; ++y) {
       const float* from = &strip[static_cast<size_t>(rows - 1 - y) * v.width * 4];  // GL rows run bottom up
-      float* to = &image[static_cast<size_t>(top + y) * v.width * 3];
       for (int x = 0; x < v.width; ++x) {
-        for (int c = 0; c < 3; ++c) to[x * 3 + c] = from[x * 4 + c];
+        float* to = image.pixel(x, top + y);
+        for (int c = 0; c < image.channels; ++c) to[c] = from[x * 4 + c];
       }
     }
   }

@@ -17,9 +17,9 @@ class GlSkyImageRenderer {
   // none can be made.
   GlSkyImageRenderer();
 
-  // As renderSkyRadiance: linear RGB radiance, W m^-2 sr^-1 nm^-1, rows top
-  // to bottom, R, G, B the channels nearest 680, 550 and 440 nm.
-  std::vector<float> render(const Sky& sky, const SkyView& view) const;
+  // As renderSkyRadiance: spectral radiance per pixel centre, without the
+  // sun disk (sun_disk_pixels.h adds it).
+  SpectralImage render(const Sky& sky, const SkyView& view) const;
 
   const gl::HeadlessGlContext& context() const { return *context_; }
 

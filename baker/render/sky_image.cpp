@@ -1,6 +1,6 @@
 #include "baker/render/sky_image.h"
 
-#include "runtime/atmosphere_ray.h"
+#include "runtime/colour/srgb_transfer.h"
 
 #include <omp.h>
 
@@ -11,10 +11,44 @@
 namespace skybake {
 namespace {
 
-// The view direction through pixel centre (x, y), or false outside the projection.
-bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
-  const double u = (x + 0.5) / v.width;
-  const double w = (y + 0.5) / v.height;
+// What a pixel sees along `dir`, the sun disk aside: what the viewer
+// receives (sky and lit ground; the air alone where the bake left out
+// ground irradiance).
+Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun) {
+  return (sky.outputs().ground_irradiance ? sky.receivedRadiance(camera, dir, sun) : sky.skyRadiance(camera, dir, sun))
+      .radiance;
+}
+
+}  // namespace
+
+glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad) {
+  return {std::sin(zenith_rad) * std::cos(azimuth_rad), std::sin(zenith_rad) * std::sin(azimuth_rad),
+          std::cos(zenith_rad)};
+}
+
+glm::dvec3 sunDirection(const SkyView& v) {
+  return directionFromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
+}
+
+glm::dvec3 cameraPosition(const Sky& sky, const SkyView& v) {
+  return {0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m};
+}
+
+PerspectiveFrame perspectiveFrame(const SkyView& v) {
+  const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
+  const double elevation = radiansFromDegrees(v.view_elevation_deg);
+  PerspectiveFrame f;
+  f.forward = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
+  f.right = glm::normalize(glm::cross(f.forward, glm::dvec3(0.0, 0.0, 1.0)));
+  f.up = glm::cross(f.right, f.forward);
+  f.half_width = std::tan(radiansFromDegrees(v.fov_deg) * 0.5);
+  f.half_height = f.half_width * v.height / v.width;
+  return f;
+}
+
+bool directionAtImagePoint(const SkyView& v, double x, double y, glm::dvec3& dir) {
+  const double u = x / v.width;
+  const double w = y / v.height;
   switch (v.projection) {
     case Projection::LatLong: {
       // The sun's azimuth in the middle column, the zenith on the top row.
@@ -23,8 +57,8 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
     }
     case Projection::Fisheye: {
       const double scale = std::min(v.width, v.height);
-      const double px = (2.0 * (x + 0.5) - v.width) / scale;
-      const double py = (v.height - 2.0 * (y + 0.5)) / scale;
+      const double px = (2.0 * x - v.width) / scale;
+      const double py = (v.height - 2.0 * y) / scale;
       const double rho = std::sqrt(px * px + py * py);
       if (rho > 1.0) return false;
       // The sun's azimuth toward the top of the image.
@@ -42,69 +76,46 @@ bool pixelDirection(const SkyView& v, int x, int y, glm::dvec3& dir) {
   return false;
 }
 
-// What a pixel sees along `dir`: what the viewer receives (sky and lit
-// ground; the air alone where the bake left out ground irradiance), plus the
-// sun disk seen through the air.
-Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun) {
-  const RadianceAndTransmittance received =
-      sky.outputs().ground_irradiance ? sky.receivedRadiance(camera, dir, sun) : sky.skyRadiance(camera, dir, sun);
-  Spectrum radiance = received.radiance;
-  const AtmosphereRay ray =
-      atmosphereRay(sky.atmosphere().bottom_radius_m, sky.atmosphere().top_radius_m, camera, dir, 0.0);
-  if (!ray.ends_on_ground && glm::dot(dir, sun) > std::cos(sky.atmosphere().sun_angular_radius_rad)) {
-    radiance += received.transmittance * sky.solarRadiance();
-  }
-  return radiance;
-}
-
-}  // namespace
-
-glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad) {
-  return {std::sin(zenith_rad) * std::cos(azimuth_rad), std::sin(zenith_rad) * std::sin(azimuth_rad),
-          std::cos(zenith_rad)};
-}
-
-glm::dvec3 sunDirection(const SkyView& v) {
-  return directionFromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
-}
-
-PerspectiveFrame perspectiveFrame(const SkyView& v) {
-  const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
-  const double elevation = radiansFromDegrees(v.view_elevation_deg);
-  PerspectiveFrame f;
-  f.forward = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
-  f.right = glm::normalize(glm::cross(f.forward, glm::dvec3(0.0, 0.0, 1.0)));
-  f.up = glm::cross(f.right, f.forward);
-  f.half_width = std::tan(radiansFromDegrees(v.fov_deg) * 0.5);
-  f.half_height = f.half_width * v.height / v.width;
-  return f;
-}
-
-std::array<int, 3> displayChannels(const std::vector<double>& wavelengths_nm) {
-  auto nearest = [&](double target_nm) {
-    int best = 0;
-    for (int c = 1; c < static_cast<int>(wavelengths_nm.size()); ++c) {
-      if (std::abs(wavelengths_nm[c] - target_nm) < std::abs(wavelengths_nm[best] - target_nm)) best = c;
+double solidAnglePerPixelArea_sr(const SkyView& v, double x, double y) {
+  switch (v.projection) {
+    case Projection::LatLong: {
+      // dOmega = sin(zenith) dzenith dazimuth, pi / height and 2 pi / width per pixel.
+      return std::sin(y / v.height * kPi) * (kPi / v.height) * (2.0 * kPi / v.width);
     }
-    return best;
-  };
-  return {nearest(680.0), nearest(550.0), nearest(440.0)};
+    case Projection::Fisheye: {
+      // Equidistant: zenith = k rho with k radians per pixel of radius, so
+      // dOmega = sin(zenith) dzenith dazimuth = k^2 sin(zenith) / zenith dA.
+      const double scale = std::min(v.width, v.height);
+      const double k = radiansFromDegrees(v.fov_deg) * 0.5 * 2.0 / scale;
+      const double zenith = k * std::hypot(x - 0.5 * v.width, y - 0.5 * v.height);
+      return k * k * (zenith > 0.0 ? std::sin(zenith) / zenith : 1.0);
+    }
+    case Projection::Perspective: {
+      // A pinhole at distance 1 from its image plane: dOmega = dA cos^3 of
+      // the angle off the axis.
+      const PerspectiveFrame f = perspectiveFrame(v);
+      const double a = (2.0 * x / v.width - 1.0) * f.half_width;
+      const double b = (1.0 - 2.0 * y / v.height) * f.half_height;
+      const double plane_area = (2.0 * f.half_width / v.width) * (2.0 * f.half_height / v.height);
+      return plane_area / std::pow(1.0 + a * a + b * b, 1.5);
+    }
+  }
+  return 0.0;
 }
 
-std::vector<float> renderSkyRadiance(const Sky& sky, const SkyView& v) {
-  std::vector<float> image(static_cast<size_t>(v.width) * v.height * 3, 0.0f);
-  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m);
+SpectralImage renderSkyRadiance(const Sky& sky, const SkyView& v) {
+  SpectralImage image{v.width, v.height, sky.channelCount(), {}};
+  image.radiance.assign(static_cast<size_t>(v.width) * v.height * image.channels, 0.0f);
+  const glm::dvec3 camera = cameraPosition(sky, v);
   const glm::dvec3 sun = sunDirection(v);
-  const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
-  const std::array<int, 3> rgb = displayChannels(wavelengths);
 #pragma omp parallel for schedule(dynamic)
   for (int y = 0; y < v.height; ++y) {
     for (int x = 0; x < v.width; ++x) {
       glm::dvec3 dir;
-      if (!pixelDirection(v, x, y, dir)) continue;
+      if (!directionAtImagePoint(v, x + 0.5, y + 0.5, dir)) continue;
       const Spectrum radiance = radianceAlong(sky, camera, dir, sun);
-      float* pixel = &image[(static_cast<size_t>(y) * v.width + x) * 3];
-      for (int c = 0; c < 3; ++c) pixel[c] = radiance[rgb[c]];
+      float* pixel = image.pixel(x, y);
+      for (int c = 0; c < image.channels; ++c) pixel[c] = radiance[c];
     }
   }
   return image;
@@ -115,11 +126,6 @@ namespace {
 // Narkowicz's fit of the ACES filmic curve.
 double acesFilm(double x) { return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
 
-double srgbEncode(double linear) {
-  const double v = std::clamp(linear, 0.0, 1.0);
-  return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-}
-
 }  // namespace
 
 std::vector<unsigned char> encodeForDisplay(const std::vector<float>& linear_rgb, double exposure, ToneMap tone_map) {
@@ -128,7 +134,7 @@ std::vector<unsigned char> encodeForDisplay(const std::vector<float>& linear_rgb
     double v = linear_rgb[i] * exposure;
     if (tone_map == ToneMap::Reinhard) v = v / (1.0 + v);
     if (tone_map == ToneMap::Aces) v = acesFilm(v);
-    out[i] = static_cast<unsigned char>(std::lround(srgbEncode(v) * 255.0));
+    out[i] = static_cast<unsigned char>(std::lround(colour::srgbEncode(v) * 255.0));
   }
   return out;
 }

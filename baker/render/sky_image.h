@@ -1,5 +1,6 @@
 // Images of a baked sky as seen by a camera: the projections, what a pixel
-// sees (sky, sun disk, lit ground), and display encoding.
+// sees (sky and lit ground; the sun disk is added by sun_disk_pixels.h), and
+// display encoding.
 #pragma once
 
 #include <array>
@@ -28,17 +29,27 @@ struct SkyView {
   double view_elevation_deg = 10.0;  // perspective: above the horizontal
   int width = 512;
   int height = 512;
+  bool sun_disk = true;  // false: the sun disk is left out (a renderer adds its own directional light)
+};
+
+// Spectral radiance per pixel, W m^-2 sr^-1 nm^-1: `channels` floats per
+// pixel in the bake's channel order, rows top to bottom.
+struct SpectralImage {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> radiance;
+  float* pixel(int x, int y) { return &radiance[(static_cast<size_t>(y) * width + x) * channels]; }
+  const float* pixel(int x, int y) const { return &radiance[(static_cast<size_t>(y) * width + x) * channels]; }
 };
 
 // The unit vector at `zenith_rad` from +z and `azimuth_rad` from +x toward +y.
 glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad);
 
-// The channels an image shows as R, G and B: the bake's channels nearest
-// 680, 550 and 440 nm.
-std::array<int, 3> displayChannels(const std::vector<double>& wavelengths_nm);
-
 // The sun's direction in a view's frame (its zenith and azimuth angles).
 glm::dvec3 sunDirection(const SkyView& view);
+
+// The camera's position, m from the planet's centre: above the frame's
+// origin on the +z axis, at the view's altitude.
+glm::dvec3 cameraPosition(const Sky& sky, const SkyView& view);
 
 // A perspective view's camera frame: unit vectors along the view, to the
 // image's right and up, and the image plane's half extents at distance 1.
@@ -48,14 +59,23 @@ struct PerspectiveFrame {
 };
 PerspectiveFrame perspectiveFrame(const SkyView& view);
 
-// Linear RGB radiance, W m^-2 sr^-1 nm^-1, width * height * 3 floats, rows top
-// to bottom. R, G and B are the bake's channels nearest 680, 550 and 440 nm.
+// The view direction through image point (x, y), in pixels from the image's
+// top-left corner (a pixel's centre is at +0.5), or false outside the
+// projection.
+bool directionAtImagePoint(const SkyView& view, double x, double y, glm::dvec3& dir);
+
+// Solid angle per unit image area at image point (x, y), sr per pixel^2:
+// what a pixel's part around that point sees of the sphere.
+double solidAnglePerPixelArea_sr(const SkyView& view, double x, double y);
+
+// What each pixel centre sees: sky radiance and the lit ground (the air
+// alone where the bake left out ground irradiance), without the sun disk.
 // Pixels outside the projection (the corners of a fisheye) are 0.
-std::vector<float> renderSkyRadiance(const Sky& sky, const SkyView& view);
+SpectralImage renderSkyRadiance(const Sky& sky, const SkyView& view);
 
 enum class ToneMap { None, Reinhard, Aces };
 
-// Scales by `exposure`, tone-maps and encodes as 8-bit sRGB.
+// Scales linear sRGB by `exposure`, tone-maps and encodes as 8-bit sRGB.
 std::vector<unsigned char> encodeForDisplay(const std::vector<float>& linear_rgb, double exposure, ToneMap tone_map);
 
 }  // namespace skybake

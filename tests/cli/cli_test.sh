@@ -110,6 +110,9 @@ expect_status 2 "sky.exr" -- info "$work/sky.exr"
 expect_status 2 ".png" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection fisheye -o "$work/sky.jpg"
 expect_status 2 "--size" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --size 0x10 -o "$work/s2.png"
 expect_status 2 "--sun-zenith-deg" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg nan -o "$work/s3.png"
+expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection latlong --size 64x32 --channels spectral --no-sun -o "$work/spectral.exr"
+expect_status 2 "--channels = spectral: needs an .exr output" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --channels spectral -o "$work/s4.png"
+expect_status 2 "--channels" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --channels xyz -o "$work/s5.exr"
 
 # validate: a quick query set with few paths (the figures are noisy; this
 # checks the command, its outputs and the report sidecar, not accuracy).
