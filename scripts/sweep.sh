@@ -15,4 +15,4 @@ if [[ ! -f build/CMakeCache.txt ]] || ! command -v snakemake > /dev/null; then
 fi
 cmake --build build --target skybake -j "$(nproc)" > /dev/null
 snakemake -s scripts/sweep/Snakefile --cores "$(nproc)" "$@"
-echo "sweep: out/sweep/sweep.csv, out/sweep/error_vs_time.png"
+echo "sweep: sweep.csv and error_vs_time.png in out/sweep/ (or the --config out=DIR given)"
