@@ -75,11 +75,6 @@ void requireOutput(const std::string& bake_path, bool baked, const char* output)
 // domain refuses no sun (below its lowest baked one the night continuation
 // takes over) and no camera (one below the ground is looked up on the
 // ground, as Sky does), only a point below the ground.
-// A point this close below the ground counts as on it: its altitude comes
-// from the camera, direction and distance through a square root, which
-// rounds by far less (as Sky's ranges allow).
-constexpr double kPointOnGroundTolerance_m = 1e-3;
-
 void requireInsideRanges(const CsvReader& q, const CsvRow& row, const RadianceQueryColumns& columns, const Sky& sky,
                          const std::string& bake_path) {
   const BakedRanges& ranges = sky.bakedRanges();
