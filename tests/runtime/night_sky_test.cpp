@@ -218,6 +218,31 @@ TEST(NightSky, ContinuationFallsFromOneToZero) {
   for (int c = 0; c < 3; ++c) EXPECT_EQ(night.scale(edge_mu_s)[c], 1.0f);
 }
 
+// The batch path scales its (r, mu_s) slices as the scalar lookups scale
+// each table read: the same values below the baked suns too.
+TEST(NightSky, BatchLookupsEqualScalarLookupsBelowTheBakedSuns) {
+  const Sky& sky = earth();
+  for (double sun_zenith : {105.0, 110.0, 115.0}) {
+    for (double altitude : {0.0, 3e4}) {
+      const glm::dvec3 camera = cameraAt(sky, altitude), sun = direction(sun_zenith, 10.0);
+      std::vector<glm::dvec3> views;
+      for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
+        for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(direction(zenith, azimuth));
+      }
+      for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, views)) {
+        const RadianceAndTransmittance v = sky.skyRadiance(camera, l.view, sun);
+        for (int c = 0; c < 3; ++c) {
+          // As Sky.BatchLookupsEqualScalarLookups: float rounding, 1e-5, of
+          // values that are all far below 1e-10 here, hence no absolute slack
+          // beyond float's smallest normal numbers.
+          EXPECT_NEAR(l.value.radiance[c], v.radiance[c], 1e-5f * v.radiance[c] + 1e-37f)
+              << "sun " << sun_zenith << ", camera " << altitude << " m";
+        }
+      }
+    }
+  }
+}
+
 // `skybake lookup` on a bake of the whole domain: every sun from the zenith
 // to the nadir and cameras below the ground and in space, none refused.
 TEST(NightSky, LookupRefusesNoSunNorCameraOfAWholeDomainBake) {
