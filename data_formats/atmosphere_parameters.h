@@ -40,7 +40,7 @@ struct AtmosphereParameters {
   double sun_angular_radius_rad = 0.0;
   // The lowest sun the scattering tables cover. Kept in degrees, as the config
   // key is, so that configs round-trip exactly; use sunMuSMin() in physics.
-  double sun_max_zenith_deg = 102.0;
+  double sun_max_zenith_deg = 108.0;
 
   Spectrum rayleigh_scattering{0.0f};  // m^-1 where density = 1
   DensityProfile rayleigh_density;
@@ -66,7 +66,7 @@ struct TextureSizes {
   int irradiance_r = 16;
   int scattering_r = 32;
   int scattering_mu = 128;  // even: half for rays that hit the ground
-  int scattering_mu_s = 32;
+  int scattering_mu_s = 36;
   int scattering_nu = 8;
   // [resolution] iteration, r, mu, mu_s and nu: the 4D sizes the orders
   // iterate on over the whole domain when a [scene] narrows the stored

@@ -20,21 +20,23 @@ constexpr double kRangeSunZenithTolerance_deg = 1e-6;
 
 double degreesOfCosine(double cosine) { return degreesFromRadians(std::acos(clampCosine(cosine))); }
 
-BakedRanges bakedRangesOf(const AtmosphereDomain& d, double sun_max_zenith_deg) {
+// Tables whose sun axis reaches the domain's lowest sun go on below it to
+// the nadir (the night continuation, runtime/night_sky.h): every sun.
+BakedRanges bakedRangesOf(const AtmosphereDomain& d) {
   const double thickness_m = d.top_radius_m - d.bottom_radius_m;
   const double high_m = d.radiusAtDistanceToHorizon(d.scattering_rho_max_m) - d.bottom_radius_m;
-  return {d.radiusAtDistanceToHorizon(d.scattering_rho_min_m) - d.bottom_radius_m,
-          high_m >= thickness_m - kRangeAltitudeTolerance_m ? std::numeric_limits<double>::infinity() : high_m,
-          d.scattering_mu_s_coord_max >= 1.0 ? 0.0 : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_max)),
-          d.scattering_mu_s_coord_min <= 0.0 ? sun_max_zenith_deg
-                                             : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_min)),
-          thickness_m};
+  return {
+      d.radiusAtDistanceToHorizon(d.scattering_rho_min_m) - d.bottom_radius_m,
+      high_m >= thickness_m - kRangeAltitudeTolerance_m ? std::numeric_limits<double>::infinity() : high_m,
+      d.scattering_mu_s_coord_max >= 1.0 ? 0.0 : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_max)),
+      d.scattering_mu_s_coord_min <= 0.0 ? 180.0 : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_min)),
+      thickness_m};
 }
 
 }  // namespace
 
 bool BakedRanges::containsAltitude(double altitude_m) const {
-  altitude_m = std::min(altitude_m, atmosphere_top_m);
+  altitude_m = std::clamp(altitude_m, 0.0, atmosphere_top_m);
   return altitude_m >= altitude_min_m - kRangeAltitudeTolerance_m &&
          altitude_m <= altitude_max_m + kRangeAltitudeTolerance_m;
 }
@@ -48,10 +50,11 @@ Sky Sky::load(const std::filesystem::path& path) { return Sky(readBakeFile(path)
 
 Sky::Sky(BakeFile bake)
     : bake_(std::move(bake)),
-      sampler_(bake_.contents.domain, bake_.contents.sizes),
+      sampler_(bake_.contents.domain, bake_.contents.sizes,
+               nightContinuationOf(bake_.contents.domain, bake_.tables.irradiance)),
       multiple_shape_(bake_.contents.atmosphere),
       mie_phase_(bake_.contents.atmosphere.mie_phase_g),
-      ranges_(bakedRangesOf(sampler_.domain(), bake_.contents.atmosphere.sun_max_zenith_deg)),
+      ranges_(bakedRangesOf(sampler_.domain())),
       baked_mu_s_min_(std::cos(radiansFromDegrees(ranges_.sun_zenith_max_deg))),
       baked_mu_s_max_(std::cos(radiansFromDegrees(ranges_.sun_zenith_min_deg))) {}
 

@@ -9,13 +9,20 @@
 //    transmittance 1;
 //  - a camera below the ground is treated as on the ground, directly above
 //    where it is;
-//  - a sun below the lowest baked sun angle (sun.max_zenith_deg) is looked up
-//    at that angle, where the tables hold small finite twilight values;
+//  - every sun direction is valid. Below the lowest baked sun angle
+//    (sun.max_zenith_deg) single scattering is integrated along the ray for
+//    the sun where it is, and what the tables give (multiple scattering, the
+//    sky irradiance) is their value at that angle scaled by the night
+//    continuation (runtime/night_sky.h): continuous there, non-increasing as
+//    the sun sinks, and 0 (kNightFloor) from the point where no sunlit air
+//    is in reach of light scattered twice (121 deg for Earth) to the nadir;
 //  - a bake whose [scene] narrows the altitudes and sun angles (bakedRanges)
 //    looks a camera or point outside them up at the nearest baked altitude,
 //    in the same direction relative to its horizon, and a sun outside them at
 //    the nearest baked sun angle: close for small excursions, wrong for large
-//    ones. Check bakedRanges().contains(...) where that can happen.
+//    ones. Check bakedRanges().contains(...) where that can happen. A scene
+//    whose sun range reaches sun.max_zenith_deg goes on below it as a bake
+//    of the whole domain does.
 //
 // Where the values come from: the baked tables, except single scattering
 // with the sun below the horizon, which is integrated along each view ray
@@ -46,10 +53,11 @@ struct RadianceAndTransmittance {
 };
 
 // The camera altitudes and sun zenith angles a bake's scattering tables
-// cover: [scene] altitude_range_m and sun_zenith_range_deg (with their 1 deg
+// serve: [scene] altitude_range_m and sun_zenith_range_deg (with their 1 deg
 // margin), or the whole atmosphere (altitude_max_m infinite: cameras in
-// space are looked up where their rays enter) and every sun up to
-// sun.max_zenith_deg.
+// space are looked up where their rays enter) and every sun (0 to 180 deg:
+// below sun.max_zenith_deg the night continuation takes over, see above).
+// A sun range that reaches sun.max_zenith_deg goes on to 180 deg.
 struct BakedRanges {
   double altitude_min_m;
   double altitude_max_m;
@@ -57,7 +65,8 @@ struct BakedRanges {
   double sun_zenith_max_deg;
   double atmosphere_top_m;  // above the ground
   // Altitudes above the atmosphere count as its top, where a camera in space
-  // is looked up (its rays enter there).
+  // is looked up (its rays enter there), and altitudes below the ground as
+  // the ground, where a camera below it is looked up.
   bool containsAltitude(double altitude_m) const;
   bool containsSunZenith(double sun_zenith_deg) const;
   bool contains(double altitude_m, double sun_zenith_deg) const {

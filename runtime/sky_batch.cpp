@@ -69,6 +69,9 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
   const Texture4D mie =
       hasSingleMie() ? sliceAt(t.single_mie, r_lerp, mu_s_lerp, blend) : Texture4D(1, ss.mu, 1, ss.nu);
   const Texture4D multiple = sliceAt(t.multiple_scattering, r_lerp, mu_s_lerp, blend);
+  // Below the lowest baked sun the slices hold that sun's values (the
+  // coordinate clamps): scaled as TableSampler::scattering scales them.
+  const Spectrum night = sampler_.nightScale4D(mu_s);
   const SpectrumD multiple_peak_weight = multiple_shape_.peakWeightAt(r - d.bottom_radius_m);
   const int channels = channelCount();
   const TableSampler::OpticalDepthFromR depth_here(sampler_, r), depth_at_ground(sampler_, d.bottom_radius_m);
@@ -88,12 +91,12 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
     const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, ss.nu);
     const SingleScattering single = singleScattering(
         {r, mu, mu_s, nu, ground}, 0.0, distanceToAtmosphereEnd(r, mu, d.bottom_radius_m, d.top_radius_m, ground), [&] {
-          return SingleScattering{sampleSlice(rayleigh, mu_lerp, nu_lerp, blend),
-                                  sampleSlice(mie, mu_lerp, nu_lerp, blend)};
+          return SingleScattering{sampleSlice(rayleigh, mu_lerp, nu_lerp, blend) * night,
+                                  sampleSlice(mie, mu_lerp, nu_lerp, blend) * night};
         });
-    const Spectrum l = single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-                       single.mie * static_cast<float>(mie_phase_(nu)) +
-                       sampleSlice(multiple, mu_lerp, nu_lerp, blend) * multiple_shape_(multiple_peak_weight, nu);
+    const Spectrum l =
+        single.rayleigh * static_cast<float>(rayleighPhase(nu)) + single.mie * static_cast<float>(mie_phase_(nu)) +
+        sampleSlice(multiple, mu_lerp, nu_lerp, blend) * night * multiple_shape_(multiple_peak_weight, nu);
     // As TableSampler::opticalDepthAlongRay takes a ray to the ground: both legs reversed.
     const Spectrum tau =
         ground ? TableSampler::depthBetween(

@@ -8,6 +8,7 @@
 
 #include "data_formats/bake_file.h"
 #include "data_formats/texture_mapping.h"
+#include "runtime/night_sky.h"
 #include "runtime/phase_functions.h"
 #include "runtime/sun_disk.h"
 
@@ -148,13 +149,24 @@ inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const Axi
 
 class TableSampler {
  public:
-  TableSampler(const AtmosphereDomain& domain, const TextureSizes& sizes)
+  // `night`: how the tables go on below their lowest sun (runtime/night_sky.h);
+  // by default they do not (the bake reads them only inside its domain).
+  TableSampler(const AtmosphereDomain& domain, const TextureSizes& sizes, const NightContinuation& night = {})
       : domain_(domain),
         sizes_(sizes),
         scattering_sizes_(ScatteringSizes::fromTextureSizes(sizes)),
-        H_(domain.horizonToTopDistance()) {}
+        H_(domain.horizonToTopDistance()),
+        night_(night),
+        night_4d_(domain.scattering_mu_s_coord_min <= 0.0) {}
 
   const AtmosphereDomain& domain() const { return domain_; }
+  const NightContinuation& night() const { return night_; }
+  // The night continuation's scale for the irradiance table, which covers
+  // every sun down to the domain's lowest, and for the 4D tables, whose
+  // sun axis reaches it unless a [scene] narrows it (they are clamped to
+  // the scene's lowest sun then, as documented in runtime/sky.h).
+  Spectrum nightScale(double mu_s) const { return night_.scale(mu_s); }
+  Spectrum nightScale4D(double mu_s) const { return night_4d_ ? night_.scale(mu_s) : Spectrum(1.0f); }
   const TextureSizes& sizes() const { return sizes_; }
   const ScatteringSizes& scatteringSizes() const { return scattering_sizes_; }
 
@@ -243,7 +255,7 @@ class TableSampler {
   Spectrum scattering(const Texture4D& table, double r, double mu, double mu_s, double nu,
                       bool ray_intersects_ground) const {
     const ScatteringCoord c = scatteringCoord(r, mu, mu_s, nu, ray_intersects_ground);
-    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s));
+    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s)) * nightScale4D(mu_s);
   }
 
   // The multiple-scattering density table (linear mu, see densityCoordMu);
@@ -252,7 +264,7 @@ class TableSampler {
   Spectrum multipleDensity(const Texture4D& table, double r, double mu, double mu_s, double nu) const {
     ScatteringCoord c = scatteringCoord(r, 1.0, mu_s, nu, false);
     c.u_mu = densityCoordMu(mu, table.mu_size);
-    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s));
+    return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s)) * nightScale4D(mu_s);
   }
 
   // Linear in mu_s, geometric in r: irradiance falls off with altitude
@@ -273,7 +285,7 @@ class TableSampler {
       out[c] =
           low[c] > 0.0f && high[c] > 0.0f ? geometricBlend(low[c], high[c], y.w1) : low[c] + (high[c] - low[c]) * y.w1;
     }
-    return out;
+    return out * nightScale(mu_s);
   }
 
  private:
@@ -281,6 +293,8 @@ class TableSampler {
   TextureSizes sizes_;
   ScatteringSizes scattering_sizes_;
   double H_;  // domain_.horizonToTopDistance()
+  NightContinuation night_;
+  bool night_4d_;  // the 4D tables' sun axis reaches the domain's lowest sun
 };
 
 }  // namespace skybake

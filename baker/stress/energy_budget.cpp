@@ -28,9 +28,12 @@
 //    budget treats the sun as a point, with panel edges at the ends of the
 //    ground's ramp so that its kinks do not spoil the quadrature.
 //  - Suns below the tables. The scattering and irradiance tables stop at
-//    mu_s_min and Sky looks a lower sun up there. The flux beyond is twilight
-//    that keeps dimming; it is extrapolated with the decay rate the tables
-//    hold at their edge, and the clamped value is kept as an upper bound.
+//    mu_s_min, below which Sky scales their value there by its night
+//    continuation (runtime/night_sky.h). The flux beyond is twilight that
+//    keeps dimming; the budget extrapolates it with the decay rate the tables
+//    hold at their edge, and keeps the edge's value over the whole night
+//    side (the tables clamped, as lookups were before the continuation) as
+//    an upper bound.
 #include "baker/stress/energy_budget.h"
 
 #include <algorithm>

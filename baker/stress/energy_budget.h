@@ -71,8 +71,8 @@ struct EnergyBudget {
   SpectrumD diffuse_out_W_per_nm{0.0};
   // The part of diffuse_out from where the sun lies below the tables' lowest
   // sun angle (sun zenith cosine < mu_s_min), extrapolated from the tables'
-  // decay at their edge; and what the clamped tables alone would give there
-  // (Sky looks a lower sun up at mu_s_min: an upper bound).
+  // decay at their edge; and what the tables clamped to their edge would
+  // give there (an upper bound: Sky's night continuation only dims them).
   SpectrumD diffuse_out_below_domain_W_per_nm{0.0};
   SpectrumD diffuse_out_below_domain_clamped_W_per_nm{0.0};
   // Sunlight that crosses the atmosphere without meeting the ground or

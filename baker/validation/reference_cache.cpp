@@ -76,15 +76,28 @@ std::filesystem::path defaultReferenceCacheDirectory() {
   return ".skybake-cache";
 }
 
+namespace {
+
+// What the cache key holds for the tables' domain and size, whatever the
+// defaults are now: the defaults when the key was introduced.
+constexpr double kKeySunMaxZenith_deg = 102.0;
+constexpr int kKeyScatteringMuS = 32;
+
+}  // namespace
+
 ReferenceCache::ReferenceCache(const std::filesystem::path& directory, const AtmosphereParameters& atmosphere,
                                int paths) {
   if (directory.empty()) return;
-  BakeConfig physics_only;  // default sizes and settings: only the atmosphere enters the key
+  BakeConfig physics_only;  // fixed sizes and default settings: only the atmosphere enters the key
   physics_only.name = "reference";
   physics_only.atmosphere = atmosphere;
   // The lowest tabulated sun is the tables' domain, not physics: bakes that
-  // differ only in it share their reference.
-  physics_only.atmosphere.sun_max_zenith_deg = AtmosphereParameters{}.sun_max_zenith_deg;
+  // differ only in it share their reference. It and the sizes are pinned to
+  // the values the keys were first made with (not the current defaults), so
+  // that a change of a default keeps every cached reference.
+  physics_only.atmosphere.sun_max_zenith_deg = kKeySunMaxZenith_deg;
+  physics_only.sizes = TextureSizes{};
+  physics_only.sizes.scattering_mu_s = kKeyScatteringMuS;
   const uint64_t key =
       stableHash(fmt::format("solver {}\npaths {}\n{}", kReferenceSolverVersion, paths, configToToml(physics_only)));
   directory_ = directory / fmt::format("reference-{:016x}", key);

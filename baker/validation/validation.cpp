@@ -12,6 +12,7 @@
 
 #include "baker/reference/reference_solver.h"
 #include "baker/validation/local_frame.h"
+#include "baker/validation/validation_queries.h"
 #include "data_formats/error.h"
 #include "runtime/atmosphere_ray.h"
 
@@ -183,7 +184,11 @@ QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string&
     const QueryGeometry g = geometryOf(a, q);
     const double point_altitude_m =
         q.distance_m > 0.0 ? glm::length(g.camera + g.view * q.distance_m) - a.bottom_radius_m : q.altitude_m;
-    if (!ranges.contains(q.altitude_m, q.sun_zenith_deg) || !ranges.containsAltitude(point_altitude_m)) {
+    // Ranges count altitudes below the ground as the ground (where a camera
+    // below it is looked up); a point below it is outside them all the same.
+    const bool point_below_ground = q.distance_m > 0.0 && point_altitude_m < -kPointOnGroundTolerance_m;
+    if (!ranges.contains(q.altitude_m, q.sun_zenith_deg) || !ranges.containsAltitude(point_altitude_m) ||
+        point_below_ground) {
       ++outside;
       continue;
     }

@@ -21,6 +21,12 @@ inline constexpr double kMaxQueryDistance_m = 1e12;
 // Zenith angles lie in [0, 180] degrees; azimuths within one turn either way.
 inline constexpr double kMaxZenithAngle_deg = 180.0;
 inline constexpr double kMaxAzimuth_deg = 360.0;
+// A query's point (radiance to a point) this close below the ground counts
+// as on it: its altitude comes from the camera, direction and distance
+// through a square root, which rounds by far less. Points further below are
+// inside the planet: skybake lookup refuses them and validate leaves them
+// out, though the camera of a query may be below the ground (looked up on it).
+inline constexpr double kPointOnGroundTolerance_m = 1e-3;
 
 struct RadianceQuery {
   double altitude_m;

@@ -38,10 +38,12 @@ struct SkyUniformBlock {
   float ground_albedo[4];
   float column_mie_share_power[4];
   float wavelengths_nm[4];
+  float night[4];           // night continuation: edge mu_s, edge sine, 1 / tan(span / 2), 4D tables continue
+  float night_exponent[4];  // its power per channel
   float layer_shape[3 * kMaxGlDensityLayers][4];  // width (m), exp_term, exp_scale (m^-1), linear_term (m^-1)
   float layer_constant[3 * kMaxGlDensityLayers][4];
 };
-static_assert(sizeof(SkyUniformBlock) == (19 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
+static_assert(sizeof(SkyUniformBlock) == (21 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
 
 // The block's values for a loaded bake.
 SkyUniformBlock skyUniformBlock(const Sky& sky);

@@ -36,8 +36,8 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   // (m^-1), z 1 / A, w 1 (0 where the sun range is empty).
   vec4 skybake_mu_s_map;
   // x, y: the lowest and highest baked sun as zenith cosines (a sun outside
-  // is integrated at the nearest); z Mie phase g, w the multiple-scattering
-  // shape's g_ms.
+  // is integrated at the nearest; x is -1, the nadir, where the tables go on
+  // to every sun); z Mie phase g, w the multiple-scattering shape's g_ms.
   vec4 skybake_sun_angles;
   // x, y: Cornette-Shanks normalisations (sr^-1) for g and g_ms; z the squared
   // chord |view - sun|^2 of the sun disk's edge, 4 sin^2(radius / 2).
@@ -60,6 +60,13 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   vec4 skybake_ground_albedo;          // Lambertian, dimensionless
   vec4 skybake_column_mie_share_power; // m_column^2 of the multiple-scattering shape, per channel
   vec4 skybake_wavelengths_nm;         // each lane's wavelength, 0 for unused lanes
+  // The night continuation below the lowest baked sun (skybakeNightScale):
+  // x its zenith cosine, y its zenith sine, z one over tan(span / 2), the
+  // span being the depression over which the scale falls to 0, w 1 where the
+  // 4D tables' sun axis reaches it (0: a narrowed scene's tables, clamped
+  // instead).
+  vec4 skybake_night;
+  vec4 skybake_night_exponent;         // the scale's power per channel
   // Density layers, SKYBAKE_MAX_DENSITY_LAYERS per profile (Rayleigh, Mie,
   // absorption): width (m), exp_term, exp_scale (m^-1), linear_term (m^-1);
   // and in skybake_layer_constant[i].x the constant term.

@@ -199,17 +199,38 @@ SkybakeScatteringCoord skybakeScatteringCoord(float r, float mu, float mu_s, flo
   return SkybakeScatteringCoord((nu + 1.0) * 0.5, u_mu_s, u_mu, u_r);
 }
 
+// ---- the night continuation (runtime/night_sky.h) ----
+
+// The share of the lowest baked sun's tabulated light left with the sun at
+// zenith cosine mu_s: 1 at and above it, (1 - tan(d / 2) / tan(span / 2))^p
+// at depression d below, 0 from the dark angle on
+// (NightContinuation::scaleBelowEdge; no acos, see there).
+vec4 skybakeNightScale(float mu_s) {
+  if (mu_s >= skybake_night.x) return vec4(1.0);
+  mu_s = clamp(mu_s, -1.0, 1.0);
+  float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
+  float sin_d = sin_s * skybake_night.x - mu_s * skybake_night.y;
+  float cos_d = mu_s * skybake_night.x + sin_s * skybake_night.y;
+  float x = clamp(1.0 - sin_d / (1.0 + cos_d) * skybake_night.z, 0.0, 1.0);
+  return pow(vec4(x), skybake_night_exponent);  // p >= 1: pow(0, p) is defined
+}
+
+// For the 4D tables (TableSampler::nightScale4D): a narrowed scene's tables
+// are clamped to its lowest sun instead.
+vec4 skybakeNightScale4D(float mu_s) { return skybake_night.w > 0.5 ? skybakeNightScale(mu_s) : vec4(1.0); }
+
 // A radiance table at (r, mu, mu_s, nu): geometric blends across mu_s and nu
 // with the sun below the horizon (radianceBlend).
 vec4 skybakeScattering(sampler3D table, float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
-  return skybakeSample4D(table, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), mu_s < 0.0);
+  return skybakeSample4D(table, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), mu_s < 0.0) *
+         skybakeNightScale4D(mu_s);
 }
 
 // The multiple-scattering density table: mu linear over [-1, 1].
 vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
   SkybakeScatteringCoord c = skybakeScatteringCoord(r, 1.0, mu_s, nu, false);
   c.u_mu = skybakeTextureCoordFromUnitRange((mu + 1.0) * 0.5, skybake_scattering_size.y);
-  return skybakeSample4D(skybake_multiple_density, c, mu_s < 0.0);
+  return skybakeSample4D(skybake_multiple_density, c, mu_s < 0.0) * skybakeNightScale4D(mu_s);
 }
 
 // ---- irradiance (2D: u = mu_s, v = r) ----
@@ -229,7 +250,8 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
   bvec4 positive = bvec4(vec4(greaterThan(low, vec4(0.0))) * vec4(greaterThan(high, vec4(0.0))));
   vec4 safe_low = mix(vec4(1.0), low, positive);
   vec4 safe_high = mix(vec4(1.0), high, positive);
-  return mix(low + (high - low) * y.w1, exp((1.0 - y.w1) * log(safe_low) + y.w1 * log(safe_high)), positive);
+  return mix(low + (high - low) * y.w1, exp((1.0 - y.w1) * log(safe_low) + y.w1 * log(safe_high)), positive) *
+         skybakeNightScale(mu_s);
 }
 
 // ---- the multiple-scattering shape f(r, nu), sr^-1 per channel ----

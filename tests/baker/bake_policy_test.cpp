@@ -63,14 +63,14 @@ TEST(BakePolicy, NarrowedScatteringAxesRoundTripAndEndOnTheSceneRanges) {
 }
 
 // A sun range that would not make the sun axis a texel finer is dropped
-// (0 to 100 deg plus the margin is 99.7 % of Earth's 0 to 102 deg axis: a
-// tenth of a texel at 32); one that does (0 to 90 deg, about 14 texels) stays.
+// (0 to 106 deg plus the margin is 99.1 % of Earth's 0 to 108 deg axis: a
+// third of a texel at 40); one that does (0 to 90 deg, about 22 texels) stays.
 // Either way a narrowed bake gets its iteration sizes written out, with the
 // stored mu_s where the sun axis is whole and that is larger than the default.
 TEST(BakePolicy, SettledConfigKeepsOnlySunRangesThatNarrowTheAxis) {
   BakeConfig config = builtinEarthConfig();
   config.scene_ranges.altitude_m = std::array<double, 2>{0.0, 15000.0};
-  config.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 100.0};
+  config.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 106.0};
   config.sizes.scattering_mu_s = 40;
   const BakeConfig whole_sun = settledBakeConfig(config);
   EXPECT_FALSE(whole_sun.scene_ranges.sun_zenith_deg.has_value());
@@ -85,14 +85,14 @@ TEST(BakePolicy, SettledConfigKeepsOnlySunRangesThatNarrowTheAxis) {
   const BakeConfig narrow_sun = settledBakeConfig(config);
   EXPECT_EQ(narrow_sun.scene_ranges.sun_zenith_deg, config.scene_ranges.sun_zenith_deg);
   ASSERT_TRUE(narrow_sun.sizes.iteration.has_value());
-  EXPECT_EQ(*narrow_sun.sizes.iteration, (std::array<int, 4>{32, 128, 32, 8}));
+  EXPECT_EQ(*narrow_sun.sizes.iteration, (std::array<int, 4>{32, 128, 36, 8}));
 
   // An explicit iteration is kept; a config that narrows nothing is unchanged.
   config.sizes.iteration = std::array<int, 4>{16, 64, 16, 4};
   EXPECT_EQ(*settledBakeConfig(config).sizes.iteration, *config.sizes.iteration);
   BakeConfig plain = builtinEarthConfig();
   EXPECT_FALSE(settledBakeConfig(plain).sizes.iteration.has_value());
-  plain.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 101.5};
+  plain.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 107.5};
   EXPECT_FALSE(settledBakeConfig(plain).scene_ranges.sun_zenith_deg.has_value());
   EXPECT_FALSE(settledBakeConfig(plain).sizes.iteration.has_value());
 }

@@ -206,13 +206,14 @@ struct Difference {
   size_t count = 0, non_finite = 0, worst = 0;
 };
 
-Difference compare(const std::vector<Spectrum>& cpu, const std::vector<Spectrum>& gpu, int channels) {
+Difference compare(const std::vector<Spectrum>& cpu, const std::vector<Spectrum>& gpu, int channels,
+                   double value_floor = kValueFloor) {
   Difference d;
   double sum = 0.0;
   for (size_t i = 0; i < cpu.size(); ++i) {
     for (int c = 0; c < channels; ++c) {
       if (!std::isfinite(gpu[i][c])) ++d.non_finite;
-      if (!(cpu[i][c] > kValueFloor)) continue;
+      if (!(cpu[i][c] > value_floor)) continue;
       const double relative = std::abs(static_cast<double>(gpu[i][c]) - cpu[i][c]) / cpu[i][c];
       sum += relative * relative;
       if (relative > d.largest) d.largest = relative, d.worst = i;
@@ -223,12 +224,13 @@ Difference compare(const std::vector<Spectrum>& cpu, const std::vector<Spectrum>
   return d;
 }
 
-void expectParity(const Sky& sky, const GlLookups& gl, const std::vector<Query>& queries, const std::string& what) {
+void expectParity(const Sky& sky, const GlLookups& gl, const std::vector<Query>& queries, const std::string& what,
+                  double value_floor = kValueFloor) {
   const Outputs cpu = evaluateOnCpu(sky, queries);
   const Outputs gpu = gl.evaluate(queries);
   for (int output = 0; output < 2; ++output) {
-    const Difference d =
-        compare(output == 0 ? cpu.first : cpu.second, output == 0 ? gpu.first : gpu.second, sky.channelCount());
+    const Difference d = compare(output == 0 ? cpu.first : cpu.second, output == 0 ? gpu.first : gpu.second,
+                                 sky.channelCount(), value_floor);
     const Spectrum& c = (output == 0 ? cpu.first : cpu.second)[d.worst];
     const Spectrum& g = (output == 0 ? gpu.first : gpu.second)[d.worst];
     std::printf("%s, output %d: rms %.4f %% max %.4f %% over %zu values (worst query %zu: cpu %g %g %g, gl %g %g %g)\n",
@@ -286,6 +288,45 @@ TEST_F(GlParity, SkyRadiance) {
       expectParity(
           sky, gl, queries,
           "sky radiance, sun " + std::to_string(sun_zenith) + " deg, altitude " + std::to_string(altitude) + " m");
+    }
+  }
+}
+
+// Below the baked sun angles (gl_earth.toml bakes down to 102 deg): the night
+// continuation of the tables and single scattering integrated for the sun
+// where it is, up to the dark angle (121.4 deg) and beyond, where both give
+// the night floor. The sky there is 1e-8 to 1e-14 of the day's, far below
+// kValueFloor; float keeps its relative precision down to 1e-38, so the same
+// relative tolerances hold for every value above 1e-30.
+constexpr double kNightValueFloor = 1e-30;
+
+TEST_F(GlParity, SunBelowTheBakedAngles) {
+  const Sky sky = Sky::load(bakePath("gl_earth.exr"));
+  const GlLookups gl(sky);
+  const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  for (double sun_zenith : {102.5, 105.0, 110.0, 118.0, 130.0, 180.0}) {
+    for (float altitude : {0.0f, 30000.0f, 400000.0f}) {
+      std::vector<Query> queries;
+      const glm::vec3 camera(0.0f, 0.0f, bottom + altitude);
+      for (const glm::vec3& d : directions(256, 11)) {
+        queries.push_back({Kind::SkyRadiance, camera, d, sunAt(sun_zenith, 20.0)});
+        queries.push_back(
+            {Kind::Irradiance, camera, glm::normalize(d + glm::vec3(0.0f, 0.0f, 1.5f)), sunAt(sun_zenith, 20.0)});
+      }
+      const std::string what = "below the baked suns, sun " + std::to_string(sun_zenith) + " deg, altitude " +
+                               std::to_string(altitude) + " m";
+      expectParity(sky, gl, queries, what, kNightValueFloor);
+      // Beyond the dark angle, from inside the atmosphere, the GL sky is the
+      // night floor too (the parity above compares only values above it).
+      if (sun_zenith >= 130.0 && altitude < sky.atmosphere().top_radius_m - sky.atmosphere().bottom_radius_m) {
+        const Outputs out = gl.evaluate(queries);
+        for (size_t i = 0; i < queries.size(); ++i) {
+          for (int c = 0; c < sky.channelCount(); ++c) {
+            EXPECT_EQ(out.first[i][c], 0.0f) << what << ", query " << i;
+            if (queries[i].kind == Kind::Irradiance) EXPECT_EQ(out.second[i][c], 0.0f) << what << ", query " << i;
+          }
+        }
+      }
     }
   }
 }

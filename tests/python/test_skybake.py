@@ -40,6 +40,8 @@ def direction(zenith_deg, azimuth_deg):
 QUERIES = [
     (0, 30, 0, 0, 0), (1000, 30, 60, 90, 0), (1000, 85, 89, 10, 0), (50, 95, 80, 0, 0),
     (2000, 60, 120, 45, 0), (400000, 40, 110, 0, 0), (10, 45, 80, 30, 20000), (3000, 96, 95, 180, 5000),
+    # Suns below the lowest baked one (night continuation) and a camera below the ground.
+    (0, 112, 0, 0, 0), (-100, 150, 90, 180, 0), (1000, 180, 0, 0, 0), (10, 110, 80, 0, 20000),
 ]
 
 
@@ -75,6 +77,22 @@ def test_lookups_equal_the_command_lines_bit_for_bit(sky):
         np.testing.assert_array_equal(t, et, err_msg=str(q))
 
 
+def test_sky_darkens_to_the_night_floor_as_the_sun_sinks_to_the_nadir(sky):
+    # As the C++ runtime (tests/runtime/night_sky_test.cpp): every sun is
+    # valid, brightness never rises as the sun sinks (1e-5: float rounding of
+    # the sums), and at the nadir it is the night floor, 0.
+    bottom = sky.atmosphere["bottom_radius_m"]
+    suns = direction(np.linspace(90, 180, 361), 0.0)
+    camera = [0.0, 0.0, bottom + 10.0]
+    zenith, _ = sky.sky_radiance(camera, [0.0, 0.0, 1.0], suns)
+    _, diffuse = sky.irradiance(camera, [0.0, 0.0, 1.0], suns)
+    for values in (zenith, diffuse):
+        assert np.all(np.isfinite(values)) and np.all(values >= 0)
+        assert np.all(values[1:] <= values[:-1] * (1 + 1e-5))
+        assert np.all(values[-1] == 0)
+    assert sky.baked_ranges["sun_zenith_max_deg"] == 180.0
+
+
 def test_shapes_broadcast_and_results_are_float32_per_channel(sky):
     bottom = sky.atmosphere["bottom_radius_m"]
     views = direction(np.linspace(0, 180, 7)[:, None], np.linspace(0, 360, 5)[None, :])  # (7, 5, 3)
@@ -91,7 +109,7 @@ def test_shapes_broadcast_and_results_are_float32_per_channel(sky):
     assert sky.transmittance([0, 0, bottom + 10], [0, 0, bottom + 20000]).shape == (sky.channel_count,)
     assert sky.solar_radiance().shape == (sky.channel_count,)
     assert sky.wavelengths_nm == [680.0, 550.0, 440.0]
-    assert sky.baked_ranges["sun_zenith_max_deg"] == pytest.approx(102.0)
+    assert sky.baked_ranges["sun_zenith_max_deg"] == pytest.approx(180.0)  # every sun: the night continuation
     assert sky.outputs == {"sky_radiance": True, "radiance_to_points": True, "ground_irradiance": True}
 
 

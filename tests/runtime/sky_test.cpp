@@ -113,7 +113,7 @@ TEST(Sky, TwilightSingleScatteringMatchesDirectIntegrationBetweenTexels) {
   double lookup_sq = 0.0, table_sq = 0.0, worst = 0.0, table_worst = 0.0;
   int n = 0;
   for (double altitude : {0.0, 5000.0, 10000.0, 30000.0}) {
-    for (double sun_zenith : {90.5, 91.2, 93.4, 95.5, 96.5, 98.0, 99.5}) {
+    for (double sun_zenith : {90.5, 91.05, 93.5, 95.05, 96.1, 97.2, 99.9}) {
       for (double view_zenith : {0.0, 60.0, 84.0, 88.0, 89.5}) {
         for (double azimuth : {0.0, 90.0, 150.0, 180.0}) {
           const glm::dvec3 view = direction(view_zenith, azimuth), sun = direction(sun_zenith, 0.0);
@@ -147,18 +147,21 @@ TEST(Sky, TwilightSingleScatteringMatchesDirectIntegrationBetweenTexels) {
   RecordProperty("values", std::to_string(n));
   RecordProperty("worst", std::to_string(worst));
   RecordProperty("table_worst", std::to_string(table_worst));
-  // Measured: 2.3 % RMS, worst 61 %, on 954 values; the tables alone 59 %
-  // RMS, worst 16x. The integral uses 4 sub-intervals (0.1 % RMS off a fine
+  // Measured: 2.3 % RMS, worst 61 %, on 985 values; the tables alone 16 %
+  // RMS, worst 100 % (the sun angles sit 0.3 to 0.7 of the way between the
+  // default axis's texels; on the 102 deg, 32-texel axis the tables were 59 %
+  // RMS off, worst 16x). The integral uses 4 sub-intervals (0.1 % RMS off a fine
   // rule) and the transmittance table, whose error decides the rest: the
   // worst values are views 0.5 deg above the horizon from the ground, away
   // from a sun 0.5 deg below it, lit only through sunlight grazing the ground,
   // where an optical depth near 40 read 1 % off is 30 to 60 % in
   // transmittance. The bounds leave a third above the measured figures; the
-  // last one checks that these sun angles do fall between texels.
+  // last one, below the tables' figure, checks that these sun angles do fall
+  // between texels.
   EXPECT_GT(n, 900);
   EXPECT_LT(lookup_rms, 0.03) << "worst " << worst;
   EXPECT_LT(worst, 0.8);
-  EXPECT_GT(table_rms, 0.2);
+  EXPECT_GT(table_rms, 0.1);
 }
 
 // The lookups switch from the tables' single scattering to the integrated

@@ -69,7 +69,11 @@ class Sky:
 
     @property
     def baked_ranges(self):
-        """The camera altitudes (m) and sun zenith angles (deg) the tables cover."""
+        """The camera altitudes (m) and sun zenith angles (deg) the tables serve.
+
+        A bake of the whole domain serves every sun (0 to 180 deg): below
+        sun.max_zenith_deg the night continuation takes over (runtime/README.md).
+        """
         return self._sky.baked_ranges
 
     @property
