@@ -56,7 +56,7 @@ TEST(Config, BuiltinEarthHasBrunetonValues) {
 }
 
 TEST(Config, PresetsLoad) {
-  for (const char* name : {"earth", "earth_hazy", "mars"}) {
+  for (const char* name : {"earth", "earth_hazy", "mars", "earth_spectral"}) {
     const BakeConfig c = loadConfigFile(std::string(SKYBAKE_SOURCE_DIR) + "/data_formats/presets/" + name + ".toml");
     EXPECT_EQ(c.name, name);
   }
@@ -286,7 +286,9 @@ TEST(Config, RejectsWrongTypesAndChannelCounts) {
                  {"planet.bottom_radius_m", "number"});
   expectRejected(edited("irradiance = [1.8]", "irradiance = [1.8, 1.9]"), {"sun.irradiance", "one per wavelength"});
   expectRejected(edited("wavelengths_nm = [550.0]", "wavelengths_nm = [400.0, 450.0, 500.0, 550.0, 600.0]"),
-                 {"channels.wavelengths_nm", "1 to 4"});
+                 {"channels.wavelengths_nm", "5 wavelengths", "at most 4"});
+  expectRejected(edited("wavelengths_nm = [550.0]", "wavelengths_nm = []"),
+                 {"channels.wavelengths_nm", "at least one wavelength"});
 }
 
 TEST(Config, MissingFileIsBadInput) {
