@@ -6,6 +6,7 @@
 
 #include "data_formats/config.h"
 #include "data_formats/error.h"
+#include "expect_config_rejected.h"
 
 namespace skybake {
 namespace {
@@ -20,18 +21,8 @@ top_radius_m = 6420000.0
 irradiance = [1.8]
 )";
 
-// Parses `text` expecting a BadInput error whose message contains every
-// string in `fragments`.
 void expectRejected(const std::string& text, std::initializer_list<std::string> fragments) {
-  try {
-    parseConfig(text, "test.toml");
-    FAIL() << "accepted:\n" << text;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
-    const std::string message = e.what();
-    EXPECT_NE(message.find("test.toml"), std::string::npos) << message;
-    for (const std::string& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << message;
-  }
+  test::expectConfigRejected(text, fragments);
 }
 
 // kMinimal with `from` replaced by `to`.
