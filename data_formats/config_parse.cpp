@@ -114,6 +114,13 @@ class ConfigReader {
   // evenly spaced with both ends included. Refuses more than one bake file
   // holds.
   std::vector<double> wavelengths(const toml::node& node, const std::string& name) const {
+    auto refuseMoreThanAFileHolds = [&](size_t count) {
+      if (count <= static_cast<size_t>(kMaxChannels)) return;
+      fail(&node, name, describe(node),
+           fmt::format("{} wavelengths, but one bake file holds at most {}: bake several files of at most {} "
+                       "wavelengths each",
+                       count, kMaxChannels, kMaxChannels));
+    };
     std::vector<double> out;
     if (const toml::table* range = node.as_table()) {
       rejectUnknownKeys(*range, name + ".", {"min_nm", "max_nm", "count"});
@@ -130,17 +137,14 @@ class ConfigReader {
       if (!(min_nm > 0.0 && min_nm < max_nm)) {
         fail(&node, name, describe(node), "needs 0 < min_nm < max_nm");
       }
+      // Before the wavelengths are made: a count of a billion would not fit in memory.
+      refuseMoreThanAFileHolds(static_cast<size_t>(count));
       out = evenlySpacedWavelengths(min_nm, max_nm, count);
     } else {
       out = numbers(node, name);
       if (out.empty()) fail(&node, name, describe(node), "needs at least one wavelength");
     }
-    if (static_cast<int>(out.size()) > kMaxChannels) {
-      fail(&node, name, describe(node),
-           fmt::format("{} wavelengths, but one bake file holds at most {}: bake several files of at most {} "
-                       "wavelengths each",
-                       out.size(), kMaxChannels, kMaxChannels));
-    }
+    refuseMoreThanAFileHolds(out.size());
     return out;
   }
 

@@ -71,6 +71,9 @@ TEST_F(SpectralConfig, MoreWavelengthsThanOneFileHoldsAreRefused) {
   expectRejected(config("[400, 450, 500, 550, 600]", "[1, 1, 1, 1, 1]"),
                  {"channels.wavelengths_nm", "5 wavelengths", "at most 4"});
   expectRejected(config("{ min_nm = 380, max_nm = 780, count = 1 }", "[1]"), {"channels.wavelengths_nm.count"});
+  // Refused before a billion wavelengths are made.
+  expectRejected(config("{ min_nm = 380, max_nm = 780, count = 1000000000 }", "[1]"),
+                 {"channels.wavelengths_nm", "1000000000 wavelengths", "at most 4"});
   expectRejected(config("{ min_nm = 780, max_nm = 380, count = 3 }", "[1, 1, 1]"), {"min_nm < max_nm"});
   expectRejected(config("{ min_nm = 380, max_nm = 780, count = 3, step = 1 }", "[1, 1, 1]"),
                  {"channels.wavelengths_nm.step", "unknown key"});
