@@ -45,6 +45,7 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path) {
   int previous_line = 0;
   while (std::getline(in, line)) {
     ++line_number;
+    if (line_number == 1 && line.starts_with(kUtf8ByteOrderMark)) line.erase(0, kUtf8ByteOrderMark.size());
     if (isBlank(line) || line[0] == '#') continue;
     const size_t comma = line.find(',');
     const std::string_view whole = trimmedCell(line);

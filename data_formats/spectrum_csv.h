@@ -9,7 +9,7 @@
 namespace skybake {
 
 // Reads a spectrum CSV: lines "wavelength_nm,value" (blanks around cells
-// allowed, CRLF line ends too); '#' lines and blank lines are skipped; the
+// allowed, CRLF line ends and a leading UTF-8 byte-order mark too); '#' lines and blank lines are skipped; the
 // first other line may be a header of two names. Throws Error(BadInput)
 // "<path>:<line>: <value>: <reason>" for a line that is not two finite
 // numbers and for a wavelength that is not above the line before it

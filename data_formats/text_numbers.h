@@ -1,5 +1,5 @@
 // Numbers in text files (query CSVs, spectrum CSVs): one rule for what a
-// number cell is, shared by every reader.
+// number cell is and what surrounds it, shared by every reader.
 #pragma once
 
 #include <charconv>
@@ -8,6 +8,9 @@
 #include <system_error>
 
 namespace skybake {
+
+// The byte-order mark some spreadsheets put before a file's first line.
+inline constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
 
 // Blanks around a cell; '\r' is the rest of a CRLF line end.
 inline constexpr std::string_view kCellBlanks = " \t\r";

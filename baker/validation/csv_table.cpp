@@ -21,9 +21,6 @@ namespace {
 // breaks) and would otherwise be read whole into memory.
 constexpr size_t kMaxLineBytes = 65536;
 
-// The byte-order mark some spreadsheets put before the header.
-constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
-
 // Splits one line into cells (RFC 4180 on a single line): a cell may be
 // quoted, so that R's write.csv headers ("altitude_m") and quoted numbers
 // read as their text; inside quotes a doubled quote is one quote and commas

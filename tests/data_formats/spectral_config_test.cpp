@@ -116,7 +116,8 @@ TEST_F(SpectralConfig, MieAngstromExponent) {
 }
 
 TEST_F(SpectralConfig, CsvIsExactAtSamplesAndLinearBetween) {
-  write("sun.csv", "# a test spectrum\nwavelength_nm,irradiance\n400,1.0\n500,3.0\r\n 600 , 2.0 \n");
+  // A spreadsheet's byte-order mark, a comment, a header, CRLF and blanks.
+  write("sun.csv", "\xEF\xBB\xBF# a test spectrum\nwavelength_nm,irradiance\n400,1.0\n500,3.0\r\n 600 , 2.0 \n");
   const BakeConfig c = parse(config("[400, 450, 500, 575]", "{ spectrum_csv = \"sun.csv\" }"));
   EXPECT_EQ(c.atmosphere.sun_irradiance[0], 1.0f);  // at a sample: the sample itself
   EXPECT_EQ(c.atmosphere.sun_irradiance[2], 3.0f);
