@@ -20,12 +20,16 @@ inline constexpr double kMinOrderTolerance = 1e-9;
 inline constexpr double kMaxOrderTolerance = 0.5;
 
 // Parses TOML text. `source` names the text in error messages (a file name).
+// Spectrum files the config names (CONFIG.md, "Spectra") are found relative
+// to `spectrum_directory` (empty: the current directory); the config that
+// comes back holds the values they resolve to, not the files.
 // Throws Error(BadInput) naming source, line, key, value and reason for syntax
 // errors, unknown or missing keys, wrong types and non-finite numbers, then
 // runs validateConfig.
-BakeConfig parseConfig(std::string_view toml_text, const std::string& source);
+BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
+                       const std::filesystem::path& spectrum_directory = {});
 
-// Reads and parses a config file.
+// Reads and parses a config file; its spectrum files are relative to its directory.
 BakeConfig loadConfigFile(const std::filesystem::path& path);
 
 // Checks physical sense: top > bottom, non-negative coefficients, |g| < 1,

@@ -10,15 +10,30 @@
 
 #include "config.h"
 #include "error.h"
+#include "spectral_samples.h"
+#include "spectrum_csv.h"
 #include "toml_text_check.h"
 #include "toml_value_text.h"
 
 namespace skybake {
 namespace {
 
+// The forms a per-wavelength key accepts besides a list and a tabulated
+// spectrum (CONFIG.md, "Spectra").
+enum class PowerLawForm {
+  None,
+  Exponent,          // { at_nm, value, exponent = 4 }: Rayleigh's lambda^-4
+  AngstromExponent,  // { at_nm, value, angstrom_exponent }: aerosols
+};
+
+// Rayleigh scattering by molecules much smaller than the wavelength goes as
+// lambda^-4; the default of rayleigh.scattering's `exponent`.
+constexpr double kRayleighExponent = 4.0;
+
 class ConfigReader {
  public:
-  explicit ConfigReader(std::string source) : source_(std::move(source)) {}
+  ConfigReader(std::string source, std::filesystem::path spectrum_directory)
+      : source_(std::move(source)), spectrum_directory_(std::move(spectrum_directory)) {}
 
   [[noreturn]] void fail(const toml::node* node, const std::string& key, const std::string& value,
                          const std::string& reason) const {
@@ -95,23 +110,179 @@ class ConfigReader {
     return out;
   }
 
-  // A per-channel array: exactly one number per wavelength.
-  Spectrum spectrum(const toml::table& t, const std::string& prefix, std::string_view key, bool required, int channels,
-                    Spectrum fallback) const {
+  // The bake's wavelengths: a list of numbers, or { min_nm, max_nm, count }
+  // evenly spaced with both ends included. Refuses more than one bake file
+  // holds.
+  std::vector<double> wavelengths(const toml::node& node, const std::string& name) const {
+    auto refuseMoreThanAFileHolds = [&](size_t count) {
+      if (count <= static_cast<size_t>(kMaxChannels)) return;
+      fail(&node, name, describe(node),
+           fmt::format("{} wavelengths, but one bake file holds at most {}: bake several files of at most {} "
+                       "wavelengths each",
+                       count, kMaxChannels, kMaxChannels));
+    };
+    std::vector<double> out;
+    if (const toml::table* range = node.as_table()) {
+      rejectUnknownKeys(*range, name + ".", {"min_nm", "max_nm", "count"});
+      double min_nm = 0.0, max_nm = 0.0;
+      number(*range, name + ".", "min_nm", true, min_nm);
+      number(*range, name + ".", "max_nm", true, max_nm);
+      const toml::node* count_node = range->get("count");
+      if (count_node == nullptr) fail(range, name + ".count", "", "missing required key");
+      const int count = integer(*count_node, name + ".count");
+      if (count < 2) {
+        fail(count_node, name + ".count", describe(*count_node),
+             "must be at least 2 (list a single wavelength as [nm])");
+      }
+      if (!(min_nm > 0.0 && min_nm < max_nm)) {
+        fail(&node, name, describe(node), "needs 0 < min_nm < max_nm");
+      }
+      // Before the wavelengths are made: a count of a billion would not fit in memory.
+      refuseMoreThanAFileHolds(static_cast<size_t>(count));
+      out = evenlySpacedWavelengths(min_nm, max_nm, count);
+    } else {
+      out = numbers(node, name);
+      if (out.empty()) fail(&node, name, describe(node), "needs at least one wavelength");
+    }
+    refuseMoreThanAFileHolds(out.size());
+    return out;
+  }
+
+  // A per-wavelength quantity, one value per wavelength of the bake: a list
+  // (one number per wavelength, in their order) or a table giving a spectrum
+  // that is read at each wavelength (CONFIG.md, "Spectra"). Absent: the
+  // fallback, or an error when required.
+  Spectrum spectrum(const toml::table& t, const std::string& prefix, std::string_view key, bool required,
+                    const std::vector<double>& wavelengths_nm, Spectrum fallback,
+                    PowerLawForm power_law = PowerLawForm::None, bool cross_section = false) const {
     const toml::node* node = t.get(key);
     const std::string name = prefix + std::string(key);
     if (node == nullptr) {
       if (required) fail(nullptr, name, "", "missing required key");
       return fallback;
     }
-    const std::vector<double> values = numbers(*node, name);
-    if (static_cast<int>(values.size()) != channels) {
-      fail(node, name, describe(*node),
-           fmt::format("needs {} values, one per wavelength in channels.wavelengths_nm", channels));
-    }
+    const std::vector<double> values = perWavelength(*node, name, wavelengths_nm, power_law, cross_section);
     Spectrum s(0.0f);
-    for (int c = 0; c < channels; ++c) s[c] = static_cast<float>(values[c]);
+    for (size_t c = 0; c < values.size(); ++c) s[static_cast<int>(c)] = static_cast<float>(values[c]);
     return s;
+  }
+
+  std::vector<double> perWavelength(const toml::node& node, const std::string& name,
+                                    const std::vector<double>& wavelengths_nm, PowerLawForm power_law,
+                                    bool cross_section) const {
+    const toml::table* form = node.as_table();
+    if (form == nullptr) {
+      std::vector<double> values = numbers(node, name);
+      if (values.size() != wavelengths_nm.size()) {
+        fail(&node, name, describe(node),
+             fmt::format("needs {} values, one per wavelength in channels.wavelengths_nm", wavelengths_nm.size()));
+      }
+      return values;
+    }
+    const std::string p = name + ".";
+    std::vector<double> out(wavelengths_nm.size());
+    if (form->contains("at_nm") && power_law != PowerLawForm::None) {
+      const char* exponent_key = power_law == PowerLawForm::Exponent ? "exponent" : "angstrom_exponent";
+      rejectUnknownKeys(*form, p, {"at_nm", "value", exponent_key});
+      double at_nm = 0.0, value = 0.0, exponent = kRayleighExponent;
+      number(*form, p, "at_nm", true, at_nm);
+      number(*form, p, "value", true, value);
+      number(*form, p, exponent_key, power_law == PowerLawForm::AngstromExponent, exponent);
+      if (!(at_nm > 0.0)) fail(form->get("at_nm"), p + "at_nm", describe(*form->get("at_nm")), "must be > 0");
+      for (size_t c = 0; c < out.size(); ++c) out[c] = powerLaw(at_nm, value, exponent, wavelengths_nm[c]);
+      return out;
+    }
+    // A tabulated spectrum from a file or inline, times a number density
+    // for a cross-section file.
+    TabulatedSpectrum table;
+    std::string table_name;  // the file, or the key of an inline spectrum, in messages
+    double factor = 1.0;
+    if (form->contains("spectrum_csv")) {
+      rejectUnknownKeys(*form, p, {"spectrum_csv", "band_nm"});
+      table = spectrumFile(*form, p + "spectrum_csv", table_name);
+    } else if (form->contains("cross_section_csv") && cross_section) {
+      rejectUnknownKeys(*form, p, {"cross_section_csv", "number_density_m3", "band_nm"});
+      table = spectrumFile(*form, p + "cross_section_csv", table_name);
+      number(*form, p, "number_density_m3", true, factor);
+      if (factor < 0.0) {
+        fail(form->get("number_density_m3"), p + "number_density_m3", describe(*form->get("number_density_m3")),
+             "must be >= 0");
+      }
+    } else if (form->contains("values") || form->contains("wavelengths_nm")) {
+      rejectUnknownKeys(*form, p, {"wavelengths_nm", "values", "band_nm"});
+      table = inlineSpectrum(*form, p);
+      table_name = p + "wavelengths_nm";
+    } else {
+      std::string forms =
+          "a list of one number per wavelength, { spectrum_csv = \"file.csv\" }, "
+          "{ wavelengths_nm = [...], values = [...] }";
+      if (power_law == PowerLawForm::Exponent) forms += ", { at_nm, value, exponent }";
+      if (power_law == PowerLawForm::AngstromExponent) forms += ", { at_nm, value, angstrom_exponent }";
+      if (cross_section) forms += ", { cross_section_csv = \"file.csv\", number_density_m3 }";
+      fail(&node, name, describe(node), "must be " + forms);
+    }
+    double band_nm = 0.0;
+    const bool banded = number(*form, p, "band_nm", false, band_nm);
+    if (banded && !(band_nm > 0.0)) {
+      fail(form->get("band_nm"), p + "band_nm", describe(*form->get("band_nm")), "must be > 0");
+    }
+    for (size_t c = 0; c < out.size(); ++c) {
+      const double lambda = wavelengths_nm[c];
+      const double low = banded ? lambda - 0.5 * band_nm : lambda;
+      const double high = banded ? lambda + 0.5 * band_nm : lambda;
+      if (!table.covers(low, high)) {
+        const std::string what =
+            banded ? fmt::format("the band {} to {} nm around channels.wavelengths_nm[{}] = {}", low, high, c, lambda)
+                   : fmt::format("channels.wavelengths_nm[{}] = {} nm", c, lambda);
+        fail(&node, name, "",
+             fmt::format("{}: {} is outside its {} to {} nm (spectra are not extrapolated)", table_name, what,
+                         table.firstWavelength_nm(), table.lastWavelength_nm()));
+      }
+      out[c] = factor * (banded ? table.bandMean(low, high) : table.at(lambda));
+    }
+    return out;
+  }
+
+  // The spectrum file a key names, relative to the config's directory.
+  TabulatedSpectrum spectrumFile(const toml::table& form, const std::string& key, std::string& shown_name) const {
+    const toml::node* node = form.get(key.substr(key.rfind('.') + 1));
+    const auto text = node->as_string();
+    if (!text || text->get().empty()) fail(node, key, describe(*node), "must be a file name");
+    const std::filesystem::path path = spectrum_directory_ / std::filesystem::path(text->get());
+    shown_name = path.string();
+    try {
+      return readSpectrumCsv(path);
+    } catch (const Error& e) {
+      fail(node, key, "", e.what());
+    }
+  }
+
+  TabulatedSpectrum inlineSpectrum(const toml::table& form, const std::string& p) const {
+    TabulatedSpectrum table;
+    const toml::node* wl = form.get("wavelengths_nm");
+    const toml::node* values = form.get("values");
+    if (wl == nullptr) fail(&form, p + "wavelengths_nm", "", "missing required key");
+    if (values == nullptr) fail(&form, p + "values", "", "missing required key");
+    table.wavelengths_nm = numbers(*wl, p + "wavelengths_nm");
+    table.values = numbers(*values, p + "values");
+    if (table.values.size() != table.wavelengths_nm.size()) {
+      fail(values, p + "values", describe(*values),
+           fmt::format("needs {} values, one per entry of {}wavelengths_nm", table.wavelengths_nm.size(), p));
+    }
+    if (table.wavelengths_nm.size() < 2) {
+      fail(wl, p + "wavelengths_nm", describe(*wl), "needs at least 2 samples to interpolate between");
+    }
+    for (size_t i = 0; i < table.wavelengths_nm.size(); ++i) {
+      if (!(table.wavelengths_nm[i] > 0.0)) {
+        fail(wl, fmt::format("{}wavelengths_nm[{}]", p, i), fmt::format("{}", table.wavelengths_nm[i]), "must be > 0");
+      }
+      if (i > 0 && !(table.wavelengths_nm[i] > table.wavelengths_nm[i - 1])) {
+        fail(wl, fmt::format("{}wavelengths_nm[{}]", p, i), fmt::format("{}", table.wavelengths_nm[i]),
+             fmt::format("{} {}wavelengths_nm[{}]: wavelengths must increase",
+                         table.wavelengths_nm[i] == table.wavelengths_nm[i - 1] ? "repeats" : "is below", p, i - 1));
+      }
+    }
+    return table;
   }
 
   DensityProfile density(const toml::table& t, const std::string& prefix) const {
@@ -145,11 +316,13 @@ class ConfigReader {
 
  private:
   std::string source_;
+  std::filesystem::path spectrum_directory_;
 };
 
 }  // namespace
 
-BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
+BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
+                       const std::filesystem::path& spectrum_directory) {
   checkTomlCharacters(toml_text, source);
   toml::table root;
   try {
@@ -158,7 +331,7 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
     throwBadInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.source().begin.column,
                               std::string(e.description())));
   }
-  const ConfigReader in(source);
+  const ConfigReader in(source, spectrum_directory);
   in.rejectUnknownKeys(
       root, "", {"name", "channels", "planet", "sun", "rayleigh", "mie", "absorption", "resolution", "bake", "scene"});
   BakeConfig config;
@@ -174,12 +347,8 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
   in.rejectUnknownKeys(*channels, "channels.", {"wavelengths_nm"});
   const toml::node* wl = channels->get("wavelengths_nm");
   if (wl == nullptr) in.fail(nullptr, "channels.wavelengths_nm", "", "missing required key");
-  a.wavelengths_nm = in.numbers(*wl, "channels.wavelengths_nm");
-  const int n = static_cast<int>(a.wavelengths_nm.size());
-  if (n < 1 || n > kMaxChannels) {
-    in.fail(wl, "channels.wavelengths_nm", ConfigReader::describe(*wl),
-            fmt::format("needs 1 to {} wavelengths (bake more in separate files)", kMaxChannels));
-  }
+  a.wavelengths_nm = in.wavelengths(*wl, "channels.wavelengths_nm");
+  const std::vector<double>& n = a.wavelengths_nm;
 
   const toml::table* planet = in.table(root, "", "planet", true);
   in.rejectUnknownKeys(*planet, "planet.", {"bottom_radius_m", "top_radius_m", "ground_albedo"});
@@ -196,19 +365,21 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source) {
 
   if (const toml::table* t = in.table(root, "", "rayleigh", false)) {
     in.rejectUnknownKeys(*t, "rayleigh.", {"scattering", "density"});
-    a.rayleigh_scattering = in.spectrum(*t, "rayleigh.", "scattering", true, n, Spectrum(0.0f));
+    a.rayleigh_scattering = in.spectrum(*t, "rayleigh.", "scattering", true, n, Spectrum(0.0f), PowerLawForm::Exponent);
     a.rayleigh_density = in.density(*t, "rayleigh.");
   }
   if (const toml::table* t = in.table(root, "", "mie", false)) {
     in.rejectUnknownKeys(*t, "mie.", {"scattering", "extinction", "phase_g", "density"});
-    a.mie_scattering = in.spectrum(*t, "mie.", "scattering", true, n, Spectrum(0.0f));
-    a.mie_extinction = in.spectrum(*t, "mie.", "extinction", false, n, a.mie_scattering);
+    a.mie_scattering = in.spectrum(*t, "mie.", "scattering", true, n, Spectrum(0.0f), PowerLawForm::AngstromExponent);
+    a.mie_extinction =
+        in.spectrum(*t, "mie.", "extinction", false, n, a.mie_scattering, PowerLawForm::AngstromExponent);
     in.number(*t, "mie.", "phase_g", true, a.mie_phase_g);
     a.mie_density = in.density(*t, "mie.");
   }
   if (const toml::table* t = in.table(root, "", "absorption", false)) {
     in.rejectUnknownKeys(*t, "absorption.", {"extinction", "density"});
-    a.absorption_extinction = in.spectrum(*t, "absorption.", "extinction", true, n, Spectrum(0.0f));
+    a.absorption_extinction =
+        in.spectrum(*t, "absorption.", "extinction", true, n, Spectrum(0.0f), PowerLawForm::None, true);
     a.absorption_density = in.density(*t, "absorption.");
   }
 
@@ -350,7 +521,7 @@ BakeConfig loadConfigFile(const std::filesystem::path& path) {
   if (!file) throwBadInput(fmt::format("{}: cannot open config file", path.string()));
   std::ostringstream text;
   text << file.rdbuf();
-  return parseConfig(text.str(), path.string());
+  return parseConfig(text.str(), path.string(), path.parent_path());
 }
 
 }  // namespace skybake

@@ -11,6 +11,7 @@
 
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
+#include "data_formats/text_numbers.h"
 
 namespace skybake {
 namespace {
@@ -19,17 +20,6 @@ namespace {
 // one means the file is not a query CSV (binary data, a file without line
 // breaks) and would otherwise be read whole into memory.
 constexpr size_t kMaxLineBytes = 65536;
-
-// The byte-order mark some spreadsheets put before the header.
-constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
-
-constexpr std::string_view kBlank = " \t\r";
-
-std::string_view trimmed(std::string_view text) {
-  const size_t first = text.find_first_not_of(kBlank);
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(kBlank) - first + 1);
-}
 
 // Splits one line into cells (RFC 4180 on a single line): a cell may be
 // quoted, so that R's write.csv headers ("altitude_m") and quoted numbers
@@ -62,7 +52,7 @@ std::vector<std::string> splitCells(std::string_view line, const std::string& pa
         i = quote + 1;
         break;
       }
-      const size_t after = line.find_first_not_of(kBlank, i);
+      const size_t after = line.find_first_not_of(kCellBlanks, i);
       if (after != std::string_view::npos && line[after] != ',') {
         throwBadInput(fmt::format("{}:{}:{}: text after the closing quote of a quoted cell", path, line_number,
                                   cells.size() + 1));
@@ -74,24 +64,16 @@ std::vector<std::string> splitCells(std::string_view line, const std::string& pa
     }
     const size_t comma = line.find(',', pos);
     cells.emplace_back(
-        trimmed(line.substr(pos, comma == std::string_view::npos ? std::string_view::npos : comma - pos)));
+        trimmedCell(line.substr(pos, comma == std::string_view::npos ? std::string_view::npos : comma - pos)));
     if (comma == std::string_view::npos) break;
     pos = comma + 1;
   }
   return cells;
 }
 
-bool isBlankLine(const std::string& line) { return line.find_first_not_of(kBlank) == std::string::npos; }
+bool isBlankLine(const std::string& line) { return line.find_first_not_of(kCellBlanks) == std::string::npos; }
 
 bool isCommentLine(const std::string& line) { return !line.empty() && line[0] == '#'; }
-
-// Whether `text` is a whole finite number (what a data cell must be).
-bool parseNumber(const std::string& text, double& value) {
-  const char* begin = text.data();
-  const char* end = begin + text.size();
-  const auto [ptr, ec] = std::from_chars(begin, end, value);
-  return !text.empty() && ec == std::errc() && ptr == end && std::isfinite(value);
-}
 
 // Reads one line of at most kMaxLineBytes into `line`; false at the end of
 // the input. Throws Error(BadInput) for a longer line.
@@ -135,7 +117,7 @@ CsvReader::CsvReader(const std::filesystem::path& path) : path_(path.string()) {
     if (last_comment_line != 0 && !isBlankLine(last_comment)) {
       double unused = 0.0;
       bool all_numbers = true;
-      for (const std::string& cell : names) all_numbers = all_numbers && parseNumber(cell, unused);
+      for (const std::string& cell : names) all_numbers = all_numbers && parseFiniteNumber(cell, unused);
       if (all_numbers) {
         // This line is the first data row; read it again in next().
         pending_row_ = true;
@@ -195,7 +177,7 @@ bool CsvReader::readRow(CsvRow& row) {
     cells.erase(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(skipped_columns_));
     row.values.resize(cells.size());
     for (size_t c = 0; c < cells.size(); ++c) {
-      if (!parseNumber(cells[c], row.values[c])) {
+      if (!parseFiniteNumber(cells[c], row.values[c])) {
         throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", path_, line_number_,
                                   c + 1 + skipped_columns_, columns_[c], cells[c]));
       }

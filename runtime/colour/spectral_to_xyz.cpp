@@ -1,11 +1,10 @@
 #include "runtime/colour/spectral_to_xyz.h"
 
 #include <fmt/format.h>
-#include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "data_formats/error.h"
+#include "data_formats/spectral_samples.h"
 #include "runtime/colour/cie1931_observer.h"
 
 namespace skybake::colour {
@@ -18,12 +17,12 @@ SpectralToXyz::SpectralToXyz(std::span<const double> wavelengths_nm) : weights_(
     }
   }
   // The channels in increasing wavelength.
-  std::vector<size_t> order(wavelengths_nm.size());
-  std::iota(order.begin(), order.end(), size_t{0});
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return wavelengths_nm[a] < wavelengths_nm[b]; });
+  const std::vector<size_t> order = ascendingOrder(wavelengths_nm);
+  std::vector<double> ascending_nm(order.size());
+  for (size_t k = 0; k < order.size(); ++k) ascending_nm[k] = wavelengths_nm[order[k]];
   for (size_t k = 1; k < order.size(); ++k) {
-    if (wavelengths_nm[order[k]] == wavelengths_nm[order[k - 1]]) {
-      throwBadInput(fmt::format("colour conversion: wavelength {} nm is given twice", wavelengths_nm[order[k]]));
+    if (ascending_nm[k] == ascending_nm[k - 1]) {
+      throwBadInput(fmt::format("colour conversion: wavelength {} nm is given twice", ascending_nm[k]));
     }
   }
   auto add = [&](size_t channel, double fraction, const ColourMatchingSample& s) {
@@ -32,22 +31,11 @@ SpectralToXyz::SpectralToXyz(std::span<const double> wavelengths_nm) : weights_(
     w.y += fraction * s.ybar * kCie1931Step_nm;
     w.z += fraction * s.zbar * kCie1931Step_nm;
   };
+  // Beyond the end samples linearWeights holds the end value, the rule above.
   for (const ColourMatchingSample& s : cie1931Observer()) {
-    const double lambda = s.wavelength_nm;
-    if (lambda <= wavelengths_nm[order.front()]) {
-      add(order.front(), 1.0, s);
-    } else if (lambda >= wavelengths_nm[order.back()]) {
-      add(order.back(), 1.0, s);
-    } else {
-      // The first sample above lambda and the one below it.
-      size_t above = 1;
-      while (wavelengths_nm[order[above]] < lambda) ++above;
-      const double low = wavelengths_nm[order[above - 1]];
-      const double high = wavelengths_nm[order[above]];
-      const double t = (lambda - low) / (high - low);
-      add(order[above - 1], 1.0 - t, s);
-      add(order[above], t, s);
-    }
+    const LinearWeights w = linearWeights(ascending_nm, s.wavelength_nm);
+    add(order[w.low], 1.0 - w.weight_high, s);
+    if (w.high != w.low) add(order[w.high], w.weight_high, s);
   }
 }
 

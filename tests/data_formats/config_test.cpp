@@ -6,6 +6,7 @@
 
 #include "data_formats/config.h"
 #include "data_formats/error.h"
+#include "expect_config_rejected.h"
 
 namespace skybake {
 namespace {
@@ -20,18 +21,8 @@ top_radius_m = 6420000.0
 irradiance = [1.8]
 )";
 
-// Parses `text` expecting a BadInput error whose message contains every
-// string in `fragments`.
 void expectRejected(const std::string& text, std::initializer_list<std::string> fragments) {
-  try {
-    parseConfig(text, "test.toml");
-    FAIL() << "accepted:\n" << text;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
-    const std::string message = e.what();
-    EXPECT_NE(message.find("test.toml"), std::string::npos) << message;
-    for (const std::string& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << message;
-  }
+  test::expectConfigRejected(text, fragments);
 }
 
 // kMinimal with `from` replaced by `to`.
@@ -56,7 +47,7 @@ TEST(Config, BuiltinEarthHasBrunetonValues) {
 }
 
 TEST(Config, PresetsLoad) {
-  for (const char* name : {"earth", "earth_hazy", "mars"}) {
+  for (const char* name : {"earth", "earth_hazy", "mars", "earth_spectral"}) {
     const BakeConfig c = loadConfigFile(std::string(SKYBAKE_SOURCE_DIR) + "/data_formats/presets/" + name + ".toml");
     EXPECT_EQ(c.name, name);
   }
@@ -286,7 +277,9 @@ TEST(Config, RejectsWrongTypesAndChannelCounts) {
                  {"planet.bottom_radius_m", "number"});
   expectRejected(edited("irradiance = [1.8]", "irradiance = [1.8, 1.9]"), {"sun.irradiance", "one per wavelength"});
   expectRejected(edited("wavelengths_nm = [550.0]", "wavelengths_nm = [400.0, 450.0, 500.0, 550.0, 600.0]"),
-                 {"channels.wavelengths_nm", "1 to 4"});
+                 {"channels.wavelengths_nm", "5 wavelengths", "at most 4"});
+  expectRejected(edited("wavelengths_nm = [550.0]", "wavelengths_nm = []"),
+                 {"channels.wavelengths_nm", "at least one wavelength"});
 }
 
 TEST(Config, MissingFileIsBadInput) {

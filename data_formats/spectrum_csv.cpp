@@ -1,0 +1,92 @@
+#include "spectrum_csv.h"
+
+#include <fstream>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "error.h"
+#include "text_numbers.h"
+
+namespace skybake {
+namespace {
+
+// A measured spectrum at 0.01 nm over 200 to 1100 nm is 90 000 lines, about
+// 2 MiB. A file far beyond that is not a spectrum (a device, a log, binary
+// data) and would otherwise be read whole into memory.
+constexpr std::uintmax_t kMaxSpectrumFileBytes = 64u << 20;
+
+// Linear interpolation needs a sample on each side of a wavelength.
+constexpr size_t kMinSpectrumSamples = 2;
+
+bool isBlank(std::string_view line) { return line.find_first_not_of(kCellBlanks) == std::string_view::npos; }
+
+}  // namespace
+
+TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) throwBadInput(fmt::format("{}: no such spectrum file", name));
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throwBadInput(fmt::format("{}: not a regular file, so not a spectrum CSV", name));
+  }
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (error || bytes > kMaxSpectrumFileBytes) {
+    throwBadInput(fmt::format("{}: larger than {} MiB: not a spectrum CSV", name, kMaxSpectrumFileBytes >> 20));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throwBadInput(fmt::format("{}: cannot open spectrum file", name));
+
+  TabulatedSpectrum spectrum;
+  std::string line;
+  int line_number = 0;
+  bool header_allowed = true;
+  int previous_line = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line_number == 1 && line.starts_with(kUtf8ByteOrderMark)) line.erase(0, kUtf8ByteOrderMark.size());
+    if (isBlank(line) || line[0] == '#') continue;
+    const size_t comma = line.find(',');
+    const std::string_view whole = trimmedCell(line);
+    if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos) {
+      throwBadInput(fmt::format("{}:{}: {}: needs two columns, wavelength_nm,value", name, line_number, whole));
+    }
+    const std::string_view wavelength_text = trimmedCell(std::string_view(line).substr(0, comma));
+    const std::string_view value_text = trimmedCell(std::string_view(line).substr(comma + 1));
+    double wavelength_nm = 0.0;
+    double value = 0.0;
+    const bool wavelength_ok = parseFiniteNumber(wavelength_text, wavelength_nm);
+    const bool value_ok = parseFiniteNumber(value_text, value);
+    if (header_allowed && !wavelength_ok && !value_ok) {  // column names
+      header_allowed = false;
+      continue;
+    }
+    header_allowed = false;
+    if (!wavelength_ok) {
+      throwBadInput(
+          fmt::format("{}:{}: wavelength {}: must be a finite number (nm)", name, line_number, wavelength_text));
+    }
+    if (!value_ok)
+      throwBadInput(fmt::format("{}:{}: value {}: must be a finite number", name, line_number, value_text));
+    if (!(wavelength_nm > 0.0)) {
+      throwBadInput(fmt::format("{}:{}: wavelength {} nm: must be > 0", name, line_number, wavelength_text));
+    }
+    if (!spectrum.wavelengths_nm.empty() && !(wavelength_nm > spectrum.wavelengths_nm.back())) {
+      throwBadInput(fmt::format("{}:{}: wavelength {} nm: {} line {}'s {} nm: wavelengths must increase down the file",
+                                name, line_number, wavelength_text,
+                                wavelength_nm == spectrum.wavelengths_nm.back() ? "repeats" : "is below", previous_line,
+                                spectrum.wavelengths_nm.back()));
+    }
+    spectrum.wavelengths_nm.push_back(wavelength_nm);
+    spectrum.values.push_back(value);
+    previous_line = line_number;
+  }
+  if (spectrum.wavelengths_nm.size() < kMinSpectrumSamples) {
+    throwBadInput(fmt::format("{}: {} samples: a spectrum needs at least {} (wavelength_nm,value lines)", name,
+                              spectrum.wavelengths_nm.size(), kMinSpectrumSamples));
+  }
+  return spectrum;
+}
+
+}  // namespace skybake
