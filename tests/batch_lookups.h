@@ -16,6 +16,18 @@ struct BatchLookup {
   RadianceAndTransmittance value;
 };
 
+// The views the batch tests look along: zenith 0 to 180 deg in 7.5 deg
+// steps (the horizon and both poles among them), azimuth in 45 deg steps;
+// `direction(zenith_deg, azimuth_deg)` makes each.
+template <typename Direction>
+std::vector<glm::dvec3> batchTestViews(Direction direction) {
+  std::vector<glm::dvec3> views;
+  for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(direction(zenith, azimuth));
+  }
+  return views;
+}
+
 inline std::vector<BatchLookup> lookUpBatch(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& sun,
                                             const std::vector<glm::dvec3>& views) {
   std::vector<float> x, y, z;

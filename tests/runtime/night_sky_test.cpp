@@ -225,11 +225,7 @@ TEST(NightSky, BatchLookupsEqualScalarLookupsBelowTheBakedSuns) {
   for (double sun_zenith : {105.0, 110.0, 115.0}) {
     for (double altitude : {0.0, 3e4}) {
       const glm::dvec3 camera = cameraAt(sky, altitude), sun = direction(sun_zenith, 10.0);
-      std::vector<glm::dvec3> views;
-      for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
-        for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(direction(zenith, azimuth));
-      }
-      for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, views)) {
+      for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, test::batchTestViews(direction))) {
         const RadianceAndTransmittance v = sky.skyRadiance(camera, l.view, sun);
         for (int c = 0; c < 3; ++c) {
           // As Sky.BatchLookupsEqualScalarLookups: float rounding, 1e-5, of

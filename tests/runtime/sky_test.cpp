@@ -444,11 +444,7 @@ TEST(Sky, BatchLookupsEqualScalarLookups) {
     for (const glm::dvec3 camera : {glm::dvec3(0.0, 0.0, bottom + 300.0), glm::dvec3(0.0, bottom + 31000.0, 0.0),
                                     glm::dvec3(0.0, 0.0, bottom - 50.0), glm::dvec3(0.0, 0.0, bottom + 400000.0)}) {
       const glm::dvec3 sun = direction(sun_zenith, 10.0);
-      std::vector<glm::dvec3> views;
-      for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
-        for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(direction(zenith, azimuth));
-      }
-      for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, views)) {
+      for (const test::BatchLookup& l : test::lookUpBatch(sky, camera, sun, test::batchTestViews(direction))) {
         const RadianceAndTransmittance v = sky.skyRadiance(camera, l.view, sun);
         for (int c = 0; c < 3; ++c) {
           EXPECT_NEAR(l.value.radiance[c], v.radiance[c], 1e-5f * v.radiance[c] + 1e-10f);
