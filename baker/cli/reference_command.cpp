@@ -24,7 +24,7 @@ namespace {
 // Core-seconds one Monte Carlo path of a reference query takes, averaged over
 // the standard query set (its twilight and space queries cost more than its
 // day queries): measured on a 2-core AMD EPYC (docs/MEASUREMENTS.md,
-// "Reference cost"). --estimate multiplies it by paths and queries; a
+// "Job resources"). --estimate multiplies it by paths and queries; a
 // cluster profile adds its own margin for slower or busier nodes.
 constexpr double kReferenceCoreSecondsPerPath = 2.1e-5;
 
@@ -73,9 +73,7 @@ void runReference(const ReferenceOptions& o) {
   const std::string source = o.source_path.empty() ? "<built-in earth>" : o.source_path;
   if (o.estimate) {
     const ReferenceCache cache(settings.cache_directory, a, settings.paths);
-    size_t missing = 0;
-    for (const RadianceQuery& q : queries.radiance) missing += !cache.find(radianceKey(q)).has_value();
-    for (const IrradianceQuery& q : queries.irradiance) missing += !cache.find(irradianceKey(q)).has_value();
+    const size_t missing = queriesMissingFromCache(cache, queries).size();
     const size_t total = queries.radiance.size() + queries.irradiance.size();
     const nlohmann::ordered_json j{
         {"source", source},

@@ -58,6 +58,17 @@ ReferenceSettings referenceSettings(int paths, const std::string& cache_dir, boo
   return settings;
 }
 
+std::vector<size_t> queriesMissingFromCache(const ReferenceCache& cache, const QuerySet& queries) {
+  std::vector<size_t> missing;
+  for (size_t i = 0; i < queries.radiance.size(); ++i) {
+    if (!cache.find(radianceKey(queries.radiance[i]))) missing.push_back(i);
+  }
+  for (size_t i = 0; i < queries.irradiance.size(); ++i) {
+    if (!cache.find(irradianceKey(queries.irradiance[i]))) missing.push_back(queries.radiance.size() + i);
+  }
+  return missing;
+}
+
 ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const QuerySet& queries,
                                        const ReferenceSettings& settings, ProgressSink& progress) {
   ReferenceCache cache(settings.cache_directory, a, settings.paths);
@@ -65,25 +76,14 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
   ReferenceValues out;
   out.radiance.resize(queries.radiance.size());
   out.irradiance.resize(queries.irradiance.size());
-  // The queries the cache does not hold: radiance queries by index, then
-  // irradiance queries by index + radiance count.
-  std::vector<size_t> missing;
+  const std::vector<size_t> missing = queriesMissingFromCache(cache, queries);
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
-    if (auto hit = cache.find(radianceKey(queries.radiance[i]))) {
-      out.radiance[i] = *hit;
-      ++out.cached;
-    } else {
-      missing.push_back(i);
-    }
+    if (auto hit = cache.find(radianceKey(queries.radiance[i]))) out.radiance[i] = *hit;
   }
   for (size_t i = 0; i < queries.irradiance.size(); ++i) {
-    if (auto hit = cache.find(irradianceKey(queries.irradiance[i]))) {
-      out.irradiance[i] = *hit;
-      ++out.cached;
-    } else {
-      missing.push_back(queries.radiance.size() + i);
-    }
+    if (auto hit = cache.find(irradianceKey(queries.irradiance[i]))) out.irradiance[i] = *hit;
   }
+  out.cached = static_cast<int>(queries.radiance.size() + queries.irradiance.size() - missing.size());
   auto compute = [&](size_t item) {
     if (item < queries.radiance.size()) {
       const RadianceQuery& q = queries.radiance[item];

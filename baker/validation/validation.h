@@ -46,6 +46,10 @@ struct ReferenceValues {
 std::string radianceKey(const RadianceQuery& query);
 std::string irradianceKey(const IrradianceQuery& query);
 
+// The queries of the set the cache does not hold: radiance queries by their
+// index, then irradiance queries by their index + the radiance count.
+std::vector<size_t> queriesMissingFromCache(const ReferenceCache& cache, const QuerySet& queries);
+
 // The reference is computed in batches of this many queries per thread: small
 // enough that a checkpoint comes soon after kReferenceCheckpointSeconds,
 // large enough that threads seldom wait for the batch's slowest query.
