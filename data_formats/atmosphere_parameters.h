@@ -29,8 +29,35 @@ struct DensityLayer {
 // Layers stacked from the ground up. Empty means density 0 everywhere.
 using DensityProfile = std::vector<DensityLayer>;
 
+// What a bake's channels hold ([channels] store in CONFIG.md, skybake:channels
+// in FORMAT.md).
+enum class ChannelKind {
+  // One channel per wavelength (1 to kMaxChannels): spectral radiance,
+  // W m^-2 sr^-1 nm^-1.
+  Wavelengths,
+  // Three channels X, Y, Z: the spectrum through the bake's wavelengths
+  // (piecewise linear, runtime/colour/spectral_to_xyz.h) integrated against
+  // the CIE 1931 colour-matching functions over nm, so radiance in
+  // W m^-2 sr^-1 and 683 * Y is luminance in cd m^-2.
+  CieXyz,
+};
+
+// The most wavelengths a colour bake integrates: 64 covers 360 to 830 nm
+// every 7.5 nm, finer than the smooth sky spectra need (Bruneton uses 15,
+// CalcMySky 16), while the bake's time (one pass per 4 wavelengths) stays
+// bounded: 16 passes of a 3-wavelength bake.
+inline constexpr int kMaxColourWavelengths = 64;
+
+// The XYZ channels of a colour bake.
+inline constexpr int kCieXyzChannels = 3;
+
 struct AtmosphereParameters {
-  std::vector<double> wavelengths_nm;  // 1..kMaxChannels, the channel order
+  // Wavelengths: the channels' wavelengths, 1..kMaxChannels, in channel
+  // order. CieXyz: the wavelengths integrated into X, Y, Z (1 to
+  // kMaxColourWavelengths); the per-channel quantities below then hold
+  // effective X, Y, Z values (runtime/colour/colour_bake_atmosphere.h).
+  std::vector<double> wavelengths_nm;
+  ChannelKind channel_kind = ChannelKind::Wavelengths;
 
   double bottom_radius_m = 0.0;  // planet surface
   double top_radius_m = 0.0;     // top of the atmosphere
@@ -51,7 +78,10 @@ struct AtmosphereParameters {
   Spectrum absorption_extinction{0.0f};  // m^-1 where density = 1
   DensityProfile absorption_density;
 
-  int channelCount() const { return static_cast<int>(wavelengths_nm.size()); }
+  int channelCount() const {
+    return channel_kind == ChannelKind::CieXyz ? kCieXyzChannels : static_cast<int>(wavelengths_nm.size());
+  }
+  bool storesCieXyz() const { return channel_kind == ChannelKind::CieXyz; }
   // Cosine of sun_max_zenith_deg: the mu_s at the low end of the scattering domain.
   double sunMuSMin() const { return std::cos(radiansFromDegrees(sun_max_zenith_deg)); }
   bool operator==(const AtmosphereParameters&) const = default;
@@ -133,7 +163,14 @@ struct SceneRanges {
 
 struct BakeConfig {
   std::string name = "custom";
+  // A colour bake (atmosphere.channel_kind CieXyz): wavelengths_nm and the
+  // shape of the atmosphere as parsed; its X, Y, Z quantities are filled by
+  // settledBakeConfig from the groups below (baker/bake/bake_policy.h).
   AtmosphereParameters atmosphere;
+  // A colour bake's wavelengths in groups of at most kMaxChannels, in the
+  // order of atmosphere.wavelengths_nm, each an ordinary per-wavelength
+  // atmosphere that the bake runs as one pass; empty otherwise.
+  std::vector<AtmosphereParameters> colour_groups;
   TextureSizes sizes;
   BakeSettings bake;
   SceneOutputs scene;

@@ -21,8 +21,10 @@ namespace skybake {
 // Bumped whenever the meaning of a part or attribute changes; readers refuse
 // versions they do not know. Version 3 names the optical-depth part for what
 // it holds and states everything a reader needs in typed attributes; version
-// 2 files are still read (FORMAT.md, "Version 2").
-inline constexpr int kBakeFormatVersion = 3;
+// 4 states what the channels hold (skybake:channels: wavelengths or CIE XYZ);
+// version 3 files (always wavelengths) and version 2 files are still read
+// (FORMAT.md, "Older versions").
+inline constexpr int kBakeFormatVersion = 4;
 inline constexpr int kOldestReadBakeFormatVersion = 2;
 
 struct BakeTables {
@@ -153,5 +155,9 @@ BakeFile readBakeFileFromMemory(std::span<const std::byte> bytes, const std::str
 // Channel name in the file for a wavelength: "680nm", "532p5nm" ('.' is the
 // EXR layer separator, so fractions use 'p').
 std::string channelName(double wavelength_nm);
+
+// The names of a bake's channels in the file, in channel order: each
+// wavelength's channelName, or "X", "Y", "Z" for a colour bake.
+std::vector<std::string> channelNames(const AtmosphereParameters& a);
 
 }  // namespace skybake

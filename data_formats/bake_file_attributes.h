@@ -22,6 +22,9 @@ inline constexpr const char* kAttrTableSize = "skybake:table_size";
 
 // The atmosphere (version 3): one attribute per parameter, named as its config key.
 inline constexpr const char* kAttrWavelengths = "skybake:wavelengths_nm";
+// Version 4: what the channels hold, "wavelengths" (one per entry of
+// skybake:wavelengths_nm) or "cie_xyz" (X, Y, Z integrated over them).
+inline constexpr const char* kAttrChannels = "skybake:channels";
 inline constexpr const char* kAttrBottomRadius = "skybake:bottom_radius_m";
 inline constexpr const char* kAttrTopRadius = "skybake:top_radius_m";
 inline constexpr const char* kAttrGroundAlbedo = "skybake:ground_albedo";

@@ -139,6 +139,7 @@ void insertContentsAttributes(const BakeContents& contents, Imf::Header& header)
   const AtmosphereParameters& a = contents.atmosphere;
   const int n = a.channelCount();
   header.insert(kAttrWavelengths, Imf::StringAttribute(numberListText(a.wavelengths_nm)));
+  header.insert(kAttrChannels, Imf::StringAttribute(a.storesCieXyz() ? "cie_xyz" : "wavelengths"));
   header.insert(kAttrBottomRadius, Imf::DoubleAttribute(a.bottom_radius_m));
   header.insert(kAttrTopRadius, Imf::DoubleAttribute(a.top_radius_m));
   header.insert(kAttrGroundAlbedo, Imf::FloatVectorAttribute(spectrumValues(a.ground_albedo, n)));
@@ -175,16 +176,27 @@ void insertContentsAttributes(const BakeContents& contents, Imf::Header& header)
   header.insert(kAttrScatteringGroundViews, Imf::IntAttribute(d.scattering_ground_views ? 1 : 0));
 }
 
-BakeContents readContentsAttributes(const Imf::Header& header, const std::function<void(const std::string&)>& fail) {
+BakeContents readContentsAttributes(const Imf::Header& header, int format_version,
+                                    const std::function<void(const std::string&)>& fail) {
   const AttributeReader in(header, fail);
   BakeContents c;
   AtmosphereParameters& a = c.atmosphere;
   a.wavelengths_nm = in.numbers(kAttrWavelengths);
-  const int n = a.channelCount();
-  if (n < 1 || n > kMaxChannels) {
-    in.failWith(
-        fmt::format("attribute {} lists {} wavelengths; a bake has 1 to {}", kAttrWavelengths, n, kMaxChannels));
+  if (format_version >= 4) {
+    const std::string& kind = in.value<Imf::StringAttribute>(kAttrChannels);
+    if (kind == "cie_xyz") {
+      a.channel_kind = ChannelKind::CieXyz;
+    } else if (kind != "wavelengths") {
+      in.failWith(fmt::format("attribute {} = \"{}\": must be \"wavelengths\" or \"cie_xyz\"", kAttrChannels, kind));
+    }
   }
+  const int wavelengths = static_cast<int>(a.wavelengths_nm.size());
+  const int max_wavelengths = a.storesCieXyz() ? kMaxColourWavelengths : kMaxChannels;
+  if (wavelengths < 1 || wavelengths > max_wavelengths) {
+    in.failWith(fmt::format("attribute {} lists {} wavelengths; a {} bake has 1 to {}", kAttrWavelengths, wavelengths,
+                            a.storesCieXyz() ? "colour" : "wavelength", max_wavelengths));
+  }
+  const int n = a.channelCount();
   a.bottom_radius_m = in.real(kAttrBottomRadius);
   a.top_radius_m = in.real(kAttrTopRadius);
   a.ground_albedo = in.spectrum(kAttrGroundAlbedo, n);

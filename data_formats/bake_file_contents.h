@@ -15,10 +15,13 @@ namespace skybake {
 // Adds every attribute that states `contents` to `header`.
 void insertContentsAttributes(const BakeContents& contents, Imf::Header& header);
 
-// Reads them back (format version 3). `fail` is called with a description of
-// the first missing, mistyped or malformed attribute and must not return.
-// The result is not yet checked for physical sense (validateContents).
-BakeContents readContentsAttributes(const Imf::Header& header, const std::function<void(const std::string&)>& fail);
+// Reads them back (format version 3 or later: `format_version` says whether
+// skybake:channels is there; version 3's channels are wavelengths). `fail` is
+// called with a description of the first missing, mistyped or malformed
+// attribute and must not return. The result is not yet checked for physical
+// sense (validateContents).
+BakeContents readContentsAttributes(const Imf::Header& header, int format_version,
+                                    const std::function<void(const std::string&)>& fail);
 
 // Refuses contents that no bake writes: the atmosphere and sizes as the
 // config check judges them, and a domain outside the atmosphere or with its

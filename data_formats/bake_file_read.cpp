@@ -107,8 +107,7 @@ class Reader {
                        window.min.x, window.min.y, width, height));
     }
     uint64_t bytes_per_texel = 0;
-    std::vector<std::string> channels;
-    for (int c = 0; c < a.channelCount(); ++c) channels.push_back(channelName(a.wavelengths_nm[c]));
+    std::vector<std::string> channels = channelNames(a);
     if (!extra_channel.empty()) channels.push_back(extra_channel);
     for (const std::string& channel : channels) {
       const Imf::Channel* found = h.channels().findChannel(channel);
@@ -135,8 +134,9 @@ class Reader {
     texels.assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
     Imf::FrameBuffer frame;
     char* base = reinterpret_cast<char*>(texels.data());
+    const std::vector<std::string> channel_names = channelNames(a);
     for (int c = 0; c < a.channelCount(); ++c) {
-      frame.insert(channelName(a.wavelengths_nm[c]),
+      frame.insert(channel_names[c],
                    Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum), sizeof(Spectrum) * part.width));
     }
     if (!part.extra_channel.empty()) {
@@ -244,7 +244,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
   }
   bake.report_json = in.attribute<Imf::StringAttribute>(first.index, kAttrBakeReport).value();
   if (first.version >= 3) {
-    bake.contents = readContentsAttributes(in.header(first.index), [&](const std::string& what) { in.fail(what); });
+    bake.contents = readContentsAttributes(in.header(first.index), first.version, [&](const std::string& what) { in.fail(what); });
     bake.contents.precision = in.storedPrecision();
     validateContents(bake.contents, source + " [header attributes]");
   } else {

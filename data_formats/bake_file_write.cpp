@@ -32,6 +32,13 @@ std::string channelName(double wavelength_nm) {
   return text + "nm";
 }
 
+std::vector<std::string> channelNames(const AtmosphereParameters& a) {
+  if (a.storesCieXyz()) return {"X", "Y", "Z"};
+  std::vector<std::string> names;
+  for (double wavelength : a.wavelengths_nm) names.push_back(channelName(wavelength));
+  return names;
+}
+
 namespace {
 
 using namespace bake_file;
@@ -69,9 +76,7 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imat
   header.setType(Imf::SCANLINEIMAGE);
   header.compression() = Imf::ZIP_COMPRESSION;
   const Imf::PixelType type = storedAsHalf(bake, part) ? Imf::HALF : Imf::FLOAT;
-  for (double wavelength : a.wavelengths_nm) {
-    header.channels().insert(channelName(wavelength), Imf::Channel(type));
-  }
+  for (const std::string& channel : channelNames(a)) header.channels().insert(channel, Imf::Channel(type));
   if (part.extra_texels != nullptr) header.channels().insert(part.extra_channel, Imf::Channel(type));
   header.insert(kAttrFormatVersion, Imf::IntAttribute(kBakeFormatVersion));
   header.insert(kAttrContent, Imf::StringAttribute(part.content));
@@ -93,6 +98,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
   for (const PartToWrite& part : parts) headers.push_back(makeHeader(bake, part, display_window));
   Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
   const int channels = bake.contents.atmosphere.channelCount();
+  const std::vector<std::string> channel_names = channelNames(bake.contents.atmosphere);
   for (size_t i = 0; i < parts.size(); ++i) {
     const PartToWrite& part = parts[i];
     const bool half = storedAsHalf(bake, part);
@@ -118,7 +124,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
     const size_t texel_bytes = value_bytes * kMaxChannels;
     const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
     for (int c = 0; c < channels; ++c) {
-      frame.insert(channelName(bake.contents.atmosphere.wavelengths_nm[c]),
+      frame.insert(channel_names[c],
                    Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
     }
     if (part.extra_texels != nullptr) {

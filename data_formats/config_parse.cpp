@@ -1,5 +1,6 @@
 // TOML -> BakeConfig. Every key the user writes is either understood or
 // rejected: a misspelt key silently ignored would bake the wrong sky.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -29,6 +30,46 @@ enum class PowerLawForm {
 // Rayleigh scattering by molecules much smaller than the wavelength goes as
 // lambda^-4; the default of rayleigh.scattering's `exponent`.
 constexpr double kRayleighExponent = 4.0;
+
+// The per-wavelength quantities of a config, one value per wavelength of
+// channels.wavelengths_nm.
+struct SpectralQuantities {
+  std::vector<double> ground_albedo, sun_irradiance, rayleigh_scattering, mie_scattering, mie_extinction,
+      absorption_extinction;
+};
+
+// Lanes 0.. of the atmosphere's quantities from wavelengths first .. first + count - 1.
+void setLanes(AtmosphereParameters& a, const SpectralQuantities& q, size_t first, size_t count) {
+  auto lanes = [&](const std::vector<double>& values) {
+    Spectrum s(0.0f);
+    for (size_t c = 0; c < count; ++c) s[static_cast<int>(c)] = static_cast<float>(values[first + c]);
+    return s;
+  };
+  a.ground_albedo = lanes(q.ground_albedo);
+  a.sun_irradiance = lanes(q.sun_irradiance);
+  a.rayleigh_scattering = lanes(q.rayleigh_scattering);
+  a.mie_scattering = lanes(q.mie_scattering);
+  a.mie_extinction = lanes(q.mie_extinction);
+  a.absorption_extinction = lanes(q.absorption_extinction);
+}
+
+// A colour bake's passes: its wavelengths in order, kMaxChannels at a time
+// (the last group holds the rest), each an ordinary per-wavelength
+// atmosphere of the same shape.
+std::vector<AtmosphereParameters> colourGroups(const AtmosphereParameters& colour, const SpectralQuantities& q) {
+  std::vector<AtmosphereParameters> groups;
+  const size_t n = colour.wavelengths_nm.size();
+  for (size_t first = 0; first < n; first += kMaxChannels) {
+    const size_t count = std::min<size_t>(kMaxChannels, n - first);
+    AtmosphereParameters g = colour;
+    g.channel_kind = ChannelKind::Wavelengths;
+    g.wavelengths_nm.assign(colour.wavelengths_nm.begin() + static_cast<std::ptrdiff_t>(first),
+                            colour.wavelengths_nm.begin() + static_cast<std::ptrdiff_t>(first + count));
+    setLanes(g, q, first, count);
+    groups.push_back(std::move(g));
+  }
+  return groups;
+}
 
 class ConfigReader {
  public:
@@ -112,9 +153,15 @@ class ConfigReader {
 
   // The bake's wavelengths: a list of numbers, or { min_nm, max_nm, count }
   // evenly spaced with both ends included. Refuses more than one bake file
-  // holds.
-  std::vector<double> wavelengths(const toml::node& node, const std::string& name) const {
-    auto refuseMoreThanAFileHolds = [&](size_t count) {
+  // holds as channels, or, for a colour bake, more than it integrates.
+  std::vector<double> wavelengths(const toml::node& node, const std::string& name, bool colour) const {
+    auto refuseTooMany = [&](size_t count) {
+      if (colour) {
+        if (count <= static_cast<size_t>(kMaxColourWavelengths)) return;
+        fail(&node, name, describe(node),
+             fmt::format("{} wavelengths, but a colour bake (channels.store = \"cie_xyz\") integrates at most {}",
+                         count, kMaxColourWavelengths));
+      }
       if (count <= static_cast<size_t>(kMaxChannels)) return;
       fail(&node, name, describe(node),
            fmt::format("{} wavelengths, but one bake file holds at most {}: bake several files of at most {} "
@@ -138,13 +185,13 @@ class ConfigReader {
         fail(&node, name, describe(node), "needs 0 < min_nm < max_nm");
       }
       // Before the wavelengths are made: a count of a billion would not fit in memory.
-      refuseMoreThanAFileHolds(static_cast<size_t>(count));
+      refuseTooMany(static_cast<size_t>(count));
       out = evenlySpacedWavelengths(min_nm, max_nm, count);
     } else {
       out = numbers(node, name);
       if (out.empty()) fail(&node, name, describe(node), "needs at least one wavelength");
     }
-    refuseMoreThanAFileHolds(out.size());
+    refuseTooMany(out.size());
     return out;
   }
 
@@ -152,19 +199,16 @@ class ConfigReader {
   // (one number per wavelength, in their order) or a table giving a spectrum
   // that is read at each wavelength (CONFIG.md, "Spectra"). Absent: the
   // fallback, or an error when required.
-  Spectrum spectrum(const toml::table& t, const std::string& prefix, std::string_view key, bool required,
-                    const std::vector<double>& wavelengths_nm, Spectrum fallback,
-                    PowerLawForm power_law = PowerLawForm::None, bool cross_section = false) const {
+  std::vector<double> spectrum(const toml::table& t, const std::string& prefix, std::string_view key, bool required,
+                               const std::vector<double>& wavelengths_nm, const std::vector<double>& fallback,
+                               PowerLawForm power_law = PowerLawForm::None, bool cross_section = false) const {
     const toml::node* node = t.get(key);
     const std::string name = prefix + std::string(key);
     if (node == nullptr) {
       if (required) fail(nullptr, name, "", "missing required key");
       return fallback;
     }
-    const std::vector<double> values = perWavelength(*node, name, wavelengths_nm, power_law, cross_section);
-    Spectrum s(0.0f);
-    for (size_t c = 0; c < values.size(); ++c) s[static_cast<int>(c)] = static_cast<float>(values[c]);
-    return s;
+    return perWavelength(*node, name, wavelengths_nm, power_law, cross_section);
   }
 
   std::vector<double> perWavelength(const toml::node& node, const std::string& name,
@@ -344,43 +388,60 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
   }
 
   const toml::table* channels = in.table(root, "", "channels", true);
-  in.rejectUnknownKeys(*channels, "channels.", {"wavelengths_nm"});
+  in.rejectUnknownKeys(*channels, "channels.", {"wavelengths_nm", "store"});
+  if (const toml::node* store = channels->get("store")) {
+    const auto text = store->as_string();
+    const char* kExpected = "must be \"wavelengths\" (one channel per wavelength) or \"cie_xyz\" (X, Y, Z)";
+    if (!text) in.fail(store, "channels.store", ConfigReader::describe(*store), kExpected);
+    if (text->get() == "cie_xyz") {
+      a.channel_kind = ChannelKind::CieXyz;
+    } else if (text->get() != "wavelengths") {
+      in.fail(store, "channels.store", ConfigReader::describe(*store), kExpected);
+    }
+  }
   const toml::node* wl = channels->get("wavelengths_nm");
   if (wl == nullptr) in.fail(nullptr, "channels.wavelengths_nm", "", "missing required key");
-  a.wavelengths_nm = in.wavelengths(*wl, "channels.wavelengths_nm");
+  a.wavelengths_nm = in.wavelengths(*wl, "channels.wavelengths_nm", a.storesCieXyz());
   const std::vector<double>& n = a.wavelengths_nm;
+  const std::vector<double> zeros(n.size(), 0.0);
+  SpectralQuantities q;
 
   const toml::table* planet = in.table(root, "", "planet", true);
   in.rejectUnknownKeys(*planet, "planet.", {"bottom_radius_m", "top_radius_m", "ground_albedo"});
   in.number(*planet, "planet.", "bottom_radius_m", true, a.bottom_radius_m);
   in.number(*planet, "planet.", "top_radius_m", true, a.top_radius_m);
-  a.ground_albedo = in.spectrum(*planet, "planet.", "ground_albedo", false, n, Spectrum(0.0f));
+  q.ground_albedo = in.spectrum(*planet, "planet.", "ground_albedo", false, n, zeros);
 
   const toml::table* sun = in.table(root, "", "sun", true);
   in.rejectUnknownKeys(*sun, "sun.", {"irradiance", "angular_radius_rad", "max_zenith_deg"});
-  a.sun_irradiance = in.spectrum(*sun, "sun.", "irradiance", true, n, Spectrum(0.0f));
+  q.sun_irradiance = in.spectrum(*sun, "sun.", "irradiance", true, n, zeros);
   a.sun_angular_radius_rad = 0.004675;
   in.number(*sun, "sun.", "angular_radius_rad", false, a.sun_angular_radius_rad);
   in.number(*sun, "sun.", "max_zenith_deg", false, a.sun_max_zenith_deg);
 
+  q.rayleigh_scattering = q.mie_scattering = q.mie_extinction = q.absorption_extinction = zeros;
   if (const toml::table* t = in.table(root, "", "rayleigh", false)) {
     in.rejectUnknownKeys(*t, "rayleigh.", {"scattering", "density"});
-    a.rayleigh_scattering = in.spectrum(*t, "rayleigh.", "scattering", true, n, Spectrum(0.0f), PowerLawForm::Exponent);
+    q.rayleigh_scattering = in.spectrum(*t, "rayleigh.", "scattering", true, n, zeros, PowerLawForm::Exponent);
     a.rayleigh_density = in.density(*t, "rayleigh.");
   }
   if (const toml::table* t = in.table(root, "", "mie", false)) {
     in.rejectUnknownKeys(*t, "mie.", {"scattering", "extinction", "phase_g", "density"});
-    a.mie_scattering = in.spectrum(*t, "mie.", "scattering", true, n, Spectrum(0.0f), PowerLawForm::AngstromExponent);
-    a.mie_extinction =
-        in.spectrum(*t, "mie.", "extinction", false, n, a.mie_scattering, PowerLawForm::AngstromExponent);
+    q.mie_scattering = in.spectrum(*t, "mie.", "scattering", true, n, zeros, PowerLawForm::AngstromExponent);
+    q.mie_extinction =
+        in.spectrum(*t, "mie.", "extinction", false, n, q.mie_scattering, PowerLawForm::AngstromExponent);
     in.number(*t, "mie.", "phase_g", true, a.mie_phase_g);
     a.mie_density = in.density(*t, "mie.");
   }
   if (const toml::table* t = in.table(root, "", "absorption", false)) {
     in.rejectUnknownKeys(*t, "absorption.", {"extinction", "density"});
-    a.absorption_extinction =
-        in.spectrum(*t, "absorption.", "extinction", true, n, Spectrum(0.0f), PowerLawForm::None, true);
+    q.absorption_extinction = in.spectrum(*t, "absorption.", "extinction", true, n, zeros, PowerLawForm::None, true);
     a.absorption_density = in.density(*t, "absorption.");
+  }
+  if (a.storesCieXyz()) {
+    config.colour_groups = colourGroups(a, q);
+  } else {
+    setLanes(a, q, 0, n.size());
   }
 
   if (const toml::table* t = in.table(root, "", "resolution", false)) {

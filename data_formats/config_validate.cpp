@@ -128,17 +128,55 @@ void checkFloatRange(const Checker& check, const AtmosphereParameters& a) {
   }
 }
 
+// A colour bake's passes (BakeConfig::colour_groups), when the config has
+// them (a config read back from a file's header has only its X, Y, Z
+// atmosphere): each an ordinary atmosphere of the colour bake's shape,
+// together its wavelengths in order.
+void validateColourGroups(const BakeConfig& config, const Checker& check, const std::string& source) {
+  const AtmosphereParameters& a = config.atmosphere;
+  if (config.colour_groups.empty()) return;
+  std::vector<double> grouped_nm;
+  for (const AtmosphereParameters& g : config.colour_groups) {
+    AtmosphereParameters shape = g;
+    shape.channel_kind = ChannelKind::CieXyz;
+    shape.wavelengths_nm = a.wavelengths_nm;
+    shape.ground_albedo = a.ground_albedo;
+    shape.sun_irradiance = a.sun_irradiance;
+    shape.rayleigh_scattering = a.rayleigh_scattering;
+    shape.mie_scattering = a.mie_scattering;
+    shape.mie_extinction = a.mie_extinction;
+    shape.absorption_extinction = a.absorption_extinction;
+    if (g.storesCieXyz() || !(shape == a)) {
+      throw Error(ErrorKind::Internal, fmt::format("{}: a colour bake's wavelength group differs from its "
+                                                   "atmosphere in more than its per-wavelength quantities",
+                                                   source));
+    }
+    grouped_nm.insert(grouped_nm.end(), g.wavelengths_nm.begin(), g.wavelengths_nm.end());
+    BakeConfig pass = config;
+    pass.atmosphere = g;
+    pass.colour_groups.clear();
+    validateConfig(pass, source);
+  }
+  if (grouped_nm != a.wavelengths_nm) {
+    check.fail("channels.wavelengths_nm", fmt::format("{} values", a.wavelengths_nm.size()),
+               "differs from the wavelengths of the colour bake's passes");
+  }
+}
+
 }  // namespace
 
 void validateConfig(const BakeConfig& config, const std::string& source) {
   const Checker check(source);
   const AtmosphereParameters& a = config.atmosphere;
   const int n = a.channelCount();
-  if (n < 1 || n > kMaxChannels) {
-    check.fail("channels.wavelengths_nm", fmt::format("{} values", n),
-               fmt::format("needs 1 to {} wavelengths", kMaxChannels));
+  const int wavelengths = static_cast<int>(a.wavelengths_nm.size());
+  const int max_wavelengths = a.storesCieXyz() ? kMaxColourWavelengths : kMaxChannels;
+  if (wavelengths < 1 || wavelengths > max_wavelengths) {
+    check.fail("channels.wavelengths_nm", fmt::format("{} values", wavelengths),
+               fmt::format("needs 1 to {} wavelengths{}", max_wavelengths,
+                           a.storesCieXyz() ? " in a colour bake (channels.store = \"cie_xyz\")" : ""));
   }
-  for (int c = 0; c < n; ++c) {
+  for (int c = 0; c < wavelengths; ++c) {
     const std::string key = fmt::format("channels.wavelengths_nm[{}]", c);
     check.finite(key, a.wavelengths_nm[c]);
     if (a.wavelengths_nm[c] <= 0.0) check.fail(key, fmt::format("{}", a.wavelengths_nm[c]), "must be > 0");
@@ -233,8 +271,16 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
     }
   }
 
+  if (a.storesCieXyz()) validateColourGroups(config, check, source);
+
   bool has_mie = false;
   for (int c = 0; c < n; ++c) has_mie = has_mie || a.mie_scattering[c] > 0.0f;
+  if (config.bake.combined_single_mie && a.storesCieXyz()) {
+    check.fail("bake.combined_single_mie", "true",
+               "needs wavelength channels: it rebuilds single Mie scattering from Rayleigh's spectral shape "
+               "across the channels, which X, Y and Z (each a band over the whole visible range) do not have; "
+               "leave it out of a colour bake (channels.store = \"cie_xyz\")");
+  }
   if (config.bake.combined_single_mie && has_mie) {
     if (n >= kMaxChannels) {
       check.fail("bake.combined_single_mie", "true",

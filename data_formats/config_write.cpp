@@ -26,6 +26,25 @@ std::string spectrumList(const Spectrum& s, int n) {
   return out + "]";
 }
 
+// A per-wavelength quantity of every wavelength: the channels' lanes, or a
+// colour bake's groups' lanes one after the other.
+template <typename Quantity>
+std::string perWavelengthList(const BakeConfig& config, Quantity quantity) {
+  if (!config.atmosphere.storesCieXyz()) {
+    return spectrumList(quantity(config.atmosphere), config.atmosphere.channelCount());
+  }
+  std::string out = "[";
+  bool first = true;
+  for (const AtmosphereParameters& g : config.colour_groups) {
+    const Spectrum s = quantity(g);
+    for (int c = 0; c < g.channelCount(); ++c) {
+      out += fmt::format("{}{}", first ? "" : ", ", numberText(s[c]));
+      first = false;
+    }
+  }
+  return out + "]";
+}
+
 std::string profileList(const DensityProfile& layers) {
   std::string out = "[";
   for (size_t i = 0; i < layers.size(); ++i) {
@@ -57,10 +76,17 @@ std::string sceneTable(const SceneOutputs& scene, const SceneRanges& ranges) {
 
 std::string configToToml(const BakeConfig& config) {
   const AtmosphereParameters& a = config.atmosphere;
-  const int n = a.channelCount();
   std::string wavelengths = "[";
-  for (int c = 0; c < n; ++c) wavelengths += fmt::format("{}{}", c ? ", " : "", numberText(a.wavelengths_nm[c]));
+  for (size_t c = 0; c < a.wavelengths_nm.size(); ++c) {
+    wavelengths += fmt::format("{}{}", c ? ", " : "", numberText(a.wavelengths_nm[c]));
+  }
   wavelengths += "]";
+  // Written only for colour bakes, so that wavelength bakes keep their
+  // canonical text (and the reference cache keys hashed from it).
+  if (a.storesCieXyz()) wavelengths += "\nstore = \"cie_xyz\"";
+  auto list = [&](Spectrum AtmosphereParameters::*quantity) {
+    return perWavelengthList(config, [&](const AtmosphereParameters& p) { return p.*quantity; });
+  };
   const TextureSizes& s = config.sizes;
   std::string name;
   for (char ch : config.name) {  // TOML basic string escaping
@@ -84,11 +110,13 @@ std::string configToToml(const BakeConfig& config) {
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
       "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n{}\n"
       "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}{}",
-      name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m), spectrumList(a.ground_albedo, n),
-      spectrumList(a.sun_irradiance, n), numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
-      spectrumList(a.rayleigh_scattering, n), profileList(a.rayleigh_density), spectrumList(a.mie_scattering, n),
-      spectrumList(a.mie_extinction, n), numberText(a.mie_phase_g), profileList(a.mie_density),
-      spectrumList(a.absorption_extinction, n), profileList(a.absorption_density), s.transmittance_mu,
+      name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
+      list(&AtmosphereParameters::ground_albedo), list(&AtmosphereParameters::sun_irradiance),
+      numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
+      list(&AtmosphereParameters::rayleigh_scattering), profileList(a.rayleigh_density),
+      list(&AtmosphereParameters::mie_scattering), list(&AtmosphereParameters::mie_extinction),
+      numberText(a.mie_phase_g), profileList(a.mie_density), list(&AtmosphereParameters::absorption_extinction),
+      profileList(a.absorption_density), s.transmittance_mu,
       s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r, s.scattering_mu, s.scattering_mu_s,
       s.scattering_nu,
       s.iteration ? fmt::format("iteration = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n", (*s.iteration)[0],

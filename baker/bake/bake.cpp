@@ -20,6 +20,8 @@
 #include <fmt/format.h>
 
 #include "baker/bake/bake_policy.h"
+#include "baker/bake/colour_bake.h"
+#include "data_formats/error.h"
 #include "data_formats/config.h"
 
 namespace skybake {
@@ -184,6 +186,14 @@ class StageRunner {
 
 BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink& progress) {
   const BakeConfig config = settledBakeConfig(requested);
+  if (config.atmosphere.storesCieXyz()) return bakeCieXyz(config, threads, progress);
+  return bakeWavelengthPass(config, threads, progress);
+}
+
+BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSink& progress) {
+  if (config.atmosphere.storesCieXyz()) {
+    throw Error(ErrorKind::Internal, "bakeWavelengthPass: a colour bake's config (bake each wavelength group)");
+  }
   const ScopedOpenMpThreads thread_count(threads);
   BakeOutput out;
   BakeReport& report = out.report;

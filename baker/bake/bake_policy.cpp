@@ -1,5 +1,7 @@
 #include "baker/bake/bake_policy.h"
 
+#include "runtime/colour/colour_bake_weights.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -78,6 +80,10 @@ bool sunRangeNarrowsAxis(const BakeConfig& config) {
 }  // namespace
 
 BakeConfig settledBakeConfig(BakeConfig config) {
+  if (config.atmosphere.storesCieXyz() && !config.colour_groups.empty()) {
+    config.atmosphere =
+        colour::ColourBakeWeights(config.colour_groups).cieXyzAtmosphere(config.atmosphere, config.colour_groups);
+  }
   SceneRanges& scene = config.scene_ranges;
   if (scene.sun_zenith_deg && !sunRangeNarrowsAxis(config)) scene.sun_zenith_deg.reset();
   if (sceneDomain(config).narrowed() && !config.sizes.iteration) {

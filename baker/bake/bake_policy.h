@@ -27,7 +27,9 @@ TextureSizes iterationTextureSizes(const BakeConfig& config);
 // narrows the domain gets its resolution.iteration written out: the default
 // scattering sizes, with the stored tables' mu_s where the sun axis stays
 // whole and that is larger, so that the stored tables' sun texels are the
-// iteration's. bakeAtmosphere settles its config this way.
+// iteration's. A colour bake's atmosphere gets its X, Y, Z quantities from
+// its wavelength groups (runtime/colour/colour_bake_weights.h).
+// bakeAtmosphere settles its config this way.
 BakeConfig settledBakeConfig(BakeConfig config);
 
 // What the file of a bake of `settled` (settledBakeConfig) states about its

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "data_formats/error.h"
 
 namespace skybake {
@@ -65,6 +67,22 @@ void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4
   forEachTexel(sampler, layout, [&](int i_r, int i_mu, int i_mu_s, int i_nu, double nu) {
     sum.at(i_r, i_mu, i_mu_s, i_nu) +=
         delta.at(i_r, i_mu, i_mu_s, i_nu) * scale * from(from_weight[i_r], nu) / to(to_weight[i_r], nu);
+  });
+}
+
+void addMixedReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
+                      const MultipleScatteringPhase& from, const MultipleScatteringPhase& to,
+                      const std::array<Spectrum, kMaxChannels>& mix, Texture4D& sum) {
+  if (sum.texels.size() != delta.texels.size()) {
+    throw Error(ErrorKind::Internal, "addMixedReshaped: tables of different sizes");
+  }
+  const std::vector<SpectrumD> from_weight = peakWeightsOfRows(sampler, from);
+  const std::vector<SpectrumD> to_weight = peakWeightsOfRows(sampler, to);
+  forEachTexel(sampler, layout, [&](int i_r, int i_mu, int i_mu_s, int i_nu, double nu) {
+    const Spectrum radiance = delta.at(i_r, i_mu, i_mu_s, i_nu) * from(from_weight[i_r], nu);
+    const Spectrum divisor = to(to_weight[i_r], nu);  // > 0 in every lane
+    Spectrum& out = sum.at(i_r, i_mu, i_mu_s, i_nu);
+    for (int c = 0; c < kMaxChannels; ++c) out[c] += glm::dot(mix[c], radiance) / divisor[c];
   });
 }
 

@@ -4,6 +4,8 @@
 // the nu each was computed for.
 #pragma once
 
+#include <array>
+
 #include "baker/stages/stage_context.h"
 #include "data_formats/textures.h"
 #include "runtime/multiple_scattering_phase.h"
@@ -23,5 +25,14 @@ Spectrum meanShapedRadiance(const TableSampler& sampler, const Texture4D& table,
 void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
                  const MultipleScatteringPhase& from, const MultipleScatteringPhase& to, const Spectrum& scale,
                  Texture4D& sum);
+
+// sum[c] += sum over lanes l of mix[c][l] * delta[l] * from[l] / to[c] at
+// every texel: a table of one set of channels divided by its shape `from`
+// added, mixed linearly, into a table of other channels divided by `to` (a
+// colour bake's wavelengths into X, Y, Z). Exact at the texels whatever the
+// shapes are (the file's shape is multiplied back at the same r and nu).
+void addMixedReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
+                      const MultipleScatteringPhase& from, const MultipleScatteringPhase& to,
+                      const std::array<Spectrum, kMaxChannels>& mix, Texture4D& sum);
 
 }  // namespace skybake
