@@ -244,7 +244,8 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
   }
   bake.report_json = in.attribute<Imf::StringAttribute>(first.index, kAttrBakeReport).value();
   if (first.version >= 3) {
-    bake.contents = readContentsAttributes(in.header(first.index), first.version, [&](const std::string& what) { in.fail(what); });
+    bake.contents =
+        readContentsAttributes(in.header(first.index), first.version, [&](const std::string& what) { in.fail(what); });
     bake.contents.precision = in.storedPrecision();
     validateContents(bake.contents, source + " [header attributes]");
   } else {

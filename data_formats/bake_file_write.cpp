@@ -124,8 +124,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
     const size_t texel_bytes = value_bytes * kMaxChannels;
     const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
     for (int c = 0; c < channels; ++c) {
-      frame.insert(channel_names[c],
-                   Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
+      frame.insert(channel_names[c], Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
     }
     if (part.extra_texels != nullptr) {
       frame.insert(part.extra_channel,

@@ -116,9 +116,8 @@ std::string configToToml(const BakeConfig& config) {
       list(&AtmosphereParameters::rayleigh_scattering), profileList(a.rayleigh_density),
       list(&AtmosphereParameters::mie_scattering), list(&AtmosphereParameters::mie_extinction),
       numberText(a.mie_phase_g), profileList(a.mie_density), list(&AtmosphereParameters::absorption_extinction),
-      profileList(a.absorption_density), s.transmittance_mu,
-      s.transmittance_r, s.irradiance_mu_s, s.irradiance_r, s.scattering_r, s.scattering_mu, s.scattering_mu_s,
-      s.scattering_nu,
+      profileList(a.absorption_density), s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r,
+      s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
       s.iteration ? fmt::format("iteration = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n", (*s.iteration)[0],
                                 (*s.iteration)[1], (*s.iteration)[2], (*s.iteration)[3])
                   : std::string(),

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 
+#include "runtime/colour/channel_luminance.h"
+
 namespace skybake {
 namespace {
 
@@ -50,6 +52,9 @@ Sky Sky::load(const std::filesystem::path& path) { return Sky(readBakeFile(path)
 
 Sky::Sky(BakeFile bake)
     : bake_(std::move(bake)),
+      channels_{bake_.contents.atmosphere.channel_kind, channelNames(bake_.contents.atmosphere),
+                bake_.contents.atmosphere.wavelengths_nm},
+      luminance_weights_(colour::luminanceWeights(bake_.contents.atmosphere)),
       sampler_(bake_.contents.domain, bake_.contents.sizes,
                nightContinuationOf(bake_.contents.domain, bake_.tables.irradiance)),
       multiple_shape_(bake_.contents.atmosphere),
@@ -57,6 +62,12 @@ Sky::Sky(BakeFile bake)
       ranges_(bakedRangesOf(sampler_.domain())),
       baked_mu_s_min_(std::cos(radiansFromDegrees(ranges_.sun_zenith_max_deg))),
       baked_mu_s_max_(std::cos(radiansFromDegrees(ranges_.sun_zenith_min_deg))) {}
+
+double Sky::luminance(const Spectrum& value) const {
+  double sum = 0.0;
+  for (int c = 0; c < channelCount(); ++c) sum += static_cast<double>(luminance_weights_[c]) * value[c];
+  return sum;
+}
 
 SunlitRay Sky::withBakedSun(const SunlitRay& ray) const {
   SunlitRay baked = ray;

@@ -36,6 +36,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -93,6 +95,17 @@ struct SpectrumBatch {
   float* channel[kMaxChannels];
 };
 
+// What a bake's channels hold (skybake:channels in FORMAT.md).
+struct BakeChannels {
+  ChannelKind kind = ChannelKind::Wavelengths;
+  // The channels' names in the file, in channel order: "440nm", ... or
+  // "X", "Y", "Z".
+  std::vector<std::string> names;
+  // Wavelengths: each channel's wavelength. CieXyz: the wavelengths
+  // integrated into X, Y, Z.
+  std::vector<double> wavelengths_nm;
+};
+
 class Sky {
  public:
   // Reads a bake file. Throws Error(BadInput) for a missing, truncated,
@@ -104,6 +117,17 @@ class Sky {
   const BakeContents& contents() const { return bake_.contents; }
   const AtmosphereParameters& atmosphere() const { return bake_.contents.atmosphere; }
   int channelCount() const { return atmosphere().channelCount(); }
+  // What the channels hold: wavelengths (spectral radiance, W m^-2 sr^-1
+  // nm^-1) or CIE X, Y, Z (W m^-2 sr^-1; 683 Y is luminance).
+  const BakeChannels& channels() const { return channels_; }
+  // Luminance (cd m^-2) of a radiance this bake returns; illuminance (lx) of
+  // an irradiance. XYZ: 683 Y; wavelengths: through the CIE 1931
+  // colour-matching functions as `skybake render` converts them
+  // (runtime/colour/channel_luminance.h).
+  double luminance(const Spectrum& value) const;
+  // The weights behind luminance(): cd m^-2 per unit of each channel (0 past
+  // channelCount()), for callers (and shaders) that weight lanes themselves.
+  const Spectrum& luminanceWeights() const { return luminance_weights_; }
   int orders() const { return bake_.orders_computed; }
   // The bake report the file carries (JSON text, opaque to lookups).
   const std::string& bakeReportJson() const { return bake_.report_json; }
@@ -197,6 +221,8 @@ class Sky {
                                          SingleScattering& s) const;
 
   BakeFile bake_;
+  BakeChannels channels_;
+  Spectrum luminance_weights_;
   TableSampler sampler_;
   MultipleScatteringPhase multiple_shape_;  // what multiple scattering is stored divided by
   CornetteShanksPhase mie_phase_;           // the atmosphere's Mie phase function

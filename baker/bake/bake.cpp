@@ -21,8 +21,8 @@
 
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/colour_bake.h"
-#include "data_formats/error.h"
 #include "data_formats/config.h"
+#include "data_formats/error.h"
 
 namespace skybake {
 namespace {

@@ -89,8 +89,8 @@ void addPassReport(const BakeReport& pass, const std::array<Spectrum, kMaxChanne
   report.tail.applied = (index == 0 || report.tail.applied) && pass.tail.applied;
   std::string wavelengths;
   for (double nm : pass_wavelengths_nm) wavelengths += fmt::format("{}{}", wavelengths.empty() ? "" : " ", nm);
-  report.tail.reason += fmt::format("{}pass {} ({} nm): {}", index == 0 ? "" : "; ", index + 1, wavelengths,
-                                    pass.tail.reason);
+  report.tail.reason +=
+      fmt::format("{}pass {} ({} nm): {}", index == 0 ? "" : "; ", index + 1, wavelengths, pass.tail.reason);
 }
 
 }  // namespace

@@ -62,7 +62,12 @@ void runInfo(const std::string& path) {
   fmt::print("atmosphere:    {}\n", terminalSafe(made_from.name));
   std::string wavelengths;
   for (double w : c.atmosphere.wavelengths_nm) wavelengths += fmt::format("{} nm  ", w);
-  fmt::print("channels:      {}\n", wavelengths);
+  if (c.atmosphere.storesCieXyz()) {
+    fmt::print("channels:      X Y Z (CIE 1931 2 deg, W m^-2 sr^-1; 683 Y is luminance in cd m^-2)\n");
+    fmt::print("integrated:    {} wavelengths: {}\n", c.atmosphere.wavelengths_nm.size(), wavelengths);
+  } else {
+    fmt::print("channels:      {}\n", wavelengths);
+  }
   fmt::print("radii:         bottom {} m, top {} m\n", c.atmosphere.bottom_radius_m, c.atmosphere.top_radius_m);
   fmt::print("sun domain:    zenith 0 to {} deg\n", c.atmosphere.sun_max_zenith_deg);
   fmt::print("orders:        {}\n", bake.orders_computed);

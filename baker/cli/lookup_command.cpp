@@ -21,14 +21,21 @@ struct LookupOptions {
   std::string output_path;  // empty: stdout
 };
 
-// "680" for 680 nm: the column suffix for a channel.
-std::string wavelengthLabel(double wavelength_nm) { return fmt::format("{}", wavelength_nm); }
+// The column suffixes of the channels: "680" for 680 nm, or X, Y, Z for a
+// colour bake.
+std::vector<std::string> channelLabels(const Sky& sky) {
+  if (sky.channels().kind == ChannelKind::CieXyz) return sky.channels().names;
+  std::vector<std::string> labels;
+  for (double w : sky.channels().wavelengths_nm) labels.push_back(fmt::format("{}", w));
+  return labels;
+}
 
 std::string headerWith(const CsvReader& q, const Sky& sky, std::initializer_list<const char*> prefixes) {
   std::string header;
   for (const std::string& c : q.columns()) header += (header.empty() ? "" : ",") + c;
+  const std::vector<std::string> labels = channelLabels(sky);
   for (const char* prefix : prefixes) {
-    for (double w : sky.atmosphere().wavelengths_nm) header += fmt::format(",{}_{}", prefix, wavelengthLabel(w));
+    for (const std::string& label : labels) header += fmt::format(",{}_{}", prefix, label);
   }
   return header + "\n";
 }

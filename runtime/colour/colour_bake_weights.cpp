@@ -10,7 +10,8 @@ namespace skybake::colour {
 namespace {
 
 // Each wavelength's value of a per-wavelength quantity, in wavelength order.
-std::vector<double> valuesOf(const std::vector<AtmosphereParameters>& groups, Spectrum AtmosphereParameters::*quantity) {
+std::vector<double> valuesOf(const std::vector<AtmosphereParameters>& groups,
+                             Spectrum AtmosphereParameters::*quantity) {
   std::vector<double> values;
   for (const AtmosphereParameters& g : groups) {
     for (int l = 0; l < g.channelCount(); ++l) values.push_back((g.*quantity)[l]);

@@ -47,7 +47,7 @@ TEST(Config, BuiltinEarthHasBrunetonValues) {
 }
 
 TEST(Config, PresetsLoad) {
-  for (const char* name : {"earth", "earth_hazy", "mars", "earth_spectral"}) {
+  for (const char* name : {"earth", "earth_hazy", "mars", "earth_spectral", "earth_colour"}) {
     const BakeConfig c = loadConfigFile(std::string(SKYBAKE_SOURCE_DIR) + "/data_formats/presets/" + name + ".toml");
     EXPECT_EQ(c.name, name);
   }

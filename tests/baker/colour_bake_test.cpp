@@ -1,0 +1,287 @@
+// Colour bakes (channels.store = "cie_xyz"): the XYZ tables against the same
+// wavelengths baked as ordinary passes of at most 4, the file and the
+// runtime's view of its channels.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputPart.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfMultiPartInputFile.h>
+#include <OpenEXR/ImfMultiPartOutputFile.h>
+#include <OpenEXR/ImfOutputPart.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "baker/bake/bake.h"
+#include "baker/bake/bake_policy.h"
+#include "data_formats/bake_file_attributes.h"
+#include "data_formats/config.h"
+#include "data_formats/error.h"
+#include "runtime/colour/colour_bake_weights.h"
+#include "runtime/colour/luminance.h"
+#include "runtime/sky.h"
+
+namespace skybake {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Earth on 15 wavelengths from 380 to 780 nm at tiny sizes, its spectra from
+// laws and an inline table (no files): a sun that varies, so that the
+// sunlight weights differ from the colour-matching ones, and a coloured
+// ozone and ground.
+std::string colourConfigText(int count) {
+  return fmt::format(R"(name = "colour_test"
+[channels]
+wavelengths_nm = {{ min_nm = 380, max_nm = 780, count = {} }}
+store = "cie_xyz"
+[planet]
+bottom_radius_m = 6360000.0
+top_radius_m = 6420000.0
+ground_albedo = {{ wavelengths_nm = [380, 780], values = [0.05, 0.3] }}
+[sun]
+irradiance = {{ wavelengths_nm = [380, 450, 550, 780], values = [1.1, 2.0, 1.85, 1.2] }}
+[rayleigh]
+scattering = {{ at_nm = 550, value = 13.558e-6, exponent = 4 }}
+density = [{{ exp_term = 1.0, exp_scale = -1.25e-4 }}]
+[mie]
+scattering = {{ at_nm = 550, value = 3.996e-6, angstrom_exponent = 1.3 }}
+extinction = {{ at_nm = 550, value = 4.44e-6, angstrom_exponent = 1.3 }}
+phase_g = 0.8
+density = [{{ exp_term = 1.0, exp_scale = -8.333e-4 }}]
+[absorption]
+extinction = {{ wavelengths_nm = [380, 600, 780], values = [1e-8, 2.5e-6, 1.5e-7] }}
+density = [{{ width_m = 25000.0, linear_term = 6.667e-5, constant_term = -0.6667 }},
+           {{ linear_term = -6.667e-5, constant_term = 2.6667 }}]
+[resolution]
+transmittance = [64, 16]
+irradiance = [16, 8]
+scattering = {{ r = 8, mu = 32, mu_s = 8, nu = 4 }}
+[bake]
+orders = 3
+)",
+                     count);
+}
+
+class ColourBakeTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    config_ = new BakeConfig(parseConfig(colourConfigText(15), "colour_test.toml"));
+    SilentProgress quiet;
+    colour_ = new BakeOutput(bakeAtmosphere(*config_, 2, quiet));
+    const BakeConfig settled = settledBakeConfig(*config_);
+    passes_ = new std::vector<BakeOutput>();
+    for (const AtmosphereParameters& g : settled.colour_groups) {
+      BakeConfig pass = settled;
+      pass.atmosphere = g;
+      pass.colour_groups.clear();
+      passes_->push_back(bakeAtmosphere(pass, 2, quiet));
+    }
+  }
+  static void TearDownTestSuite() {
+    delete config_;
+    delete colour_;
+    delete passes_;
+  }
+  static BakeConfig* config_;
+  static BakeOutput* colour_;
+  static std::vector<BakeOutput>* passes_;
+};
+BakeConfig* ColourBakeTest::config_ = nullptr;
+BakeOutput* ColourBakeTest::colour_ = nullptr;
+std::vector<BakeOutput>* ColourBakeTest::passes_ = nullptr;
+
+// The tables whose XYZ is a plain weighted sum of the wavelengths' (their
+// stored form does not depend on the channel): each channel equals the
+// colour-matching-weighted sum of the passes' tables. Both sides sum 15
+// float products of float weights; the bake sums them in float, 4 lanes per
+// pass, the test in double: they differ by a few float roundings of the
+// largest term, well below 1e-5 of the sum of the terms' magnitudes.
+constexpr double kLinearSumTolerance = 1e-5;
+
+template <typename Member>
+void expectWeightedSum(const BakeOutput& colour, const std::vector<BakeOutput>& passes,
+                       const colour::ColourBakeWeights& w, Member table, const char* name) {
+  const std::vector<Spectrum>& xyz = (colour.file.tables.*table).texels;
+  ASSERT_FALSE(xyz.empty()) << name;
+  int worst_reported = 0;
+  for (size_t t = 0; t < xyz.size(); ++t) {
+    for (int c = 0; c < kCieXyzChannels; ++c) {
+      double sum = 0.0, magnitude = 0.0;
+      int i = 0;
+      for (const BakeOutput& pass : passes) {
+        const std::vector<Spectrum>& lanes = (pass.file.tables.*table).texels;
+        for (int l = 0; l < pass.file.contents.atmosphere.channelCount(); ++l, ++i) {
+          sum += w.colourMatching(c, i) * lanes[t][l];
+          magnitude += std::abs(w.colourMatching(c, i) * lanes[t][l]);
+        }
+      }
+      const double error = std::abs(xyz[t][c] - sum);
+      if (!(error <= kLinearSumTolerance * magnitude + 1e-30) && worst_reported++ < 5) {
+        ADD_FAILURE() << name << " texel " << t << " channel " << c << ": " << xyz[t][c] << " vs " << sum;
+      }
+    }
+  }
+}
+
+TEST_F(ColourBakeTest, PassesAreGroupsOfAtMostFourWavelengths) {
+  ASSERT_EQ(passes_->size(), 4u);
+  EXPECT_EQ((*passes_)[3].file.contents.atmosphere.channelCount(), 3);
+  EXPECT_EQ(colour_->file.contents.atmosphere.channelCount(), 3);
+  EXPECT_EQ(colour_->file.contents.atmosphere.wavelengths_nm.size(), 15u);
+}
+
+TEST_F(ColourBakeTest, ExactTablesAreTheColourMatchingSumOfTheWavelengthPasses) {
+  const colour::ColourBakeWeights w(config_->colour_groups);
+  expectWeightedSum(*colour_, *passes_, w, &BakeTables::single_rayleigh, "single_rayleigh");
+  expectWeightedSum(*colour_, *passes_, w, &BakeTables::single_mie, "single_mie");
+  expectWeightedSum(*colour_, *passes_, w, &BakeTables::irradiance, "irradiance");
+}
+
+// The optical depth is the effective depth of sunlight: exp(-tau_c) is the
+// sunlight-weighted mean transmittance of the wavelengths. Computed in
+// double from float depths and stored in float: 1e-6 relative covers the
+// float rounding of tau (tau <= ~50 here, so exp(-tau) moves by 50 ulp at
+// most... relative to its own size, 6e-6) and of the weights.
+TEST_F(ColourBakeTest, OpticalDepthIsTheEffectiveDepthOfSunlight) {
+  const colour::ColourBakeWeights w(config_->colour_groups);
+  const std::vector<Spectrum>& xyz = colour_->file.tables.optical_depth.texels;
+  for (size_t t = 0; t < xyz.size(); ++t) {
+    for (int c = 0; c < kCieXyzChannels; ++c) {
+      double transmitted = 0.0;
+      int i = 0;
+      for (const BakeOutput& pass : *passes_) {
+        for (int l = 0; l < pass.file.contents.atmosphere.channelCount(); ++l, ++i) {
+          transmitted += w.sunlightShare(c, i) * std::exp(-double(pass.file.tables.optical_depth.texels[t][l]));
+        }
+      }
+      const double stored = std::exp(-double(xyz[t][c]));
+      ASSERT_NEAR(stored, transmitted, 1e-5 * transmitted + 1e-30) << "texel " << t << " channel " << c;
+      ASSERT_GE(xyz[t][c], 0.0f);
+    }
+  }
+}
+
+TEST_F(ColourBakeTest, EveryTableIsNonNegativeAndFinite) {
+  forEachTable(colour_->file.tables, [](const char* part, const std::vector<Spectrum>& texels) {
+    for (const Spectrum& s : texels) {
+      for (int c = 0; c < kCieXyzChannels; ++c) {
+        ASSERT_TRUE(std::isfinite(s[c]) && s[c] >= 0.0f) << part << ": " << s[c];
+      }
+      ASSERT_EQ(s[3], 0.0f) << part << ": the unused lane";
+    }
+  });
+}
+
+// Day-sky lookups: single scattering interpolates the exact tables (linear
+// interpolation commutes with the weighted sum), multiple scattering differs
+// only in the shape its interpolation divides by, and the sun disk's
+// transmittance is the effective one, exact for the direct sun.
+TEST_F(ColourBakeTest, DaySkyLuminanceMatchesTheWavelengthPasses) {
+  const Sky colour(colour_->file);
+  std::vector<Sky> passes;
+  for (const BakeOutput& p : *passes_) passes.emplace_back(p.file);
+  const colour::ColourBakeWeights w(config_->colour_groups);
+  const glm::dvec3 camera(0.0, 0.0, colour.atmosphere().bottom_radius_m + 100.0);
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.6, 0.0, 0.8));
+  for (double zenith_deg : {0.0, 30.0, 60.0, 80.0}) {
+    for (double azimuth_deg : {0.0, 90.0, 180.0}) {
+      const double z = radiansFromDegrees(zenith_deg), az = radiansFromDegrees(azimuth_deg);
+      const glm::dvec3 view(std::sin(z) * std::cos(az), std::sin(z) * std::sin(az), std::cos(z));
+      const RadianceAndTransmittance xyz = colour.skyRadiance(camera, view, sun);
+      double y = 0.0, t_y = 0.0;
+      int i = 0;
+      for (const Sky& p : passes) {
+        const RadianceAndTransmittance r = p.skyRadiance(camera, view, sun);
+        for (int l = 0; l < p.channelCount(); ++l, ++i) {
+          y += w.colourMatching(1, i) * r.radiance[l];
+          t_y += w.sunlightShare(1, i) * r.transmittance[l];
+        }
+      }
+      // The multiple-scattering shape's interpolation differs between
+      // texels: a few per mille of the multiple-scattering part, itself
+      // under a third of the day sky.
+      EXPECT_NEAR(xyz.radiance[1], y, 2e-3 * y) << zenith_deg << " " << azimuth_deg;
+      // The view ray's transmittance (not the sun's): the effective depth is
+      // exact only for sunlight from the top; along a view ray it weights
+      // the wavelengths by the sun at the top too, a per-mille effect here.
+      EXPECT_NEAR(xyz.transmittance[1], t_y, 2e-3) << zenith_deg << " " << azimuth_deg;
+      EXPECT_NEAR(colour.luminance(xyz.radiance), 683.0 * xyz.radiance[1], 1e-6 * 683.0 * xyz.radiance[1]);
+    }
+  }
+}
+
+TEST_F(ColourBakeTest, FileStatesItsChannelsAndReadsBack) {
+  const fs::path path = fs::temp_directory_path() / ("skybake_colour_" + std::to_string(getpid()) + ".exr");
+  writeBakeFile(path, colour_->file);
+  const Sky sky = Sky::load(path);
+  fs::remove(path);
+  EXPECT_EQ(sky.channels().kind, ChannelKind::CieXyz);
+  EXPECT_EQ(sky.channels().names, (std::vector<std::string>{"X", "Y", "Z"}));
+  EXPECT_EQ(sky.channels().wavelengths_nm, config_->atmosphere.wavelengths_nm);
+  EXPECT_EQ(sky.contents(), colour_->file.contents);
+  EXPECT_EQ(sky.luminanceWeights(), Spectrum(0.0f, float(colour::kMaxLuminousEfficacy_lm_per_W), 0.0f, 0.0f));
+}
+
+TEST_F(ColourBakeTest, SameTablesForAnyThreadCount) {
+  SilentProgress quiet;
+  const BakeOutput one = bakeAtmosphere(*config_, 1, quiet);
+  forEachTable(one.file.tables, [&](const char* part, const std::vector<Spectrum>& texels) {
+    bool equal = false;
+    forEachTable(colour_->file.tables, [&](const char* other, const std::vector<Spectrum>& two) {
+      if (std::string(other) == part) equal = texels == two;
+    });
+    EXPECT_TRUE(equal) << part;
+  });
+}
+
+// A file as version 3 wrote it (no skybake:channels) reads as wavelengths.
+TEST(ColourBakeFile, VersionThreeFileReadsAsWavelengths) {
+  BakeConfig c = parseConfig(colourConfigText(3), "three.toml");
+  c.atmosphere = c.colour_groups[0];
+  c.colour_groups.clear();
+  SilentProgress quiet;
+  const BakeOutput bake = bakeAtmosphere(c, 1, quiet);
+  const std::string id = std::to_string(getpid());
+  const fs::path v4 = fs::temp_directory_path() / ("skybake_v4_" + id + ".exr");
+  const fs::path v3 = fs::temp_directory_path() / ("skybake_v3_" + id + ".exr");
+  writeBakeFile(v4, bake.file);
+  {
+    Imf::MultiPartInputFile in(v4.c_str());
+    std::vector<Imf::Header> headers;
+    for (int p = 0; p < in.parts(); ++p) {
+      Imf::Header h = in.header(p);
+      ASSERT_NE(h.findTypedAttribute<Imf::StringAttribute>(bake_file::kAttrChannels), nullptr);
+      h.erase(bake_file::kAttrChannels);
+      h.insert(bake_file::kAttrFormatVersion, Imf::IntAttribute(3));
+      headers.push_back(h);
+    }
+    Imf::MultiPartOutputFile out(v3.c_str(), headers.data(), static_cast<int>(headers.size()));
+    for (int p = 0; p < in.parts(); ++p) {
+      Imf::InputPart from(in, p);
+      Imf::OutputPart to(out, p);
+      to.copyPixels(from);
+    }
+  }
+  const BakeFile read = readBakeFile(v3);
+  fs::remove(v3);
+  fs::remove(v4);
+  EXPECT_EQ(read.format_version, 3);
+  EXPECT_EQ(read.contents.atmosphere.channel_kind, ChannelKind::Wavelengths);
+  EXPECT_EQ(read.contents, bake.file.contents);
+  EXPECT_EQ(read.tables.single_rayleigh.texels, bake.file.tables.single_rayleigh.texels);
+  const Sky sky(read);
+  EXPECT_EQ(sky.channels().names, (std::vector<std::string>{"380nm", "580nm", "780nm"}));
+}
+
+}  // namespace
+}  // namespace skybake
