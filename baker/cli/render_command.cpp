@@ -111,10 +111,15 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
     spec.attribute("whiteLuminance", 1.0f);
     spec.attribute("skybake:units", "cd m^-2");
     spec.attribute("skybake:content",
-                   "linear sRGB (Rec. 709 primaries, D65 white) of spectral radiance through the CIE 1931 "
-                   "observer, in cd m^-2: Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance");
+                   sky.atmosphere().storesCieXyz()
+                       ? "linear sRGB (Rec. 709 primaries, D65 white) of the bake's CIE 1931 X, Y, Z (integrated "
+                         "at bake time over skybake:wavelengths_nm), in cd m^-2: Y = 0.2126 R + 0.7152 G + "
+                         "0.0722 B is luminance"
+                       : "linear sRGB (Rec. 709 primaries, D65 white) of spectral radiance through the CIE 1931 "
+                         "observer, in cd m^-2: Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance");
   }
   spec.attribute("skybake:wavelengths_nm", fmt::format("{}", fmt::join(wavelengths, " ")));
+  spec.attribute("skybake:bake_channels", sky.atmosphere().storesCieXyz() ? "cie_xyz" : "wavelengths");
   spec.attribute("skybake:projection", view.projection == Projection::LatLong   ? "latlong"
                                        : view.projection == Projection::Fisheye ? "fisheye"
                                                                                 : "perspective");
@@ -131,10 +136,11 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
   std::vector<float> irradiance(&sun_irradiance[0], &sun_irradiance[0] + sky.channelCount());
   // Text, as the wavelengths: OpenImageIO would store a float array as a
   // v2f, a v3f or a floatvector depending on the number of channels.
+  // W m^-2 nm^-1 per wavelength; a colour bake's X, Y, Z in W m^-2.
   spec.attribute("skybake:sun_irradiance_W_m2_nm", fmt::format("{}", fmt::join(irradiance, " ")));
   const SpectralImage sun_spectrum{1, 1, sky.channelCount(), irradiance};
   const std::vector<float> illuminance =
-      linearSrgbImage(sun_spectrum, wavelengths, colour::kMaxLuminousEfficacy_lm_per_W);
+      linearSrgbImage(sun_spectrum, sky.atmosphere(), colour::kMaxLuminousEfficacy_lm_per_W);
   spec.attribute("skybake:sun_illuminance_rgb_lx", OIIO::TypeColor, illuminance.data());
 }
 
@@ -166,11 +172,11 @@ void writeImage(const std::string& path, const Sky& sky, const SkyView& view, co
   bool ok = out->set_ioproxy(&memory) && out->open(path, spec);
   if (ok && exr) {
     std::vector<float> rgb;
-    if (!spectral) rgb = linearSrgbImage(image, wavelengths, colour::kMaxLuminousEfficacy_lm_per_W);
+    if (!spectral) rgb = linearSrgbImage(image, sky.atmosphere(), colour::kMaxLuminousEfficacy_lm_per_W);
     ok = out->write_image(OIIO::TypeDesc::FLOAT, spectral ? image.radiance.data() : rgb.data());
   } else if (ok) {
     const std::vector<unsigned char> display =
-        encodeForDisplay(linearSrgbImage(image, wavelengths, previewScalePerExposure()), exposure, tone_map);
+        encodeForDisplay(linearSrgbImage(image, sky.atmosphere(), previewScalePerExposure()), exposure, tone_map);
     ok = out->write_image(OIIO::TypeDesc::UINT8, display.data());
   }
   if (!ok || !out->close()) throw Error(ErrorKind::Internal, fmt::format("{}: {}", path, out->geterror()));
@@ -233,6 +239,13 @@ void runRender(RenderOptions o) {
                            : o.tone_map == "reinhard" ? ToneMap::Reinhard
                                                       : ToneMap::Aces;
   const Sky sky = Sky::load(o.bake_path);
+  if (o.channels == "spectral" && sky.channels().kind == ChannelKind::CieXyz) {
+    refuseOptionValue("--channels", o.channels,
+                      fmt::format("{} is a colour bake: its channels are CIE X, Y, Z integrated at bake time, not "
+                                  "wavelengths; render linear sRGB (--channels rgb), or bake with channels.store = "
+                                  "\"wavelengths\" for spectral images",
+                                  o.bake_path));
+  }
   requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
                          static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) *
                              (kImageBytesPerPixel + kImageBytesPerPixelChannel * sky.channelCount()));

@@ -22,6 +22,20 @@ std::vector<float> linearSrgbImage(const SpectralImage& image, const std::vector
   return rgb;
 }
 
+std::vector<float> linearSrgbImage(const SpectralImage& image, const AtmosphereParameters& channels, double scale) {
+  if (!channels.storesCieXyz()) return linearSrgbImage(image, channels.wavelengths_nm, scale);
+  const size_t pixels = static_cast<size_t>(image.width) * image.height;
+  std::vector<float> rgb(pixels * 3);
+  for (size_t p = 0; p < pixels; ++p) {
+    const float* xyz = &image.radiance[p * image.channels];
+    const colour::LinearRgb c = colour::linearSrgbFromXyz({xyz[0], xyz[1], xyz[2]});
+    rgb[p * 3 + 0] = static_cast<float>(c.r * scale);
+    rgb[p * 3 + 1] = static_cast<float>(c.g * scale);
+    rgb[p * 3 + 2] = static_cast<float>(c.b * scale);
+  }
+  return rgb;
+}
+
 double previewScalePerExposure() { return 1.0 / colour::ybarIntegral_nm(); }
 
 }  // namespace skybake

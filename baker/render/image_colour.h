@@ -15,6 +15,11 @@ namespace skybake {
 // gives cd m^-2: Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance.
 std::vector<float> linearSrgbImage(const SpectralImage& image, const std::vector<double>& wavelengths_nm, double scale);
 
+// The same for an image of a bake with these channels: its wavelengths as
+// above, or, for a colour bake, its pixels' X, Y, Z as they are (the bake
+// integrated them over its wavelengths by the same rule).
+std::vector<float> linearSrgbImage(const SpectralImage& image, const AtmosphereParameters& channels, double scale);
+
 // The scale that makes a preview's linear sRGB keep `--exposure`'s meaning
 // of a multiplier on spectral radiance in W m^-2 sr^-1 nm^-1: Y is the
 // spectrum's ybar-weighted mean, so a flat spectrum of 1 / exposure

@@ -23,11 +23,13 @@
 
 #include "baker/bake/bake.h"
 #include "baker/bake/bake_policy.h"
+#include "baker/render/image_colour.h"
 #include "data_formats/bake_file_attributes.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 #include "runtime/colour/colour_bake_weights.h"
 #include "runtime/colour/luminance.h"
+#include "runtime/colour/spectral_to_xyz.h"
 #include "runtime/sky.h"
 
 namespace skybake {
@@ -281,6 +283,30 @@ TEST(ColourBakeFile, VersionThreeFileReadsAsWavelengths) {
   EXPECT_EQ(read.tables.single_rayleigh.texels, bake.file.tables.single_rayleigh.texels);
   const Sky sky(read);
   EXPECT_EQ(sky.channels().names, (std::vector<std::string>{"380nm", "580nm", "780nm"}));
+}
+
+}  // namespace
+}  // namespace skybake
+
+namespace skybake {
+namespace {
+
+// An image of a colour bake turns into the linear sRGB of its pixels' X, Y,
+// Z; the same spectrum as wavelength samples gives the same colour through
+// the same colour-matching weights (both in double from float values: 1e-6
+// relative).
+TEST(ColourBakeRender, XyzPixelsGiveTheSrgbOfTheirSpectrum) {
+  const std::vector<double> nm = {400.0, 450.0, 520.0, 600.0, 700.0};
+  const std::vector<float> spectrum = {0.3f, 1.2f, 0.9f, 0.5f, 0.2f};
+  const colour::Xyz xyz = colour::SpectralToXyz(nm)(spectrum);
+  AtmosphereParameters colour_channels;
+  colour_channels.channel_kind = ChannelKind::CieXyz;
+  colour_channels.wavelengths_nm = nm;
+  const SpectralImage xyz_image{1, 1, 3, {float(xyz.x), float(xyz.y), float(xyz.z)}};
+  const SpectralImage spectral_image{1, 1, 5, spectrum};
+  const std::vector<float> from_xyz = linearSrgbImage(xyz_image, colour_channels, 1.0);
+  const std::vector<float> from_spectrum = linearSrgbImage(spectral_image, nm, 1.0);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(from_xyz[c], from_spectrum[c], 1e-6 * std::abs(from_spectrum[c]) + 1e-9);
 }
 
 }  // namespace
