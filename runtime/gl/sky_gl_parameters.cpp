@@ -114,6 +114,7 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   b.outputs[0] = sky.outputs().radiance_to_points ? 1 : 0;
   b.outputs[1] = sky.outputs().ground_irradiance ? 1 : 0;
   b.outputs[2] = sky.channelCount();
+  b.outputs[3] = sky.channels().kind == ChannelKind::CieXyz ? 1 : 0;
   put(b.sun_irradiance, a.sun_irradiance);
   put(b.solar_radiance, sky.solarRadiance());
   put(b.rayleigh_scattering, a.rayleigh_scattering);
@@ -122,13 +123,17 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   put(b.absorption_extinction, a.absorption_extinction);
   put(b.ground_albedo, a.ground_albedo);
   put(b.column_mie_share_power, columnMieSharePower(sky, shape));
-  for (int c = 0; c < sky.channelCount(); ++c) b.wavelengths_nm[c] = static_cast<float>(a.wavelengths_nm[c]);
+  // A colour bake's channels are X, Y, Z, not wavelengths: its lanes stay 0.
+  if (!a.storesCieXyz()) {
+    for (int c = 0; c < sky.channelCount(); ++c) b.wavelengths_nm[c] = static_cast<float>(a.wavelengths_nm[c]);
+  }
   const NightContinuation& night = sky.sampler().night();
   b.night[0] = static_cast<float>(night.edge_mu_s);
   b.night[1] = static_cast<float>(night.edge_sin);
   b.night[2] = static_cast<float>(night.inverse_tan_half_span);
   b.night[3] = d.scattering_mu_s_coord_min <= 0.0 ? 1.0f : 0.0f;  // as TableSampler::nightScale4D
   put(b.night_exponent, night.exponent);
+  put(b.luminance_weights, sky.luminanceWeights());
   putLayers(b, 0, a.rayleigh_density, "rayleigh");
   putLayers(b, 1, a.mie_density, "mie");
   putLayers(b, 2, a.absorption_density, "absorption");

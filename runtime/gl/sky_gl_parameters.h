@@ -27,7 +27,7 @@ struct SkyUniformBlock {
   int32_t scattering_size[4];      // r, mu, mu_s, nu texels
   int32_t table_2d_size[4];        // optical depth mu, r; irradiance mu_s, r texels
   int32_t parts[4];                // ground views, single Mie, multiple density, irradiance present
-  int32_t outputs[4];              // radiance to points, ground irradiance, channel count
+  int32_t outputs[4];              // radiance to points, ground irradiance, channel count, channel kind
   int32_t profile_layers[4];       // Rayleigh, Mie, absorption
   float sun_irradiance[4];         // W m^-2 nm^-1
   float solar_radiance[4];         // W m^-2 sr^-1 nm^-1
@@ -38,12 +38,13 @@ struct SkyUniformBlock {
   float ground_albedo[4];
   float column_mie_share_power[4];
   float wavelengths_nm[4];
-  float night[4];           // night continuation: edge mu_s, edge sine, 1 / tan(span / 2), 4D tables continue
-  float night_exponent[4];  // its power per channel
+  float night[4];              // night continuation: edge mu_s, edge sine, 1 / tan(span / 2), 4D tables continue
+  float night_exponent[4];     // its power per channel
+  float luminance_weights[4];  // cd m^-2 per unit of each channel (Sky::luminanceWeights)
   float layer_shape[3 * kMaxGlDensityLayers][4];  // width (m), exp_term, exp_scale (m^-1), linear_term (m^-1)
   float layer_constant[3 * kMaxGlDensityLayers][4];
 };
-static_assert(sizeof(SkyUniformBlock) == (21 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
+static_assert(sizeof(SkyUniformBlock) == (22 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
 
 // The block's values for a loaded bake.
 SkyUniformBlock skyUniformBlock(const Sky& sky);

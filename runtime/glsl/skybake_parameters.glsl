@@ -48,7 +48,8 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   // has: y single Mie, z multiple-scattering density, w irradiance.
   ivec4 skybake_parts;
   // 1 or 0: x the bake offers radiance to points, y ground irradiance
-  // ([scene] outputs); z channel count.
+  // ([scene] outputs); z channel count; w what the channels hold, 0
+  // wavelengths (W m^-2 sr^-1 nm^-1), 1 CIE X, Y, Z (W m^-2 sr^-1).
   ivec4 skybake_outputs;
   ivec4 skybake_profile_layers;  // layers of the Rayleigh, Mie, absorption profiles
   vec4 skybake_sun_irradiance;         // at the top of the atmosphere, W m^-2 nm^-1
@@ -59,7 +60,7 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   vec4 skybake_absorption_extinction;  // m^-1 at density 1
   vec4 skybake_ground_albedo;          // Lambertian, dimensionless
   vec4 skybake_column_mie_share_power; // m_column^2 of the multiple-scattering shape, per channel
-  vec4 skybake_wavelengths_nm;         // each lane's wavelength, 0 for unused lanes
+  vec4 skybake_wavelengths_nm;         // each lane's wavelength, 0 for unused lanes and X, Y, Z
   // The night continuation below the lowest baked sun (skybakeNightScale):
   // x its zenith cosine, y its zenith sine, z one over tan(span / 2), the
   // span being the depression over which the scale falls to 0, w 1 where the
@@ -67,6 +68,10 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   // instead).
   vec4 skybake_night;
   vec4 skybake_night_exponent;         // the scale's power per channel
+  // cd m^-2 per unit of each channel: (0, 683, 0, 0) for X, Y, Z, the CIE
+  // 1931 ybar weights of the wavelengths times 683 lm/W otherwise
+  // (skybakeLuminance, Sky::luminanceWeights).
+  vec4 skybake_luminance_weights;
   // Density layers, SKYBAKE_MAX_DENSITY_LAYERS per profile (Rayleigh, Mie,
   // absorption): width (m), exp_term, exp_scale (m^-1), linear_term (m^-1);
   // and in skybake_layer_constant[i].x the constant term.

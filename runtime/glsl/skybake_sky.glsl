@@ -284,3 +284,11 @@ vec4 skybakeTransmittance(vec3 a_m, vec3 b_m) {
   float inside = min(d, length_m);
   return exp(-skybakeOpticalDepthAlongRay(start.r, start.mu, inside, ground));
 }
+
+// Luminance (cd m^-2) of a radiance these lookups return, or illuminance
+// (lx) of an irradiance, whatever the bake's channels hold
+// (Sky::luminance): the per-channel weights come from C++.
+float skybakeLuminance(vec4 value) { return dot(skybake_luminance_weights, value); }
+
+// Whether the channels are CIE X, Y, Z (a colour bake) rather than wavelengths.
+bool skybakeChannelsAreCieXyz() { return skybake_outputs.w == 1; }

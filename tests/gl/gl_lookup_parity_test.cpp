@@ -37,7 +37,14 @@ namespace skybake {
 namespace {
 
 // Query kinds, as the shader below reads them.
-enum class Kind { SkyRadiance = 0, RadianceToPoint = 1, Irradiance = 2, Transmittance = 3, Received = 4 };
+enum class Kind {
+  SkyRadiance = 0,
+  RadianceToPoint = 1,
+  Irradiance = 2,
+  Transmittance = 3,
+  Received = 4,
+  Luminance = 5
+};
 
 struct Query {
   Kind kind;
@@ -77,6 +84,10 @@ void main() {
     second = e.sky;
   } else if (kind == 3) {
     first = skybakeTransmittance(qa.xyz, qb.xyz);
+  } else if (kind == 5) {
+    // The luminance of the sky radiance, and what the bake's channels hold.
+    SkybakeRadianceAndTransmittance v = skybakeSkyRadiance(qa.xyz, qb.xyz, qc.xyz, qa.w);
+    first = vec4(skybakeLuminance(v.radiance), skybakeChannelsAreCieXyz() ? 1.0 : 0.0, 0.0, 0.0);
   } else {
     SkybakeRadianceAndTransmittance v = skybakeReceivedRadiance(qa.xyz, qb.xyz, qc.xyz);
     first = v.radiance;
@@ -187,6 +198,12 @@ Outputs evaluateOnCpu(const Sky& sky, const std::vector<Query>& queries) {
       case Kind::Received: {
         const RadianceAndTransmittance v = sky.receivedRadiance(a, b, sun);
         first = v.radiance, second = v.transmittance;
+        break;
+      }
+      case Kind::Luminance: {
+        const RadianceAndTransmittance v = sky.skyRadiance(a, b, sun, q.shadow_length_m);
+        first = Spectrum(static_cast<float>(sky.luminance(v.radiance)),
+                         sky.channels().kind == ChannelKind::CieXyz ? 1.0f : 0.0f, 0.0f, 0.0f);
         break;
       }
     }
@@ -428,6 +445,35 @@ TEST_F(GlParity, HostileGeometryIsFinite) {
 }
 
 // No EGL display at all: a BadInput error that says so, not a crash.
+// skybakeLuminance against Sky::luminance, for a wavelength bake (weights
+// through the CIE 1931 ybar) and a colour bake (683 Y): the sky radiance's
+// luminance within the radiance's tolerances (a weighted sum of lanes each
+// within them), and the channel kind exactly. Luminance above 1e-2 cd m^-2
+// (683 times kValueFloor's radiance) is compared.
+TEST_F(GlParity, LuminanceOfWavelengthAndColourBakes) {
+  for (const char* bake : {"gl_earth.exr", "gl_colour.exr"}) {
+    const Sky sky = Sky::load(bakePath(bake));
+    const GlLookups gl(sky);
+    const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+    std::vector<Query> queries;
+    for (double sun_zenith : {30.0, 85.0, 95.0}) {
+      for (const glm::vec3& d : directions(256, 11)) {
+        queries.push_back({Kind::Luminance, glm::vec3(0.0f, 0.0f, bottom + 100.0f), d, sunAt(sun_zenith, 20.0)});
+      }
+    }
+    const Outputs cpu = evaluateOnCpu(sky, queries);
+    const Outputs gpu = gl.evaluate(queries);
+    const Difference d = compare(cpu.first, gpu.first, 1, 683.0 * kValueFloor);
+    std::printf("%s luminance: rms %.4f %% max %.4f %% over %zu values\n", bake, 100.0 * d.rms, 100.0 * d.largest,
+                d.count);
+    EXPECT_GT(d.count, queries.size() / 3) << bake;
+    EXPECT_EQ(d.non_finite, 0u) << bake;
+    EXPECT_LE(d.rms, kMaxRmsRelative) << bake;
+    EXPECT_LE(d.largest, kMaxRelative) << bake;
+    for (size_t i = 0; i < queries.size(); ++i) ASSERT_EQ(gpu.first[i][1], cpu.first[i][1]) << bake;
+  }
+}
+
 TEST(GlContext, NoDisplayIsBadInput) {
   const char* saved = std::getenv("EGL_PLATFORM");
   setenv("EGL_PLATFORM", "nonexistent_platform", 1);

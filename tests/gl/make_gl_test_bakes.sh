@@ -8,4 +8,5 @@ out=$3
 mkdir -p "$out"
 "$skybake" bake "$source_dir/gl_earth.toml" -o "$out/gl_earth.exr" --reproducible 2>/dev/null
 "$skybake" bake "$source_dir/gl_scene.toml" -o "$out/gl_scene.exr" --reproducible 2>/dev/null
+"$skybake" bake "$source_dir/gl_colour.toml" -o "$out/gl_colour.exr" --reproducible 2>/dev/null
 echo "GL test bakes written to $out"
