@@ -103,6 +103,7 @@ py::dict atmosphereDict(const AtmosphereParameters& a) {
   };
   py::dict d;
   d["wavelengths_nm"] = a.wavelengths_nm;
+  d["channel_kind"] = a.storesCieXyz() ? "cie_xyz" : "wavelengths";
   d["bottom_radius_m"] = a.bottom_radius_m;
   d["top_radius_m"] = a.top_radius_m;
   d["ground_albedo"] = spectrum(a.ground_albedo);
@@ -170,6 +171,16 @@ void registerLookups(py::module_& m) {
       .def_property_readonly("channel_count", &Sky::channelCount)
       .def_property_readonly("orders", &Sky::orders)
       .def_property_readonly("wavelengths_nm", [](const Sky& sky) { return sky.atmosphere().wavelengths_nm; })
+      .def_property_readonly(
+          "channel_kind",
+          [](const Sky& sky) { return sky.channels().kind == ChannelKind::CieXyz ? "cie_xyz" : "wavelengths"; })
+      .def_property_readonly("channel_names", [](const Sky& sky) { return sky.channels().names; })
+      .def_property_readonly("luminance_weights",
+                             [](const Sky& sky) {
+                               std::vector<double> w;
+                               for (int c = 0; c < sky.channelCount(); ++c) w.push_back(sky.luminanceWeights()[c]);
+                               return w;
+                             })
       .def_property_readonly("atmosphere", [](const Sky& sky) { return atmosphereDict(sky.atmosphere()); })
       .def_property_readonly("bake_report_json", &Sky::bakeReportJson)
       .def_property_readonly("baked_ranges",

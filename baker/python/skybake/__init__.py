@@ -6,8 +6,9 @@
 Positions are metres from the planet's centre and directions unit vectors,
 as arrays whose last axis has length 3; any leading shapes that numpy
 broadcasts together. Results are float32 arrays of the broadcast shape plus
-one axis of the bake's channels, in its channel order (`sky.wavelengths_nm`):
-radiance in W m^-2 sr^-1 nm^-1, irradiance in W m^-2 nm^-1. The values are
+one axis of the bake's channels, in its channel order (`sky.channels`):
+radiance in W m^-2 sr^-1 nm^-1, irradiance in W m^-2 nm^-1 (a colour bake's
+X, Y, Z: W m^-2 sr^-1 and W m^-2; `sky.luminance` gives cd m^-2 of either). The values are
 the C++ runtime's (runtime/sky.h) bit for bit; the GIL is released while a
 lookup runs, and calls of many rows use several threads.
 
@@ -51,7 +52,32 @@ class Sky:
 
     @property
     def wavelengths_nm(self):
+        """The channels' wavelengths, or for a colour bake the wavelengths
+        integrated into its X, Y, Z."""
         return list(self._sky.wavelengths_nm)
+
+    @property
+    def channel_kind(self):
+        """What the channels hold: "wavelengths" (spectral radiance, W m^-2
+        sr^-1 nm^-1) or "cie_xyz" (CIE 1931 X, Y, Z, W m^-2 sr^-1)."""
+        return self._sky.channel_kind
+
+    @property
+    def channels(self):
+        """The channels' names in channel order: "680nm", ... or "X", "Y", "Z"."""
+        return list(self._sky.channel_names)
+
+    def luminance(self, values):
+        """Luminance in cd m^-2 of radiances this bake returns (illuminance in
+        lx of irradiances): an array whose last axis is the channels, to an
+        array of the leading shape (float64). A colour bake's is 683 Y; a
+        wavelength bake's goes through the CIE 1931 colour-matching functions
+        as `skybake render` does (Sky::luminance, the same weights)."""
+        values = _np.asarray(values, dtype=_np.float64)
+        if values.ndim == 0 or values.shape[-1] != self.channel_count:
+            raise BadInput(f"luminance needs a last axis of the bake's {self.channel_count} channels, "
+                           f"not shape {values.shape}")
+        return values @ _np.asarray(self._sky.luminance_weights, dtype=_np.float64)
 
     @property
     def channel_count(self):
