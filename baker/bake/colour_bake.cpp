@@ -74,7 +74,17 @@ Texture zeroedLike(const Texture& t) {
 // The report of the whole colour bake from its passes'.
 void addPassReport(const BakeReport& pass, const std::array<Spectrum, kMaxChannels>& mix, size_t index,
                    const std::vector<double>& pass_wavelengths_nm, BakeReport& report) {
-  report.stages.insert(report.stages.end(), pass.stages.begin(), pass.stages.end());
+  // One entry per stage and order, its seconds summed over the passes: the
+  // report (in every part's header) stays the size of one pass's.
+  for (const StageTiming& t : pass.stages) {
+    auto same = [&](const StageTiming& r) { return r.stage == t.stage && r.order == t.order; };
+    const auto found = std::find_if(report.stages.begin(), report.stages.end(), same);
+    if (found == report.stages.end()) {
+      report.stages.push_back(t);
+    } else {
+      found->seconds += t.seconds;
+    }
+  }
   for (size_t k = 0; k < pass.orders.size(); ++k) {
     if (k == report.orders.size()) report.orders.push_back({pass.orders[k].order, Spectrum(0.0f), Spectrum(0.0f)});
     report.orders[k].mean_radiance += mixed(mix, pass.orders[k].mean_radiance);

@@ -11,8 +11,8 @@ namespace skybake {
 // `settled` is a settled colour config (settledBakeConfig): its atmosphere
 // holds the X, Y, Z quantities, its colour_groups the passes. Every pass is a
 // complete bakeWavelengthPass of the same sizes and domain (automatic orders
-// converge per pass); the report lists every pass's stages and, per order,
-// the X, Y, Z of what the passes' orders added.
+// converge per pass); the report gives each stage's seconds summed over the
+// passes and, per order, the X, Y, Z of what the passes' orders added.
 BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& progress);
 
 }  // namespace skybake

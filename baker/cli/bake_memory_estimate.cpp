@@ -84,6 +84,14 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   // The file's tables: single Rayleigh, single Mie, multiple scattering,
   // multiple-scattering density, transmittance and irradiance.
   e.kept_bytes = sum({product({4, stored_bytes}), transmittance, irradiance});
+  if (config.atmosphere.storesCieXyz()) {
+    // A colour bake runs one pass at a time (the peak above); beside it live
+    // the X, Y, Z sums of the file's tables and every wavelength's optical
+    // depth in double (baker/bake/colour_bake.cpp).
+    const uint64_t depths = product({axis(s.transmittance_mu), axis(s.transmittance_r),
+                                     static_cast<uint64_t>(config.atmosphere.wavelengths_nm.size()), sizeof(double)});
+    e.peak_bytes = sum({e.peak_bytes, e.kept_bytes, depths});
+  }
   return e;
 }
 
@@ -102,8 +110,12 @@ double estimateBakeCoreSeconds(const BakeConfig& config) {
   const double texels = double(std::max(iteration.scattering_r, 0)) * std::max(iteration.scattering_mu, 0) *
                         std::max(iteration.scattering_mu_s, 0) * std::max(iteration.scattering_nu, 0);
   const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
+  // A colour bake runs the order loop once per pass of kMaxChannels wavelengths.
+  const double passes = config.atmosphere.storesCieXyz()
+                            ? std::ceil(static_cast<double>(config.atmosphere.wavelengths_nm.size()) / kMaxChannels)
+                            : 1.0;
   // Rounded up to a tenth of a second: a time limit, not a measurement.
-  return std::ceil(texels * std::max(orders, 1) * kBakeCoreSecondsPerTexelOrder * 10.0) / 10.0;
+  return std::ceil(passes * texels * std::max(orders, 1) * kBakeCoreSecondsPerTexelOrder * 10.0) / 10.0;
 }
 
 void requireMemoryForBake(const BakeConfig& config, const std::string& source) {
