@@ -29,7 +29,7 @@ expect_status 0 "bake" -- --help
 expect_status 0 "--precision" -- bake --help
 # --version names the program's version (the top-level CMakeLists.txt's) and the bake formats it handles.
 version=$(sed -n 's/^project(skybake VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")
-expect_status 0 "skybake $version (writes bake file format 3, reads formats 2 to 3)" -- --version
+expect_status 0 "skybake $version (writes bake file format 4, reads formats 2 to 4)" -- --version
 expect_status 2 "" -- frobnicate
 expect_status 2 "--threads" -- bake "$small" -o "$work/x.exr" --threads 0
 expect_status 2 "--precision" -- bake "$small" -o "$work/x.exr" --precision double
@@ -67,6 +67,41 @@ head -n1 "$work/r.csv" | grep -qx 'altitude_m,sun_zenith_deg,view_zenith_deg,vie
   || fail "lookup radiance header: $(head -n1 "$work/r.csv")"
 [ "$(wc -l <"$work/r.csv")" -eq 3 ] || fail "lookup radiance: expected 2 rows"
 awk -F, 'NR > 1 { for (i = 6; i <= 11; ++i) if (!($i > 0)) exit 1 }' "$work/r.csv" || fail "lookup radiance: non-positive values: $(cat "$work/r.csv")"
+# A colour bake: info says X, Y, Z and the wavelengths integrated, lookup
+# labels its columns X, Y, Z, render refuses spectral channels.
+cat >"$work/colour.toml" <<'EOF'
+name = "small_colour"
+[channels]
+wavelengths_nm = { min_nm = 400, max_nm = 700, count = 5 }
+store = "cie_xyz"
+[planet]
+bottom_radius_m = 6360000.0
+top_radius_m = 6420000.0
+[sun]
+irradiance = { wavelengths_nm = [400, 700], values = [1.8, 1.5] }
+[rayleigh]
+scattering = { at_nm = 550, value = 13.558e-6, exponent = 4 }
+density = [{ exp_term = 1.0, exp_scale = -1.25e-4 }]
+[resolution]
+transmittance = [32, 8]
+irradiance = [8, 4]
+scattering = { r = 4, mu = 16, mu_s = 4, nu = 4 }
+[bake]
+orders = 2
+EOF
+expect_status 0 "baked 'small_colour'" -- bake "$work/colour.toml" -o "$work/colour.exr" --threads 1
+expect_status 0 "" -- info "$work/colour.exr"
+grep -q "^channels: *X Y Z" "$work/stdout" || fail "info of a colour bake: $(cat "$work/stdout")"
+grep -q "^integrated: *5 wavelengths: 400 nm  475 nm  550 nm  625 nm  700 nm" "$work/stdout" \
+  || fail "info of a colour bake does not list its wavelengths: $(cat "$work/stdout")"
+expect_status 0 "" -- lookup radiance "$work/colour.exr" --queries "$work/q.csv" -o "$work/colour.csv"
+head -n1 "$work/colour.csv" | grep -qx 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,radiance_X,radiance_Y,radiance_Z,transmittance_X,transmittance_Y,transmittance_Z' \
+  || fail "lookup radiance header of a colour bake: $(head -n1 "$work/colour.csv")"
+expect_status 2 "is a colour bake" -- render "$work/colour.exr" -o "$work/colour_spectral.exr" --altitude-m 10 \
+  --sun-zenith-deg 40 --size 8x8 --channels spectral
+[ -e "$work/colour_spectral.exr" ] && fail "a refused render left an image"
+expect_status 0 "" -- render "$work/colour.exr" -o "$work/colour.png" --altitude-m 10 --sun-zenith-deg 40 --size 8x8
+
 printf 'altitude_m,sun_zenith_deg,view_zenith_deg\n0,30,0\n' >"$work/missing.csv"
 expect_status 2 "missing column 'view_azimuth_deg'" -- lookup radiance "$work/good.exr" --queries "$work/missing.csv" -o "$work/bad.csv"
 printf 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n0,30,0,0\n0,thirty,0,0\n' >"$work/text.csv"
