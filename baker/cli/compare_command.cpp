@@ -14,6 +14,7 @@
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
+#include "baker/cli/wavelength_channels.h"
 #include "baker/comparators/flat_closed_form.h"
 #include "baker/comparators/hillaire_multiple_scattering.h"
 #include "baker/comparators/ray_marched_single.h"
@@ -147,6 +148,7 @@ void runCompare(const CompareOptions& o) {
   const std::vector<BakeConfig> scaled_configs =
       scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);
   const AtmosphereParameters& a = config.atmosphere;
+  requireWavelengthChannels(a, o.config_path, "compare");
   const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
   // Comparators answer rays to the sky or the ground; rays to a point and
   // irradiance are validate's.

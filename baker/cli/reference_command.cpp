@@ -13,6 +13,7 @@
 #include "baker/cli/option_checks.h"
 #include "baker/cli/reference_options.h"
 #include "baker/cli/terminal_progress.h"
+#include "baker/cli/wavelength_channels.h"
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/validation.h"
 #include "data_formats/config.h"
@@ -59,8 +60,10 @@ Piece parsePiece(const std::string& text) {
 
 AtmosphereParameters atmosphereOf(const std::string& path) {
   if (path.empty()) return builtinEarthConfig().atmosphere;
-  if (std::filesystem::path(path).extension() == ".exr") return Sky::load(path).atmosphere();
-  return loadConfigFile(path).atmosphere;
+  const AtmosphereParameters a = std::filesystem::path(path).extension() == ".exr" ? Sky::load(path).atmosphere()
+                                                                                   : loadConfigFile(path).atmosphere;
+  requireWavelengthChannels(a, path, "reference");
+  return a;
 }
 
 void runReference(const ReferenceOptions& o) {

@@ -8,6 +8,7 @@
 #include "baker/cli/reference_options.h"
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/terminal_progress.h"
+#include "baker/cli/wavelength_channels.h"
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
@@ -62,6 +63,7 @@ void runValidate(const ValidateOptions& o) {
     if (!output.empty()) requireWritableOutput(output, {o.bake_path, o.queries});
   }
   const Sky sky = Sky::load(o.bake_path);
+  requireWavelengthChannels(sky.atmosphere(), o.bake_path, "validate");
   requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
   std::string left_out;

@@ -101,6 +101,7 @@ expect_status 2 "is a colour bake" -- render "$work/colour.exr" -o "$work/colour
   --sun-zenith-deg 40 --size 8x8 --channels spectral
 [ -e "$work/colour_spectral.exr" ] && fail "a refused render left an image"
 expect_status 0 "" -- render "$work/colour.exr" -o "$work/colour.png" --altitude-m 10 --sun-zenith-deg 40 --size 8x8
+expect_status 2 "skybake validate compares wavelength channels" -- validate "$work/colour.exr"
 
 printf 'altitude_m,sun_zenith_deg,view_zenith_deg\n0,30,0\n' >"$work/missing.csv"
 expect_status 2 "missing column 'view_azimuth_deg'" -- lookup radiance "$work/good.exr" --queries "$work/missing.csv" -o "$work/bad.csv"
