@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -103,6 +104,22 @@ void addPassReport(const BakeReport& pass, const std::array<Spectrum, kMaxChanne
       fmt::format("{}pass {} ({} nm): {}", index == 0 ? "" : "; ", index + 1, wavelengths, pass.tail.reason);
 }
 
+// The caller's progress with each stage named after its pass ("pass 2/4:
+// single_scattering"), so that a user sees which of the repeated stages runs.
+class PassProgress final : public ProgressSink {
+ public:
+  PassProgress(ProgressSink& inner, size_t pass, size_t passes) : inner_(inner), pass_(pass), passes_(passes) {}
+  void beginStage(const std::string& name, size_t work_units) override {
+    inner_.beginStage(fmt::format("pass {}/{}: {}", pass_ + 1, passes_, name), work_units);
+  }
+  void advance(size_t units) override { inner_.advance(units); }
+  void endStage(double seconds) override { inner_.endStage(seconds); }
+
+ private:
+  ProgressSink& inner_;
+  size_t pass_, passes_;
+};
+
 }  // namespace
 
 BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& progress) {
@@ -130,7 +147,8 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
     pass_config.atmosphere = settled.colour_groups[g];
     pass_config.colour_groups.clear();
     const int lanes = pass_config.atmosphere.channelCount();
-    BakeOutput pass = bakeWavelengthPass(pass_config, threads, progress);
+    PassProgress pass_progress(progress, g, settled.colour_groups.size());
+    BakeOutput pass = bakeWavelengthPass(pass_config, threads, pass_progress);
     BakeTables& t = pass.file.tables;
     const std::array<Spectrum, kMaxChannels> mix = passMix(weights, first_wavelength, lanes);
     const auto conversion_start = std::chrono::steady_clock::now();
