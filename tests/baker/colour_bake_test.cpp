@@ -151,9 +151,9 @@ TEST_F(ColourBakeTest, ExactTablesAreTheColourMatchingSumOfTheWavelengthPasses) 
 
 // The optical depth is the effective depth of sunlight: exp(-tau_c) is the
 // sunlight-weighted mean transmittance of the wavelengths. Computed in
-// double from float depths and stored in float: 1e-6 relative covers the
-// float rounding of tau (tau <= ~50 here, so exp(-tau) moves by 50 ulp at
-// most... relative to its own size, 6e-6) and of the weights.
+// double from float depths and stored in float: rounding tau to float moves
+// exp(-tau) by tau * 6e-8 relative, under 3e-6 for the depths of at most ~50
+// here; 1e-5 relative covers that and the float weights.
 TEST_F(ColourBakeTest, OpticalDepthIsTheEffectiveDepthOfSunlight) {
   const colour::ColourBakeWeights w(config_->colour_groups);
   const std::vector<Spectrum>& xyz = colour_->file.tables.optical_depth.texels;
