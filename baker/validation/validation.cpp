@@ -31,6 +31,20 @@ RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
 
 }  // namespace
 
+std::string radianceQuantity(const AtmosphereParameters& a, const RadianceQuery& q) {
+  switch (rayKind(a, q)) {
+    case RayKind::Sky:
+      return "sky_radiance";
+    case RayKind::Ground:
+      return "ground_radiance";
+    case RayKind::ToPoint:
+      return "radiance_to_point";
+    case RayKind::Misses:
+      break;
+  }
+  return "";
+}
+
 std::string radianceKey(const RadianceQuery& q) {
   return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
                      q.distance_m);
@@ -292,11 +306,8 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
   StatsBuilder stats;
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
-    const RayKind kind = rayKind(a, q);
-    if (kind == RayKind::Misses) continue;
-    const char* quantity = kind == RayKind::Sky      ? "sky_radiance"
-                           : kind == RayKind::Ground ? "ground_radiance"
-                                                     : "radiance_to_point";
+    const std::string quantity = radianceQuantity(a, q);
+    if (quantity.empty()) continue;
     const char* band = sunBandName(sunBand(q.sun_zenith_deg));
     const CachedReference& r = reference.radiance[i];
     for (int c = 0; c < channels; ++c) {

@@ -86,6 +86,11 @@ struct MethodValues {
 
 MethodValues evaluateBake(const Sky& sky, const QuerySet& queries);
 
+// The quantity a radiance query measures: "sky_radiance", "ground_radiance"
+// (a ray that ends on the ground), "radiance_to_point" (a query with a
+// distance), or "" for a ray that misses the atmosphere.
+std::string radianceQuantity(const AtmosphereParameters& atmosphere, const RadianceQuery& query);
+
 // The queries a bake answers: without radiance to points (scene.outputs) no
 // query with a distance; without ground irradiance no ray that ends on the
 // ground (its lit ground needs the irradiance) and no irradiance query.
