@@ -110,11 +110,11 @@ void runValidate(const ValidateOptions& o) {
   const ErrorReport report = compareWithReference(a, queries, reference, bake, settings.paths);
   ColourReferenceValues colour_reference;
   MethodXyz bake_xyz;
-  ColourErrorReport colour_report;
+  ColourValidation colour_report;
   if (colour_atmospheres) {
     colour_reference = computeColourReference(*colour_atmospheres, queries, settings, progress);
     bake_xyz = bakeXyz(sky, bake);
-    colour_report = compareColourWithReference(a, queries, colour_reference, bake_xyz, settings.paths);
+    colour_report = validateColour(sky, queries, reference, colour_reference, bake, settings.paths);
   }
 
   fmt::print(
@@ -133,7 +133,11 @@ void runValidate(const ValidateOptions& o) {
         "has L* = {:g} (sRGB white); reference Y below {:.3g} skipped\n\n{}",
         kColourReferenceWavelengthCount, kColourReferenceFirst_nm, kColourReferenceLast_nm, colour_reference.cached,
         colour_reference.computed, colour_reference.seconds, kComparedLightness, smallestComparedY(),
-        colour_report.table());
+        colour_report.bake.table());
+    fmt::print(
+        "\nthe same for the spectral reference at the bake's own wavelengths (a bake without table error: what "
+        "sampling the spectrum there costs)\n\n{}",
+        colour_report.sampling.table());
   }
   if (!left_out.empty()) fmt::print("\n{}\n", left_out);
 

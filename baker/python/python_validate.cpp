@@ -46,8 +46,7 @@ py::object validate(const std::string& bake_path, const std::string& queries_nam
     nlohmann::ordered_json j = compareWithReference(a, queries, reference, bake, settings.paths).toJson();
     if (colour) {
       const ColourReferenceValues colour_reference = computeColourReference(*colour, queries, settings, progress);
-      j["colour"] =
-          compareColourWithReference(a, queries, colour_reference, bakeXyz(sky, bake), settings.paths).toJson();
+      j["colour"] = validateColour(sky, queries, reference, colour_reference, bake, settings.paths).toJson();
       j["colour"]["config"] = colour_config;
     }
     j["bake_file"] = bake_path;

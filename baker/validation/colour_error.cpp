@@ -138,6 +138,33 @@ ColourErrorReport compareColourWithReference(const AtmosphereParameters& a, cons
   return report;
 }
 
+namespace {
+
+std::vector<Spectrum> referenceChannels(const std::vector<CachedReference>& reference) {
+  std::vector<Spectrum> out;
+  out.reserve(reference.size());
+  for (const CachedReference& r : reference) out.push_back(Spectrum(r.value));
+  return out;
+}
+
+}  // namespace
+
+ColourValidation validateColour(const Sky& sky, const QuerySet& queries, const ReferenceValues& spectral_reference,
+                                const ColourReferenceValues& colour_reference, const MethodValues& bake,
+                                int reference_paths) {
+  const AtmosphereParameters& a = sky.atmosphere();
+  MethodXyz sampled{bakeXyz(sky, referenceChannels(spectral_reference.radiance)), {}};
+  if (!bake.irradiance.empty()) sampled.irradiance = bakeXyz(sky, referenceChannels(spectral_reference.irradiance));
+  return {compareColourWithReference(a, queries, colour_reference, bakeXyz(sky, bake), reference_paths),
+          compareColourWithReference(a, queries, colour_reference, sampled, reference_paths)};
+}
+
+nlohmann::ordered_json ColourValidation::toJson() const {
+  nlohmann::ordered_json j = bake.toJson();
+  j["sampling_errors"] = sampling.toJson()["errors"];
+  return j;
+}
+
 const ColourErrorRow* ColourErrorReport::find(const std::string& quantity, const std::string& band) const {
   for (const ColourErrorRow& row : rows) {
     if (row.quantity == quantity && row.band == band) return &row;

@@ -85,4 +85,21 @@ ColourErrorReport compareColourWithReference(const AtmosphereParameters& atmosph
                                              const ColourReferenceValues& reference, const MethodXyz& method,
                                              int reference_paths);
 
+// The colour figures of a validation: the bake's, and those of the spectral
+// reference at the bake's own wavelengths through the same conversion, a
+// bake without any table error: what sampling the spectrum at those
+// wavelengths costs (the floor the bake's figures cannot go below but by
+// chance).
+struct ColourValidation {
+  ColourErrorReport bake;
+  ColourErrorReport sampling;
+
+  // The bake's report, with the sampling floor's rows as "sampling_errors".
+  nlohmann::ordered_json toJson() const;
+};
+
+ColourValidation validateColour(const Sky& sky, const QuerySet& queries, const ReferenceValues& spectral_reference,
+                                const ColourReferenceValues& colour_reference, const MethodValues& bake,
+                                int reference_paths);
+
 }  // namespace skybake

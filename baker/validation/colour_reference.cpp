@@ -1,9 +1,6 @@
 #include "baker/validation/colour_reference.h"
 
-#include <omp.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -156,38 +153,16 @@ ColourReferenceValues computeColourReference(const ColourReferenceAtmospheres& c
       out.irradiance[item - queries.radiance.size()] = {e.value, e.standard_error, SpectrumD(0.0)};
     }
   };
-  const auto start = std::chrono::steady_clock::now();
-  auto last_checkpoint = start;
-  progress.beginStage("colour reference", missing.size());
-  // In batches with checkpoints, as the spectral reference; each query's
-  // seeds come from its key, so the thread count changes nothing.
-  const size_t batch = std::max<size_t>(kReferenceQueriesPerThreadPerBatch * omp_get_max_threads(), 1);
-  for (size_t first = 0; first < missing.size(); first += batch) {
-    const size_t last = std::min(first + batch, missing.size());
-#pragma omp parallel for schedule(dynamic)
-    for (size_t k = first; k < last; ++k) {
-      compute(missing[k]);
-      progress.advance(1);
+  auto store = [&](size_t item) {
+    if (item < queries.radiance.size()) {
+      cache.store(radianceCacheKey(item), out.radiance[item]);
+    } else {
+      const size_t i = item - queries.radiance.size();
+      cache.store(irradianceCacheKey(i), out.irradiance[i]);
     }
-    for (size_t k = first; k < last; ++k) {
-      const size_t item = missing[k];
-      if (item < queries.radiance.size()) {
-        cache.store(radianceCacheKey(item), out.radiance[item]);
-      } else {
-        const size_t i = item - queries.radiance.size();
-        cache.store(irradianceCacheKey(i), out.irradiance[i]);
-      }
-    }
-    const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - last_checkpoint).count() >= kReferenceCheckpointSeconds) {
-      cache.saveChunk();
-      last_checkpoint = now;
-    }
-  }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  progress.endStage(out.seconds);
+  };
+  out.seconds = computeInCheckpointedBatches(missing, "colour reference", progress, cache, compute, store);
   out.computed = static_cast<int>(missing.size());
-  cache.saveChunk();
   return out;
 }
 

@@ -3,6 +3,7 @@
 // per sun band, for sky rays, ground rays and rays to a point separately.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,14 @@ inline constexpr int kReferenceQueriesPerThreadPerBatch = 16;
 // cache at least this often (seconds), so a cluster job stopped at its time
 // limit leaves its work for the next one.
 inline constexpr double kReferenceCheckpointSeconds = 60.0;
+
+// Runs compute(item) for every item in parallel batches and store(item) for
+// each after its batch, in order, saving the cache at least every
+// kReferenceCheckpointSeconds and at the end. Returns the seconds spent.
+// Shared by the spectral and the colour reference.
+double computeInCheckpointedBatches(const std::vector<size_t>& items, const std::string& stage, ProgressSink& progress,
+                                    ReferenceCache& cache, const std::function<void(size_t)>& compute,
+                                    const std::function<void(size_t)>& store);
 
 // The reference for every query of the set, from the cache where it holds
 // them; the rest computed and added to the cache as it goes.
