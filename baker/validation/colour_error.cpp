@@ -90,11 +90,9 @@ double colourDifference(const colour::Xyz& value, const colour::Xyz& reference) 
                            colour::labFromXyz(scaled(reference, factor), white));
 }
 
-double referenceColourNoise(const colour::Xyz& reference, const colour::Xyz& standard_error) {
-  const double dx = colourDifference({reference.x + standard_error.x, reference.y, reference.z}, reference);
-  const double dy = colourDifference({reference.x, reference.y + standard_error.y, reference.z}, reference);
-  const double dz = colourDifference({reference.x, reference.y, reference.z + standard_error.z}, reference);
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
+double referenceColourError(const colour::Xyz& reference, const colour::Xyz& half_difference) {
+  return colourDifference(
+      {reference.x + half_difference.x, reference.y + half_difference.y, reference.z + half_difference.z}, reference);
 }
 
 ColourErrorReport compareColourWithReference(const AtmosphereParameters& a, const QuerySet& queries,
@@ -119,7 +117,7 @@ ColourErrorReport compareColourWithReference(const AtmosphereParameters& a, cons
     s.luminance_errors.push_back(std::abs(value.y - ref.y) / ref.y);
     s.ciede2000.push_back(colourDifference(value, ref));
     s.reference_luminance_errors.push_back(r.standard_error.y / ref.y);
-    s.reference_ciede2000.push_back(referenceColourNoise(ref, xyzOf(r.standard_error)));
+    s.reference_ciede2000.push_back(referenceColourError(ref, xyzOf(r.half_difference)));
   };
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const std::string quantity = radianceQuantity(a, queries.radiance[i]);

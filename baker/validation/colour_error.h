@@ -50,11 +50,11 @@ MethodXyz bakeXyz(const Sky& sky, const MethodValues& values);
 // factor that puts the reference at kComparedLightness.
 double colourDifference(const colour::Xyz& value, const colour::Xyz& reference);
 
-// The reference's own noise in CIEDE2000 units at one query: the
-// difference one standard error of each of X, Y and Z makes, added in
-// quadrature (a linearised standard deviation that takes X, Y and Z's errors
-// as independent).
-double referenceColourNoise(const colour::Xyz& reference, const colour::Xyz& standard_error);
+// The reference's own error in CIEDE2000 units at one query, one draw of
+// it: the difference its half_difference (a draw of its error, with the
+// true covariance of X, Y and Z) makes. Its median and 95th percentile over
+// many queries are those of the reference's CIEDE2000 error.
+double referenceColourError(const colour::Xyz& reference, const colour::Xyz& half_difference);
 
 struct ColourErrorStats {
   int count = 0;                                    // queries compared
@@ -62,7 +62,7 @@ struct ColourErrorStats {
   double luminance_rms = 0.0, luminance_p95 = 0.0;  // relative
   double ciede2000_median = 0.0, ciede2000_p95 = 0.0, ciede2000_max = 0.0;
   double reference_luminance_standard_error = 0.0;                         // RMS of the relative standard error of Y
-  double reference_ciede2000_median = 0.0, reference_ciede2000_p95 = 0.0;  // referenceColourNoise
+  double reference_ciede2000_median = 0.0, reference_ciede2000_p95 = 0.0;  // referenceColourError
 };
 
 struct ColourErrorRow {

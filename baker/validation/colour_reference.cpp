@@ -1,6 +1,7 @@
 #include "baker/validation/colour_reference.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -51,21 +52,26 @@ ColourReferenceAtmospheres atmospheresFrom(ReadAt&& read_at) {
   return out;
 }
 
-// Independent seeds per group, from the query's own.
-uint64_t groupSeed(uint64_t seed, int group) { return stableHash(fmt::format("{:016x} colour group {}", seed, group)); }
+// Independent seeds per group and half, from the query's own.
+uint64_t groupSeed(uint64_t seed, int group, int half) {
+  return stableHash(fmt::format("{:016x} colour group {} half {}", seed, group, half));
+}
 
+// The two halves, each summed over the groups, and their mean.
 template <typename EstimateFn>
-ReferenceEstimate sumOverGroups(const ColourReferenceAtmospheres& colour, EstimateFn&& estimate) {
-  ReferenceEstimate total{SpectrumD(0.0), SpectrumD(0.0)};
+ColourEstimate sumOverGroups(const ColourReferenceAtmospheres& colour, EstimateFn&& estimate) {
+  std::array<SpectrumD, 2> half{SpectrumD(0.0), SpectrumD(0.0)};
   SpectrumD variance(0.0);
-  for (size_t g = 0; g < colour.groups.size(); ++g) {
-    const ReferenceEstimate e =
-        estimate(ReferenceSolver(colour.groups[g]), colour.group_lanes_to_xyz[g], static_cast<int>(g));
-    total.value += e.value;
-    variance += e.standard_error * e.standard_error;  // the groups' paths are independent
+  for (int h = 0; h < 2; ++h) {
+    for (size_t g = 0; g < colour.groups.size(); ++g) {
+      const ReferenceEstimate e =
+          estimate(ReferenceSolver(colour.groups[g]), colour.group_lanes_to_xyz[g], static_cast<int>(g), h);
+      half[h] += e.value;
+      variance += e.standard_error * e.standard_error;  // groups and halves trace independent paths
+    }
   }
-  total.standard_error = glm::sqrt(variance);
-  return total;
+  // The mean of the halves has a quarter of the summed variance.
+  return {0.5 * (half[0] + half[1]), 0.5 * glm::sqrt(variance), 0.5 * (half[0] - half[1])};
 }
 
 }  // namespace
@@ -92,24 +98,25 @@ void requireConfigOfBake(const std::filesystem::path& config_path, const Atmosph
       config_path.string(), fmt::join(bake.wavelengths_nm, ", ")));
 }
 
-int colourGroupPaths(int paths) {
+int colourGroupHalfPaths(int paths) {
   if (paths <= 0) return 0;
-  return std::max(kReplicates, (paths + kColourWavelengthGroups - 1) / kColourWavelengthGroups);
+  constexpr int kShares = 2 * kColourWavelengthGroups;
+  return std::max(kReplicates, (paths + kShares - 1) / kShares);
 }
 
-ReferenceEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour, const ReferenceRay& ray, int paths,
-                                          uint64_t seed) {
-  const int group_paths = colourGroupPaths(paths);
-  return sumOverGroups(colour, [&](const ReferenceSolver& solver, const glm::dmat4& to_xyz, int g) {
-    return solver.mappedRadiance(ray, group_paths, groupSeed(seed, g), to_xyz);
+ColourEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour, const ReferenceRay& ray, int paths,
+                                       uint64_t seed) {
+  const int half_paths = colourGroupHalfPaths(paths);
+  return sumOverGroups(colour, [&](const ReferenceSolver& solver, const glm::dmat4& to_xyz, int g, int h) {
+    return solver.mappedRadiance(ray, half_paths, groupSeed(seed, g, h), to_xyz);
   });
 }
 
-ReferenceEstimate colourSkyIrradianceReference(const ColourReferenceAtmospheres& colour, const glm::dvec3& point,
-                                               const glm::dvec3& sun, int paths, uint64_t seed) {
-  const int group_paths = colourGroupPaths(paths);
-  return sumOverGroups(colour, [&](const ReferenceSolver& solver, const glm::dmat4& to_xyz, int g) {
-    return solver.mappedSkyIrradiance(point, sun, group_paths, groupSeed(seed, g), to_xyz);
+ColourEstimate colourSkyIrradianceReference(const ColourReferenceAtmospheres& colour, const glm::dvec3& point,
+                                            const glm::dvec3& sun, int paths, uint64_t seed) {
+  const int half_paths = colourGroupHalfPaths(paths);
+  return sumOverGroups(colour, [&](const ReferenceSolver& solver, const glm::dmat4& to_xyz, int g, int h) {
+    return solver.mappedSkyIrradiance(point, sun, half_paths, groupSeed(seed, g, h), to_xyz);
   });
 }
 
@@ -142,15 +149,15 @@ ColourReferenceValues computeColourReference(const ColourReferenceAtmospheres& c
     if (item < queries.radiance.size()) {
       const RadianceQuery& q = queries.radiance[item];
       const QueryGeometry g = geometryOf(a, q);
-      const ReferenceEstimate e = colourRadianceReference(colour, {g.camera, g.view, g.sun, q.distance_m},
-                                                          settings.paths, stableHash(radianceKey(q)));
-      out.radiance[item] = {e.value, e.standard_error, SpectrumD(0.0)};
+      const ColourEstimate e = colourRadianceReference(colour, {g.camera, g.view, g.sun, q.distance_m}, settings.paths,
+                                                       stableHash(radianceKey(q)));
+      out.radiance[item] = {e.value, e.standard_error, SpectrumD(0.0), e.half_difference};
     } else {
       const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];
-      const ReferenceEstimate e = colourSkyIrradianceReference(colour, {0.0, 0.0, a.bottom_radius_m + q.altitude_m},
-                                                               directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
-                                                               settings.paths, stableHash(irradianceKey(q)));
-      out.irradiance[item - queries.radiance.size()] = {e.value, e.standard_error, SpectrumD(0.0)};
+      const ColourEstimate e = colourSkyIrradianceReference(colour, {0.0, 0.0, a.bottom_radius_m + q.altitude_m},
+                                                            directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
+                                                            settings.paths, stableHash(irradianceKey(q)));
+      out.irradiance[item - queries.radiance.size()] = {e.value, e.standard_error, SpectrumD(0.0), e.half_difference};
     }
   };
   auto store = [&](size_t item) {

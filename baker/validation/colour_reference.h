@@ -13,8 +13,11 @@
 // groups (each group traces paths / 11 of them, each path weighting its 4
 // wavelengths by their colour-matching weights): an unbiased estimate of
 // the 41-wavelength XYZ for the cost of a 4-channel reference, whose noise
-// in XYZ is about that of one channel with all the paths
-// (docs/COLOUR.md has the measured noise).
+// in XYZ is about that of one channel with all the paths. The paths are
+// traced as two independent halves, A and B, the estimate their mean:
+// (A - B) / 2 is then a draw of the estimate's own error, with its true
+// covariance across X, Y and Z, so the reference's noise in CIEDE2000 units
+// is measured, not modelled (docs/COLOUR.md).
 #pragma once
 
 #include <filesystem>
@@ -58,19 +61,25 @@ ColourReferenceAtmospheres colourReferenceAtmospheresFromFile(const std::filesys
 // may have settled).
 void requireConfigOfBake(const std::filesystem::path& config_path, const AtmosphereParameters& bake);
 
-// The paths each group traces for a reference of `paths` paths: a share,
-// at least one per replicate.
-int colourGroupPaths(int paths);
+// The paths each group traces in each half for a reference of `paths`
+// paths: a share, at least one per replicate.
+int colourGroupHalfPaths(int paths);
 
 // XYZ (in x, y, z; w is 0) of one query's reference, W m^-2 sr^-1 for
-// radiance and W m^-2 for irradiance, with its standard error.
-ReferenceEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour, const ReferenceRay& ray, int paths,
-                                          uint64_t seed);
-ReferenceEstimate colourSkyIrradianceReference(const ColourReferenceAtmospheres& colour, const glm::dvec3& point,
-                                               const glm::dvec3& sun, int paths, uint64_t seed);
+// radiance and W m^-2 for irradiance.
+struct ColourEstimate {
+  SpectrumD value;            // (A + B) / 2
+  SpectrumD standard_error;   // from the replicates of both halves
+  SpectrumD half_difference;  // (A - B) / 2: a draw of the error of `value`
+};
+ColourEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour, const ReferenceRay& ray, int paths,
+                                       uint64_t seed);
+ColourEstimate colourSkyIrradianceReference(const ColourReferenceAtmospheres& colour, const glm::dvec3& point,
+                                            const glm::dvec3& sun, int paths, uint64_t seed);
 
 struct ColourReferenceValues {
-  std::vector<CachedReference> radiance;  // XYZ per radiance query (transmittance unused)
+  // XYZ per radiance query, with its half_difference (transmittance unused)
+  std::vector<CachedReference> radiance;
   std::vector<CachedReference> irradiance;
   double seconds = 0.0;
   int computed = 0;

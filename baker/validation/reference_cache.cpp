@@ -35,7 +35,8 @@ bool readChunkFile(const std::filesystem::path& file, std::map<std::string, Cach
   try {
     for (const auto& [query, e] : j["entries"].items()) {
       read[query] = {spectrumFromJson(e.at("value")), spectrumFromJson(e.at("standard_error")),
-                     spectrumFromJson(e.at("transmittance"))};
+                     spectrumFromJson(e.at("transmittance")),
+                     e.contains("half_difference") ? spectrumFromJson(e.at("half_difference")) : SpectrumD(0.0)};
     }
   } catch (const std::exception&) {
     return false;
@@ -101,7 +102,7 @@ std::string atmosphereKeyText(const AtmosphereParameters& atmosphere) {
 
 // Bumped whenever the colour reference's results change (its wavelengths,
 // their groups, its seeds), beside the solver's own version.
-constexpr int kColourReferenceVersion = 1;
+constexpr int kColourReferenceVersion = 2;  // 2: two independent halves
 
 }  // namespace
 
@@ -169,6 +170,7 @@ void ReferenceCache::saveChunk() {
     entries[query] = {{"value", toJson(e.value)},
                       {"standard_error", toJson(e.standard_error)},
                       {"transmittance", toJson(e.transmittance)}};
+    if (e.half_difference != SpectrumD(0.0)) entries[query]["half_difference"] = toJson(e.half_difference);
   }
   std::error_code error;
   std::filesystem::create_directories(directory_, error);

@@ -26,6 +26,9 @@ struct CachedReference {
   SpectrumD value;
   SpectrumD standard_error;
   SpectrumD transmittance;
+  // A colour reference's (A - B) / 2 of its two halves (colour_reference.h);
+  // zero, and not written, for a spectral reference.
+  SpectrumD half_difference{0.0};
 };
 
 // FNV-1a, 64 bit: stable across platforms and runs, for cache keys and seeds.

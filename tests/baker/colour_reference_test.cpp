@@ -104,12 +104,13 @@ TEST(ColourReference, GroupsCoverTheVisibleWavelengthsOnce) {
 TEST(ColourReference, SingleScatteringIsTheXyzOfEachWavelength) {
   const ColourReferenceAtmospheres colour = colourAtmospheres();
   for (const ReferenceRay& ray : testRays(colour.groups.front())) {
-    const ReferenceEstimate c = colourRadianceReference(colour, ray, 0, 7);
+    const ColourEstimate c = colourRadianceReference(colour, ray, 0, 7);
     const ReferenceEstimate s = xyzOfPerWavelengthReferences(colour, ray, 0, 7);
     for (int i = 0; i < 3; ++i) {
       ASSERT_GT(s.value[i], 0.0);
       EXPECT_NEAR(c.value[i] / s.value[i], 1.0, 1e-12) << i;
       EXPECT_EQ(c.standard_error[i], 0.0);
+      EXPECT_EQ(c.half_difference[i], 0.0);
     }
   }
 }
@@ -126,9 +127,9 @@ TEST(ColourReference, PathsAgreeWithPerWavelengthReferencesWithinStandardError) 
   const ColourReferenceAtmospheres colour = colourAtmospheres();
   constexpr int kPaths = 8192;
   for (const ReferenceRay& ray : testRays(colour.groups.front())) {
-    const ReferenceEstimate c = colourRadianceReference(colour, ray, kPaths, 11);
-    const ReferenceEstimate s = xyzOfPerWavelengthReferences(colour, ray, 4 * colourGroupPaths(kPaths), 1234);
-    const ReferenceEstimate single = colourRadianceReference(colour, ray, 0, 11);
+    const ColourEstimate c = colourRadianceReference(colour, ray, kPaths, 11);
+    const ReferenceEstimate s = xyzOfPerWavelengthReferences(colour, ray, 8 * colourGroupHalfPaths(kPaths), 1234);
+    const ColourEstimate single = colourRadianceReference(colour, ray, 0, 11);
     for (int i = 0; i < 3; ++i) {
       const double combined = std::hypot(c.standard_error[i], s.standard_error[i]);
       EXPECT_GT(c.standard_error[i], 0.0);
@@ -137,6 +138,41 @@ TEST(ColourReference, PathsAgreeWithPerWavelengthReferencesWithinStandardError) 
       EXPECT_GT(c.value[i] - single.value[i], 20.0 * combined) << i;
     }
   }
+}
+
+// The reference's CIEDE2000 error as its halves measure it
+// (referenceColourError of each estimate's half_difference) against the
+// spread of independent colour references of one query (their CIEDE2000
+// from their mean, n - 1 degrees of freedom): both are RMS of 24 draws of
+// one error's distribution, each known to about +-15 % (a chi variable of
+// one to three degrees of freedom), so they agree within a factor of 1.6
+// either way (64 estimates of 4096 paths: 0.265 and 0.277). Modelling X, Y
+// and Z's errors as independent instead overstates it about twice (their
+// shared paths move mostly lightness), full correlation understates it
+// about twice. Few paths per replicate (2048 paths in all: 5 each) spread
+// the halves' figure wider.
+TEST(ColourReference, HalvesMeasureTheSpreadOfIndependentEstimates) {
+  const ColourReferenceAtmospheres colour = colourAtmospheres();
+  const ReferenceRay ray = testRays(colour.groups.front())[0];
+  constexpr int kEstimates = 24, kPaths = 4096;
+  std::vector<ColourEstimate> estimates;
+  SpectrumD mean(0.0);
+  for (int i = 0; i < kEstimates; ++i) {
+    estimates.push_back(colourRadianceReference(colour, ray, kPaths, 100 + i));
+    mean += estimates.back().value / static_cast<double>(kEstimates);
+  }
+  auto xyz = [](const SpectrumD& s) { return colour::Xyz{s.x, s.y, s.z}; };
+  double spread2 = 0.0, halves2 = 0.0;
+  for (const ColourEstimate& e : estimates) {
+    const double spread = colourDifference(xyz(e.value), xyz(mean));
+    const double halves = referenceColourError(xyz(e.value), xyz(e.half_difference));
+    spread2 += spread * spread;
+    halves2 += halves * halves;
+  }
+  const double measured = std::sqrt(spread2 / (kEstimates - 1)), from_halves = std::sqrt(halves2 / kEstimates);
+  EXPECT_GT(from_halves, 0.0);
+  EXPECT_LT(measured / from_halves, 1.6) << measured << " vs " << from_halves;
+  EXPECT_GT(measured / from_halves, 1.0 / 1.6) << measured << " vs " << from_halves;
 }
 
 TEST(ColourReference, RefusesAConfigThatIsNotTheBakes) {
