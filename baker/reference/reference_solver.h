@@ -50,7 +50,7 @@ class ReferenceSolver {
   // channel c adds to each output), for a quantity summed over channels
   // such as CIE XYZ. Each path's contribution is mapped before it is
   // averaged, so the standard error counts the channels' correlation (one
-  // path serves them all). The identity gives radiance() exactly.
+  // path serves them all). radiance() is the same estimate unmapped.
   ReferenceEstimate mappedRadiance(const ReferenceRay& ray, int paths, uint64_t seed,
                                    const glm::dmat4& lanes_to_output) const;
 
