@@ -1,5 +1,8 @@
 // skybake validate FILE.exr [--queries standard|quick|Q.csv] [--reference-samples N] [--json OUT.json]
+//                          [--colour-config CONFIG.toml]
 #include <omp.h>
+
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -10,6 +13,8 @@
 #include "baker/cli/terminal_progress.h"
 #include "baker/cli/wavelength_channels.h"
 #include "baker/stages/openmp_threads.h"
+#include "baker/validation/colour_error.h"
+#include "baker/validation/colour_reference.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
@@ -24,15 +29,34 @@ struct ValidateOptions {
   std::string json_path;
   std::string details_path;
   std::string cache_dir;
+  std::string colour_config;  // empty: no colour error
   bool no_cache = false;
   int threads = 0;
 };
 
-// One row per query: the bake's and the reference's values side by side.
+// The colour columns of a details row, or nothing without a colour reference.
+struct ColourDetails {
+  const ColourReferenceValues* reference = nullptr;
+  const MethodXyz* bake = nullptr;
+};
+
+std::string colourColumns(const colour::Xyz& bake, const CachedReference& reference) {
+  return fmt::format(",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.3g},{:.4g}", bake.x, bake.y, bake.z,
+                     reference.value.x, reference.value.y, reference.value.z, reference.standard_error.y,
+                     reference.value.y > 0.0
+                         ? colourDifference(bake, {reference.value.x, reference.value.y, reference.value.z})
+                         : 0.0);
+}
+
+// One row per query: the bake's and the reference's values side by side
+// (and their CIE XYZ and CIEDE2000 with a colour reference).
 void writeDetails(const std::string& path, const AtmosphereParameters& a, const QuerySet& queries,
-                  const ReferenceValues& reference, const MethodValues& bake) {
+                  const ReferenceValues& reference, const MethodValues& bake, const ColourDetails& colour) {
   std::string text = "kind,altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m";
   for (double w : a.wavelengths_nm) text += fmt::format(",bake_{0},reference_{0},reference_error_{0}", w);
+  if (colour.reference != nullptr) {
+    text += ",bake_X,bake_Y,bake_Z,reference_X,reference_Y,reference_Z,reference_error_Y,ciede2000";
+  }
   text += "\n";
   const int n = a.channelCount();
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
@@ -43,6 +67,7 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
       text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.radiance[i][c], reference.radiance[i].value[c],
                           reference.radiance[i].standard_error[c]);
     }
+    if (colour.reference != nullptr) text += colourColumns(colour.bake->radiance[i], colour.reference->radiance[i]);
     text += "\n";
   }
   for (size_t i = 0; i < queries.irradiance.size(); ++i) {
@@ -52,6 +77,9 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
       text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.irradiance[i][c], reference.irradiance[i].value[c],
                           reference.irradiance[i].standard_error[c]);
     }
+    if (colour.reference != nullptr) {
+      text += colourColumns(colour.bake->irradiance[i], colour.reference->irradiance[i]);
+    }
     text += "\n";
   }
   writeFileContentsAtomically(path, text);
@@ -60,12 +88,19 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
 void runValidate(const ValidateOptions& o) {
   const ScopedOpenMpThreads thread_count(o.threads);
   for (const std::string& output : {o.json_path, o.details_path}) {
-    if (!output.empty()) requireWritableOutput(output, {o.bake_path, o.queries});
+    if (!output.empty()) requireWritableOutput(output, {o.bake_path, o.queries, o.colour_config});
   }
   const Sky sky = Sky::load(o.bake_path);
   requireWavelengthChannels(sky.atmosphere(), o.bake_path, "validate");
   requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
+  // A config that cannot give the colour reference is refused before any
+  // reference is computed.
+  std::optional<ColourReferenceAtmospheres> colour_atmospheres;
+  if (!o.colour_config.empty()) {
+    requireConfigOfBake(o.colour_config, a);
+    colour_atmospheres = colourReferenceAtmospheresFromFile(o.colour_config);
+  }
   std::string left_out;
   const QuerySet queries =
       queriesAnsweredBy(sky, querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m), left_out);
@@ -75,6 +110,14 @@ void runValidate(const ValidateOptions& o) {
   const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
   const MethodValues bake = evaluateBake(sky, queries);
   const ErrorReport report = compareWithReference(a, queries, reference, bake, settings.paths);
+  ColourReferenceValues colour_reference;
+  MethodXyz bake_xyz;
+  ColourValidation colour_report;
+  if (colour_atmospheres) {
+    colour_reference = computeColourReference(*colour_atmospheres, queries, settings, progress);
+    bake_xyz = bakeXyz(sky, bake);
+    colour_report = validateColour(sky, queries, reference, colour_reference, bake, settings.paths);
+  }
 
   fmt::print(
       "validate {} against the reference ({} paths per query), query set '{}': {} radiance and {} "
@@ -85,15 +128,35 @@ void runValidate(const ValidateOptions& o) {
       "relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
       "0 to 10, twilight: -10 to 0\n\n{}",
       kSmallestComparedValue, report.table());
+  if (colour_atmospheres) {
+    fmt::print(
+        "\ncolour against the reference in CIE XYZ from {} wavelengths, {:g} to {:g} nm ({} from the cache, {} "
+        "computed in {:.1f} s): luminance |Y - Yref| / Yref; CIEDE2000 with both scaled so that the reference "
+        "has L* = {:g} (sRGB white); reference Y below {:.3g} skipped\n\n{}",
+        kColourReferenceWavelengthCount, kColourReferenceFirst_nm, kColourReferenceLast_nm, colour_reference.cached,
+        colour_reference.computed, colour_reference.seconds, kComparedLightness, smallestComparedY(),
+        colour_report.bake.table());
+    fmt::print(
+        "\nthe same for the spectral reference at the bake's own wavelengths (a bake without table error: what "
+        "sampling the spectrum there costs)\n\n{}",
+        colour_report.sampling.table());
+  }
   if (!left_out.empty()) fmt::print("\n{}\n", left_out);
 
   nlohmann::ordered_json j = report.toJson();
+  if (colour_atmospheres) {
+    j["colour"] = colour_report.toJson();
+    j["colour"]["config"] = o.colour_config;
+  }
   j["bake_file"] = o.bake_path;
   j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
   if (!o.json_path.empty()) {
     writeFileContentsAtomically(o.json_path, j.dump(2) + "\n");
   }
-  if (!o.details_path.empty()) writeDetails(o.details_path, a, queries, reference, bake);
+  if (!o.details_path.empty()) {
+    writeDetails(o.details_path, a, queries, reference, bake,
+                 colour_atmospheres ? ColourDetails{&colour_reference, &bake_xyz} : ColourDetails{});
+  }
   nlohmann::ordered_json sidecar = readReportSidecar(o.bake_path);
   // A sidecar describes the bake whose report it repeats. One that repeats
   // another (left by a bake interrupted between its two renames, or copied
@@ -120,6 +183,11 @@ Command addValidateCommand(CLI::App& app) {
   addReferenceOptions(*cmd, o->queries, o->reference_samples, o->cache_dir);
   cmd->add_option("--json", o->json_path, "Also write the report as JSON here.");
   cmd->add_option("--details", o->details_path, "Also write every query's bake and reference values (CSV).");
+  cmd->add_option("--colour-config", o->colour_config,
+                  "Also report colour error (luminance, CIEDE2000) against a reference in CIE XYZ from 41 "
+                  "wavelengths, 380 to 780 nm, the atmosphere there read from this config's spectra: the config "
+                  "the bake was made from. Refused for a config with a per-wavelength key given as a list of "
+                  "differing values, or a spectrum that stops short of 380 or 780 nm (docs/COLOUR.md).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
   addThreadsOption(*cmd, o->threads);
   return {cmd, [o] { runValidate(*o); }};

@@ -1,14 +1,19 @@
 // skybake._skybake.validate: a bake's error against the independent
 // reference, as `skybake validate` measures it, returned as the report's
-// JSON object (the same keys as `validate --json`). The reference cache is
+// JSON object (the same keys as `validate --json`; with colour_config, its
+// "colour" object too: luminance and CIEDE2000 per sun band against the
+// colour reference, docs/COLOUR.md). The reference cache is
 // shared with the command line; unlike it, this writes no report sidecar.
 #include <pybind11/pybind11.h>
 
+#include <optional>
 #include <string>
 
 #include "baker/cli/terminal_progress.h"
 #include "baker/python/python_bindings.h"
 #include "baker/stages/openmp_threads.h"
+#include "baker/validation/colour_error.h"
+#include "baker/validation/colour_reference.h"
 #include "baker/validation/validation.h"
 #include "baker/validation/validation_queries.h"
 #include "runtime/sky.h"
@@ -19,13 +24,18 @@ namespace skybake::python {
 namespace {
 
 py::object validate(const std::string& bake_path, const std::string& queries_name, int reference_samples,
-                    const std::string& cache_dir, bool no_cache, int threads) {
+                    const std::string& cache_dir, bool no_cache, int threads, const std::string& colour_config) {
   std::string report_json;
   {
     py::gil_scoped_release release;
     const ScopedOpenMpThreads thread_count(threads);
     const Sky sky = Sky::load(bake_path);
     const AtmosphereParameters& a = sky.atmosphere();
+    std::optional<ColourReferenceAtmospheres> colour;
+    if (!colour_config.empty()) {
+      requireConfigOfBake(colour_config, a);
+      colour = colourReferenceAtmospheresFromFile(colour_config);
+    }
     std::string left_out;
     const QuerySet queries =
         queriesAnsweredBy(sky, querySetNamed(queries_name, a.top_radius_m - a.bottom_radius_m), left_out);
@@ -34,6 +44,11 @@ py::object validate(const std::string& bake_path, const std::string& queries_nam
     const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
     const MethodValues bake = evaluateBake(sky, queries);
     nlohmann::ordered_json j = compareWithReference(a, queries, reference, bake, settings.paths).toJson();
+    if (colour) {
+      const ColourReferenceValues colour_reference = computeColourReference(*colour, queries, settings, progress);
+      j["colour"] = validateColour(sky, queries, reference, colour_reference, bake, settings.paths).toJson();
+      j["colour"]["config"] = colour_config;
+    }
     j["bake_file"] = bake_path;
     j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
     if (!left_out.empty()) j["left_out"] = left_out;
@@ -47,7 +62,7 @@ py::object validate(const std::string& bake_path, const std::string& queries_nam
 void registerValidate(py::module_& m) {
   m.def("validate", &validate, py::arg("bake"), py::arg("queries") = "standard",
         py::arg("reference_samples") = ReferenceSettings{}.paths, py::arg("cache_dir") = "",
-        py::arg("no_cache") = false, py::arg("threads") = 0);
+        py::arg("no_cache") = false, py::arg("threads") = 0, py::arg("colour_config") = "");
 }
 
 }  // namespace skybake::python

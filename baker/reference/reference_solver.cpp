@@ -317,17 +317,53 @@ ReferenceEstimate estimateOverReplicates(int paths, uint64_t seed, PathFn&& path
 
 ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere) : a_(atmosphere) {}
 
-ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed) const {
-  const PathTracer tracer(a_);
+namespace {
+
+// The radiance estimate with each contribution through `map` (a linear map
+// of the channels, or the identity).
+template <typename MapFn>
+ReferenceEstimate radianceThrough(const AtmosphereParameters& a, const ReferenceRay& query, int paths, uint64_t seed,
+                                  MapFn&& map) {
+  const PathTracer tracer(a);
   const AtmosphereRay ray =
-      atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, query.camera, query.view, query.distance_m);
+      atmosphereRay(a.bottom_radius_m, a.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
   const bool ground_end = ray.ends_on_ground && !(query.distance_m > 0.0);
-  const SpectrumD single = tracer.singleScattering(ray, query.sun, ground_end);
-  ReferenceEstimate e = estimateOverReplicates(
-      paths, seed, [&](PathSampler& sampler) { return tracer.tracePath(ray, query.sun, ground_end, true, sampler); });
+  const SpectrumD single = map(tracer.singleScattering(ray, query.sun, ground_end));
+  ReferenceEstimate e = estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
+    return map(tracer.tracePath(ray, query.sun, ground_end, true, sampler));
+  });
   e.value += single;
   return e;
+}
+
+template <typename MapFn>
+ReferenceEstimate skyIrradianceThrough(const AtmosphereParameters& a, const glm::dvec3& point, const glm::dvec3& sun,
+                                       int paths, uint64_t seed, MapFn&& map) {
+  const PathTracer tracer(a);
+  const double length = glm::length(point);
+  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec3 start = up * std::clamp(length, a.bottom_radius_m, a.top_radius_m);
+  return estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
+    // Cosine-weighted directions: irradiance = pi x mean radiance.
+    const double u_cos = sampler.next(), u_phi = sampler.next();
+    const glm::dvec3 dir = directionAround(up, std::sqrt(u_cos), 2.0 * kPi * u_phi);
+    const AtmosphereRay ray = atmosphereRay(a.bottom_radius_m, a.top_radius_m, start, dir, 0.0);
+    return ray.inside ? map(tracer.tracePath(ray, sun, true, false, sampler) * kPi) : SpectrumD(0.0);
+  });
+}
+
+SpectrumD unmapped(const SpectrumD& s) { return s; }
+
+}  // namespace
+
+ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed) const {
+  return radianceThrough(a_, query, paths, seed, unmapped);
+}
+
+ReferenceEstimate ReferenceSolver::mappedRadiance(const ReferenceRay& query, int paths, uint64_t seed,
+                                                  const glm::dmat4& lanes_to_output) const {
+  return radianceThrough(a_, query, paths, seed, [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 
 SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
@@ -339,17 +375,12 @@ SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
 
 ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
                                                  uint64_t seed) const {
-  const PathTracer tracer(a_);
-  const double length = glm::length(point);
-  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
-  const glm::dvec3 start = up * std::clamp(length, a_.bottom_radius_m, a_.top_radius_m);
-  return estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
-    // Cosine-weighted directions: irradiance = pi x mean radiance.
-    const double u_cos = sampler.next(), u_phi = sampler.next();
-    const glm::dvec3 dir = directionAround(up, std::sqrt(u_cos), 2.0 * kPi * u_phi);
-    const AtmosphereRay ray = atmosphereRay(a_.bottom_radius_m, a_.top_radius_m, start, dir, 0.0);
-    return ray.inside ? tracer.tracePath(ray, sun, true, false, sampler) * kPi : SpectrumD(0.0);
-  });
+  return skyIrradianceThrough(a_, point, sun, paths, seed, unmapped);
+}
+
+ReferenceEstimate ReferenceSolver::mappedSkyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
+                                                       uint64_t seed, const glm::dmat4& lanes_to_output) const {
+  return skyIrradianceThrough(a_, point, sun, paths, seed, [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 
 }  // namespace skybake

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "data_formats/atmosphere_parameters.h"
@@ -44,11 +45,23 @@ class ReferenceSolver {
   // ground. The direct sun disk is not included.
   ReferenceEstimate radiance(const ReferenceRay& ray, int paths, uint64_t seed) const;
 
+  // The same estimate of a linear map of the channels, lanes_to_output *
+  // radiance (glm's column convention: column c holds what one unit of
+  // channel c adds to each output), for a quantity summed over channels
+  // such as CIE XYZ. Each path's contribution is mapped before it is
+  // averaged, so the standard error counts the channels' correlation (one
+  // path serves them all). radiance() is the same estimate unmapped.
+  ReferenceEstimate mappedRadiance(const ReferenceRay& ray, int paths, uint64_t seed,
+                                   const glm::dmat4& lanes_to_output) const;
+
   // Transmittance along the same segment (exact quadrature, no noise).
   SpectrumD transmittance(const ReferenceRay& ray) const;
 
   // Sky irradiance (direct sun excluded) on a horizontal surface at `point`.
   ReferenceEstimate skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths, uint64_t seed) const;
+  // Sky irradiance through a linear map of the channels, as mappedRadiance.
+  ReferenceEstimate mappedSkyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths, uint64_t seed,
+                                        const glm::dmat4& lanes_to_output) const;
 
  private:
   const AtmosphereParameters& a_;

@@ -35,7 +35,8 @@ bool readChunkFile(const std::filesystem::path& file, std::map<std::string, Cach
   try {
     for (const auto& [query, e] : j["entries"].items()) {
       read[query] = {spectrumFromJson(e.at("value")), spectrumFromJson(e.at("standard_error")),
-                     spectrumFromJson(e.at("transmittance"))};
+                     spectrumFromJson(e.at("transmittance")),
+                     e.contains("half_difference") ? spectrumFromJson(e.at("half_difference")) : SpectrumD(0.0)};
     }
   } catch (const std::exception&) {
     return false;
@@ -83,12 +84,10 @@ namespace {
 constexpr double kKeySunMaxZenith_deg = 102.0;
 constexpr int kKeyScatteringMuS = 32;
 
-}  // namespace
-
-ReferenceCache::ReferenceCache(const std::filesystem::path& directory, const AtmosphereParameters& atmosphere,
-                               int paths) {
-  if (directory.empty()) return;
-  BakeConfig physics_only;  // fixed sizes and default settings: only the atmosphere enters the key
+// The text of an atmosphere that enters a cache key: its config with fixed
+// sizes and default settings, so that only the atmosphere counts.
+std::string atmosphereKeyText(const AtmosphereParameters& atmosphere) {
+  BakeConfig physics_only;
   physics_only.name = "reference";
   physics_only.atmosphere = atmosphere;
   // The lowest tabulated sun is the tables' domain, not physics: bakes that
@@ -98,9 +97,34 @@ ReferenceCache::ReferenceCache(const std::filesystem::path& directory, const Atm
   physics_only.atmosphere.sun_max_zenith_deg = kKeySunMaxZenith_deg;
   physics_only.sizes = TextureSizes{};
   physics_only.sizes.scattering_mu_s = kKeyScatteringMuS;
+  return configToToml(physics_only);
+}
+
+// Bumped whenever the colour reference's results change (its wavelengths,
+// their groups, its seeds), beside the solver's own version.
+constexpr int kColourReferenceVersion = 2;  // 2: two independent halves
+
+}  // namespace
+
+ReferenceCache::ReferenceCache(const std::filesystem::path& directory, const AtmosphereParameters& atmosphere,
+                               int paths) {
+  if (directory.empty()) return;
   const uint64_t key =
-      stableHash(fmt::format("solver {}\npaths {}\n{}", kReferenceSolverVersion, paths, configToToml(physics_only)));
-  directory_ = directory / fmt::format("reference-{:016x}", key);
+      stableHash(fmt::format("solver {}\npaths {}\n{}", kReferenceSolverVersion, paths, atmosphereKeyText(atmosphere)));
+  openDirectory(directory / fmt::format("reference-{:016x}", key));
+}
+
+ReferenceCache::ReferenceCache(const std::filesystem::path& directory,
+                               const std::vector<AtmosphereParameters>& colour_groups, int paths) {
+  if (directory.empty()) return;
+  std::string text =
+      fmt::format("colour {}\nsolver {}\npaths {}\n", kColourReferenceVersion, kReferenceSolverVersion, paths);
+  for (const AtmosphereParameters& group : colour_groups) text += atmosphereKeyText(group);
+  openDirectory(directory / fmt::format("colour-reference-{:016x}", stableHash(text)));
+}
+
+void ReferenceCache::openDirectory(const std::filesystem::path& directory) {
+  directory_ = directory;
   // A cache written as one file (before caches were directories) is read as
   // one more chunk, never removed.
   readChunkFile(std::filesystem::path(directory_.string() + ".json"), entries_);
@@ -146,6 +170,7 @@ void ReferenceCache::saveChunk() {
     entries[query] = {{"value", toJson(e.value)},
                       {"standard_error", toJson(e.standard_error)},
                       {"transmittance", toJson(e.transmittance)}};
+    if (e.half_difference != SpectrumD(0.0)) entries[query]["half_difference"] = toJson(e.half_difference);
   }
   std::error_code error;
   std::filesystem::create_directories(directory_, error);

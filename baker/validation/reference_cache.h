@@ -26,6 +26,9 @@ struct CachedReference {
   SpectrumD value;
   SpectrumD standard_error;
   SpectrumD transmittance;
+  // A colour reference's (A - B) / 2 of its two halves (colour_reference.h);
+  // zero, and not written, for a spectral reference.
+  SpectrumD half_difference{0.0};
 };
 
 // FNV-1a, 64 bit: stable across platforms and runs, for cache keys and seeds.
@@ -46,6 +49,14 @@ class ReferenceCache {
   // An empty directory disables the cache.
   ReferenceCache(const std::filesystem::path& directory, const AtmosphereParameters& atmosphere, int paths);
 
+  // The cache of a colour reference (colour_reference.h): CIE XYZ in the
+  // first three lanes of each value, from the atmospheres of its wavelength
+  // groups. Its directory is named "colour-reference-" and a hash of every
+  // group's atmosphere, so it never shares a directory with a spectral
+  // reference (whose directories stay as they were).
+  ReferenceCache(const std::filesystem::path& directory, const std::vector<AtmosphereParameters>& colour_groups,
+                 int paths);
+
   std::optional<CachedReference> find(const std::string& query_key) const;
   // Kept in memory until the next saveChunk().
   void store(const std::string& query_key, const CachedReference& result);
@@ -58,6 +69,7 @@ class ReferenceCache {
 
  private:
   void readChunks();
+  void openDirectory(const std::filesystem::path& directory);
 
   std::filesystem::path directory_;
   std::map<std::string, CachedReference> entries_;

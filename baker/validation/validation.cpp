@@ -31,6 +31,20 @@ RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
 
 }  // namespace
 
+std::string radianceQuantity(const AtmosphereParameters& a, const RadianceQuery& q) {
+  switch (rayKind(a, q)) {
+    case RayKind::Sky:
+      return "sky_radiance";
+    case RayKind::Ground:
+      return "ground_radiance";
+    case RayKind::ToPoint:
+      return "radiance_to_point";
+    case RayKind::Misses:
+      break;
+  }
+  return "";
+}
+
 std::string radianceKey(const RadianceQuery& q) {
   return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
                      q.distance_m);
@@ -67,6 +81,37 @@ std::vector<size_t> queriesMissingFromCache(const ReferenceCache& cache, const Q
     if (!cache.find(irradianceKey(queries.irradiance[i]))) missing.push_back(queries.radiance.size() + i);
   }
   return missing;
+}
+
+double computeInCheckpointedBatches(const std::vector<size_t>& items, const std::string& stage, ProgressSink& progress,
+                                    ReferenceCache& cache, const std::function<void(size_t)>& compute,
+                                    const std::function<void(size_t)>& store) {
+  const auto start = std::chrono::steady_clock::now();
+  auto last_checkpoint = start;
+  progress.beginStage(stage, items.size());
+  // In batches, so that what is done is saved to the cache at least every
+  // kReferenceCheckpointSeconds. Each query has its own seed (a hash of the
+  // query), so results depend neither on the order, the batches nor the
+  // thread that computes them.
+  const size_t batch = std::max<size_t>(kReferenceQueriesPerThreadPerBatch * omp_get_max_threads(), 1);
+  for (size_t first = 0; first < items.size(); first += batch) {
+    const size_t last = std::min(first + batch, items.size());
+#pragma omp parallel for schedule(dynamic)
+    for (size_t k = first; k < last; ++k) {
+      compute(items[k]);
+      progress.advance(1);
+    }
+    for (size_t k = first; k < last; ++k) store(items[k]);
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_checkpoint).count() >= kReferenceCheckpointSeconds) {
+      cache.saveChunk();
+      last_checkpoint = now;
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.endStage(seconds);
+  cache.saveChunk();
+  return seconds;
 }
 
 ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const QuerySet& queries,
@@ -107,32 +152,8 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
       cache.store(irradianceKey(queries.irradiance[i]), out.irradiance[i]);
     }
   };
-  const auto start = std::chrono::steady_clock::now();
-  auto last_checkpoint = start;
-  progress.beginStage("reference", missing.size());
-  // In batches, so that what is done is saved to the cache at least every
-  // kReferenceCheckpointSeconds. Each query has its own seed (a hash of the
-  // query), so results depend neither on the order, the batches nor the
-  // thread that computes them.
-  const size_t batch = std::max<size_t>(kReferenceQueriesPerThreadPerBatch * omp_get_max_threads(), 1);
-  for (size_t first = 0; first < missing.size(); first += batch) {
-    const size_t last = std::min(first + batch, missing.size());
-#pragma omp parallel for schedule(dynamic)
-    for (size_t k = first; k < last; ++k) {
-      compute(missing[k]);
-      progress.advance(1);
-    }
-    for (size_t k = first; k < last; ++k) storeInCache(missing[k]);
-    const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - last_checkpoint).count() >= kReferenceCheckpointSeconds) {
-      cache.saveChunk();
-      last_checkpoint = now;
-    }
-  }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  progress.endStage(out.seconds);
+  out.seconds = computeInCheckpointedBatches(missing, "reference", progress, cache, compute, storeInCache);
   out.computed = static_cast<int>(missing.size());
-  cache.saveChunk();
   return out;
 }
 
@@ -292,11 +313,8 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
   StatsBuilder stats;
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
-    const RayKind kind = rayKind(a, q);
-    if (kind == RayKind::Misses) continue;
-    const char* quantity = kind == RayKind::Sky      ? "sky_radiance"
-                           : kind == RayKind::Ground ? "ground_radiance"
-                                                     : "radiance_to_point";
+    const std::string quantity = radianceQuantity(a, q);
+    if (quantity.empty()) continue;
     const char* band = sunBandName(sunBand(q.sun_zenith_deg));
     const CachedReference& r = reference.radiance[i];
     for (int c = 0; c < channels; ++c) {

@@ -3,6 +3,7 @@
 // per sun band, for sky rays, ground rays and rays to a point separately.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,14 @@ inline constexpr int kReferenceQueriesPerThreadPerBatch = 16;
 // limit leaves its work for the next one.
 inline constexpr double kReferenceCheckpointSeconds = 60.0;
 
+// Runs compute(item) for every item in parallel batches and store(item) for
+// each after its batch, in order, saving the cache at least every
+// kReferenceCheckpointSeconds and at the end. Returns the seconds spent.
+// Shared by the spectral and the colour reference.
+double computeInCheckpointedBatches(const std::vector<size_t>& items, const std::string& stage, ProgressSink& progress,
+                                    ReferenceCache& cache, const std::function<void(size_t)>& compute,
+                                    const std::function<void(size_t)>& store);
+
 // The reference for every query of the set, from the cache where it holds
 // them; the rest computed and added to the cache as it goes.
 ReferenceValues computeReferenceValues(const AtmosphereParameters& atmosphere, const QuerySet& queries,
@@ -85,6 +94,11 @@ struct MethodValues {
 };
 
 MethodValues evaluateBake(const Sky& sky, const QuerySet& queries);
+
+// The quantity a radiance query measures: "sky_radiance", "ground_radiance"
+// (a ray that ends on the ground), "radiance_to_point" (a query with a
+// distance), or "" for a ray that misses the atmosphere.
+std::string radianceQuantity(const AtmosphereParameters& atmosphere, const RadianceQuery& query);
 
 // The queries a bake answers: without radiance to points (scene.outputs) no
 // query with a distance; without ground irradiance no ray that ends on the

@@ -168,6 +168,11 @@ radiance "q.csv:3:2 (sun_zenith_deg): 'thirty' is not a finite number"
 printf '%s\n0,30,nan,0\n' "$header" >"$work/q.csv"
 radiance "q.csv:2:3 (view_zenith_deg): 'nan' is not a finite number"
 kept "$work/existing.csv" "q.csv:2:3 (view_zenith_deg): 'nan' is not a finite number" -- validate "$work/good.exr" --queries "$work/q.csv" --no-cache --json "$work/existing.csv"
+# validate --colour-config: a config whose per-wavelength lists cannot be
+# read at other wavelengths, and one that does not exist; the key or file is
+# named, the earlier output kept.
+kept "$work/existing.csv" "small_earth.toml:13: sun.irradiance = [1.474, 1.8504, 1.91198]: a list of one value per wavelength cannot be read at other wavelengths" -- validate "$work/good.exr" --queries quick --no-cache --colour-config "$small" --json "$work/existing.csv"
+kept "$work/existing.csv" "none.toml: cannot open config file" -- validate "$work/good.exr" --queries quick --no-cache --colour-config "$work/none.toml" --json "$work/existing.csv"
 printf '%s\n0,30,0,-inf\n' "$header" >"$work/q.csv"
 radiance "q.csv:2:4 (view_azimuth_deg): '-inf' is not a finite number"
 printf '%s\n0,30,0,0\n0,30,,0\n' "$header" >"$work/q.csv"

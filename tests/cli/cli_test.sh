@@ -166,6 +166,34 @@ grep -q $'\r' "$work/stderr" && fail "validate drew a terminal bar into a file"
 
 expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples 0
 
+# validate --colour-config: the colour table, its JSON and CSV columns, and a
+# second run served from the colour cache; refused for a config whose
+# per-wavelength lists cannot be read at other wavelengths and for a config
+# that is not the bake's, before any reference is computed.
+spectral="$source_dir/tests/cli/small_earth_spectral.toml"
+expect_status 0 "baked 'small_earth_spectral'" -- bake "$spectral" -o "$work/spectral.exr"
+colour_cache="$work/colour_cache"
+expect_status 0 "CIEDE2000 median/p95/max" -- validate "$work/spectral.exr" --queries quick --reference-samples 64 --cache-dir "$colour_cache" --colour-config "$spectral" --json "$work/c.json" --details "$work/c.csv"
+/usr/bin/python3 - "$work/c.json" "$work/c.csv" <<'PY' || fail "validate --colour-config wrote no colour figures"
+import csv, json, math, sys
+colour = json.load(open(sys.argv[1]))["colour"]
+assert len(colour["reference_wavelengths_nm"]) == 41, colour["reference_wavelengths_nm"]
+rows = {(r["quantity"], r["band"]): r for r in colour["errors"]}
+day = rows[("sky_radiance", "day")]
+assert day["count"] > 0, day
+for key in ("luminance_rms", "ciede2000_median", "ciede2000_p95", "reference_ciede2000_median"):
+    assert math.isfinite(day[key]) and day[key] >= 0, (key, day)
+assert ("sky_irradiance", "day") in rows, rows.keys()
+details = list(csv.DictReader(open(sys.argv[2])))
+assert all(math.isfinite(float(r["ciede2000"])) for r in details), details[0]
+PY
+expect_status 0 "(54 from the cache, 0 computed" -- validate "$work/spectral.exr" --queries quick --reference-samples 64 --cache-dir "$colour_cache" --colour-config "$spectral"
+[ "$(grep -c '54 from the cache, 0 computed' "$work/stdout")" -eq 2 ] || fail "the colour reference was not served from its cache: $(cat "$work/stdout")"
+expect_status 2 "sun.irradiance = [1.474, 1.8504, 1.91198]: a list of one value per wavelength cannot be read at other wavelengths" -- validate "$work/good.exr" --queries quick --reference-samples 64 --no-cache --colour-config "$small"
+grep -q "reference" "$work/stderr" && fail "validate computed a reference before refusing the colour config"
+sed -e "s|\.\./\.\./data_formats|$source_dir/data_formats|" -e 's/phase_g = 0.8/phase_g = 0.7/' "$spectral" >"$work/other_spectral.toml"
+expect_status 2 "is not the bake's" -- validate "$work/spectral.exr" --queries quick --reference-samples 64 --no-cache --colour-config "$work/other_spectral.toml"
+
 # reference: two pieces into one cache, then validate finds every query there
 # and computes none; --estimate counts what the cache lacks.
 rcache="$work/rcache"

@@ -183,6 +183,22 @@ def test_validate_gives_the_command_lines_figures(tmp_path):
         skybake.validate(tmp_path / "missing.exr", **settings)
 
 
+def test_validate_gives_the_command_lines_colour_figures(tmp_path):
+    config = os.path.join(SOURCE, "tests", "cli", "small_earth_spectral.toml")
+    bake = tmp_path / "spectral.exr"
+    subprocess.run([BINARY, "bake", config, "-o", str(bake)], check=True, capture_output=True)
+    settings = dict(queries="quick", reference_samples=64, no_cache=True)
+    report = skybake.validate(bake, colour_config=config, **settings)
+    json_path = tmp_path / "validate.json"
+    subprocess.run([BINARY, "validate", str(bake), "--queries", "quick", "--reference-samples", "64", "--no-cache",
+                    "--colour-config", config, "--json", str(json_path)], check=True, capture_output=True)
+    # Seeded per query and wavelength group: the same figures to the last digit.
+    assert report["colour"]["errors"] == json.loads(json_path.read_text())["colour"]["errors"]
+    assert "colour" not in skybake.validate(bake, **settings)
+    with pytest.raises(skybake.BadInput, match="sun.irradiance"):
+        skybake.validate(bake, colour_config=SMALL_EARTH, **settings)
+
+
 def test_a_bake_beyond_the_memory_it_may_allocate_is_refused_before_allocating(tmp_path):
     # As the command line does (docs/STABILITY.md): under a 4 GB address-space
     # limit, tables of 34 GB are refused with the estimate, not attempted.

@@ -157,13 +157,18 @@ def bake(config, output, threads=0, orders=None, reproducible=False, progress=No
                          threads, orders, reproducible, progress)
 
 
-def validate(bake, queries="standard", reference_samples=None, cache_dir=None, no_cache=False, threads=0):
+def validate(bake, queries="standard", reference_samples=None, cache_dir=None, no_cache=False, threads=0,
+             colour_config=None):
     """The bake's error against the independent reference solver, as
     `skybake validate --json` reports it (a dict: RMS, p95 and max relative
     error per band and channel, lookup time per ray). queries: "standard",
     "quick" or a CSV path; reference_samples: Monte Carlo paths per query
     (None: the command line's default); cache_dir: the reference cache (None:
-    the command line's default); no_cache: compute afresh and keep nothing."""
+    the command line's default); no_cache: compute afresh and keep nothing;
+    colour_config: the config the bake was made from, to add the "colour"
+    figures of `validate --colour-config` (luminance and CIEDE2000 per sun
+    band against a reference in CIE XYZ from 41 wavelengths)."""
     kwargs = {} if reference_samples is None else {"reference_samples": int(reference_samples)}
     return _skybake.validate(str(bake), str(queries), cache_dir="" if cache_dir is None else str(cache_dir),
-                             no_cache=no_cache, threads=threads, **kwargs)
+                             no_cache=no_cache, threads=threads,
+                             colour_config="" if colour_config is None else str(colour_config), **kwargs)
