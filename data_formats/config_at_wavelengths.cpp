@@ -62,7 +62,11 @@ BakeConfig configAtWavelengths(std::string_view toml_text, const std::string& so
   toml::table root = toml::parse(toml_text, source);
   toml::array wavelengths;
   for (double w : wavelengths_nm) wavelengths.push_back(w);
-  root.get_as<toml::table>("channels")->insert_or_assign("wavelengths_nm", std::move(wavelengths));
+  toml::table& channels = *root.get_as<toml::table>("channels");
+  channels.insert_or_assign("wavelengths_nm", std::move(wavelengths));
+  // The atmosphere at these wavelengths, channel by channel, also for a
+  // colour bake's config (which would otherwise integrate them into X, Y, Z).
+  channels.erase("store");
   for (std::string_view key : kPerWavelengthConfigKeys) {
     if (toml::node* node = nodeAt(root, key)) replaceFlatList(*node, key, source, wavelengths_nm.size());
   }

@@ -23,7 +23,8 @@ inline constexpr std::array<std::string_view, 6> kPerWavelengthConfigKeys = {
 
 // Parses `toml_text` (as parseConfig does, spectrum files relative to
 // `spectrum_directory`) with channels.wavelengths_nm replaced by
-// `wavelengths_nm` (1 to kMaxChannels of them). A per-wavelength key given as
+// `wavelengths_nm` (1 to kMaxChannels of them), stored as wavelengths (a
+// colour bake's channels.store is dropped). A per-wavelength key given as
 // a list of one number per wavelength says nothing between its wavelengths:
 // it is refused with Error(BadInput) naming source, key and value, unless
 // every number of the list is the same (a flat spectrum, such as a grey

@@ -11,7 +11,6 @@
 #include "baker/cli/reference_options.h"
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/terminal_progress.h"
-#include "baker/cli/wavelength_channels.h"
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/colour_error.h"
 #include "baker/validation/colour_reference.h"
@@ -91,9 +90,17 @@ void runValidate(const ValidateOptions& o) {
     if (!output.empty()) requireWritableOutput(output, {o.bake_path, o.queries, o.colour_config});
   }
   const Sky sky = Sky::load(o.bake_path);
-  requireWavelengthChannels(sky.atmosphere(), o.bake_path, "validate");
   requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
+  // A colour bake's X, Y, Z are compared with the colour reference only:
+  // its atmosphere's X, Y, Z coefficients are means no wavelength has.
+  const bool colour_bake = a.storesCieXyz();
+  if (colour_bake && o.colour_config.empty()) {
+    throwBadInput(fmt::format(
+        "{}: a colour bake (channels X, Y, Z): validate compares it with the colour reference, which needs the "
+        "config it was made from: add --colour-config CONFIG.toml",
+        o.bake_path));
+  }
   // A config that cannot give the colour reference is refused before any
   // reference is computed.
   std::optional<ColourReferenceAtmospheres> colour_atmospheres;
@@ -107,16 +114,23 @@ void runValidate(const ValidateOptions& o) {
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
 
   TerminalProgress progress;
-  const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
+  ColourReferenceValues colour_reference;
+  if (colour_atmospheres) colour_reference = computeColourReference(*colour_atmospheres, queries, settings, progress);
+  // A colour bake's reference is the colour reference itself, channel for channel.
+  const ReferenceValues reference =
+      colour_bake ? ReferenceValues{colour_reference.radiance, colour_reference.irradiance, colour_reference.seconds,
+                                    colour_reference.computed, colour_reference.cached}
+                  : computeReferenceValues(a, queries, settings, progress);
   const MethodValues bake = evaluateBake(sky, queries);
   const ErrorReport report = compareWithReference(a, queries, reference, bake, settings.paths);
-  ColourReferenceValues colour_reference;
   MethodXyz bake_xyz;
   ColourValidation colour_report;
   if (colour_atmospheres) {
-    colour_reference = computeColourReference(*colour_atmospheres, queries, settings, progress);
     bake_xyz = bakeXyz(sky, bake);
-    colour_report = validateColour(sky, queries, reference, colour_reference, bake, settings.paths);
+    colour_report =
+        colour_bake
+            ? ColourValidation{compareColourWithReference(a, queries, colour_reference, bake_xyz, settings.paths), {}}
+            : validateColour(sky, queries, reference, colour_reference, bake, settings.paths);
   }
 
   fmt::print(
@@ -136,10 +150,12 @@ void runValidate(const ValidateOptions& o) {
         kColourReferenceWavelengthCount, kColourReferenceFirst_nm, kColourReferenceLast_nm, colour_reference.cached,
         colour_reference.computed, colour_reference.seconds, kComparedLightness, smallestComparedY(),
         colour_report.bake.table());
-    fmt::print(
-        "\nthe same for the spectral reference at the bake's own wavelengths (a bake without table error: what "
-        "sampling the spectrum there costs)\n\n{}",
-        colour_report.sampling.table());
+    if (!colour_bake) {
+      fmt::print(
+          "\nthe same for the spectral reference at the bake's own wavelengths (a bake without table error: what "
+          "sampling the spectrum there costs)\n\n{}",
+          colour_report.sampling.table());
+    }
   }
   if (!left_out.empty()) fmt::print("\n{}\n", left_out);
 

@@ -71,6 +71,13 @@ ColourErrorStats summarize(Samples s) {
 double smallestComparedY() { return kSmallestComparedValue * colour::ybarIntegral_nm(); }
 
 std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<Spectrum>& channels) {
+  if (sky.atmosphere().storesCieXyz()) {
+    // A colour bake's channels are X, Y, Z already (integrated while it baked).
+    std::vector<colour::Xyz> out;
+    out.reserve(channels.size());
+    for (const Spectrum& s : channels) out.push_back({s.x, s.y, s.z});
+    return out;
+  }
   const colour::SpectralToXyz to_xyz(sky.atmosphere().wavelengths_nm);
   const size_t n = static_cast<size_t>(sky.channelCount());
   std::vector<colour::Xyz> out;

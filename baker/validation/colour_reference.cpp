@@ -9,8 +9,10 @@
 
 #include "baker/reference/path_sampler.h"
 #include "baker/validation/local_frame.h"
+#include "data_formats/config.h"
 #include "data_formats/config_at_wavelengths.h"
 #include "data_formats/error.h"
+#include "runtime/colour/colour_bake_weights.h"
 #include "runtime/colour/spectral_to_xyz.h"
 
 namespace skybake {
@@ -89,6 +91,23 @@ ColourReferenceAtmospheres colourReferenceAtmospheresFromFile(const std::filesys
 }
 
 void requireConfigOfBake(const std::filesystem::path& config_path, const AtmosphereParameters& bake) {
+  if (bake.storesCieXyz()) {
+    // A colour bake states its X, Y, Z atmosphere, made from its passes'
+    // atmospheres by the weights the bake used (colour_bake_weights.h).
+    const BakeConfig config = loadConfigFile(config_path);
+    if (!config.atmosphere.storesCieXyz() || config.colour_groups.empty()) {
+      throwBadInput(fmt::format("{}: not a colour bake's config (channels.store = \"cie_xyz\"), but the bake is one",
+                                config_path.string()));
+    }
+    AtmosphereParameters own =
+        colour::ColourBakeWeights(config.colour_groups).cieXyzAtmosphere(config.atmosphere, config.colour_groups);
+    own.sun_max_zenith_deg = bake.sun_max_zenith_deg;
+    if (own == bake) return;
+    throwBadInput(fmt::format(
+        "{}: its X, Y, Z atmosphere (from {} wavelengths) is not the colour bake's: give the config the bake was "
+        "made from",
+        config_path.string(), config.atmosphere.wavelengths_nm.size()));
+  }
   AtmosphereParameters own = configFileAtWavelengths(config_path, bake.wavelengths_nm).atmosphere;
   own.sun_max_zenith_deg = bake.sun_max_zenith_deg;
   if (own == bake) return;

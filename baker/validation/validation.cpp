@@ -308,8 +308,12 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
   ErrorReport report;
   report.query_set = queries.name;
   report.wavelengths_nm = a.wavelengths_nm;
+  report.channel_names = channelNames(a);
   report.reference_paths = reference_paths;
   const int channels = a.channelCount();
+  // A colour bake's reference (colour_reference.h) is radiance and
+  // irradiance in X, Y, Z only: it has no transmittance to compare with.
+  const bool compare_transmittance = !a.storesCieXyz();
   StatsBuilder stats;
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
@@ -319,7 +323,9 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
     const CachedReference& r = reference.radiance[i];
     for (int c = 0; c < channels; ++c) {
       stats.add(quantity, band, c, method.radiance[i][c], r.value[c], r.standard_error[c]);
-      stats.add("transmittance", "all", c, method.transmittance[i][c], r.transmittance[c], 0.0);
+      if (compare_transmittance) {
+        stats.add("transmittance", "all", c, method.transmittance[i][c], r.transmittance[c], 0.0);
+      }
     }
   }
   if (!method.irradiance.empty()) {
@@ -347,6 +353,7 @@ nlohmann::ordered_json ErrorReport::toJson() const {
   j["query_set"] = query_set;
   j["reference_paths"] = reference_paths;
   j["wavelengths_nm"] = wavelengths_nm;
+  j["channels"] = channel_names;
   j["smallest_compared_value"] = kSmallestComparedValue;
   nlohmann::ordered_json rows_json = nlohmann::ordered_json::array();
   for (const ErrorRow& row : rows) {
@@ -367,7 +374,7 @@ nlohmann::ordered_json ErrorReport::toJson() const {
 
 std::string ErrorReport::table() const {
   std::string out = fmt::format("{:<18} {:<9} {:>5} {:>5}", "quantity", "band", "n", "skip");
-  for (double w : wavelengths_nm) out += fmt::format("  {:>22}", fmt::format("{} nm rms/p95/max %", w));
+  for (const std::string& name : channel_names) out += fmt::format("  {:>22}", name + " rms/p95/max %");
   out += "  ref stderr %\n";
   for (const ErrorRow& row : rows) {
     const ErrorStats& first = row.channels.front();

@@ -123,7 +123,8 @@ struct ErrorRow {
 
 struct ErrorReport {
   std::string query_set;
-  std::vector<double> wavelengths_nm;
+  std::vector<double> wavelengths_nm;      // the bake's (a colour bake's: those it integrated)
+  std::vector<std::string> channel_names;  // channelNames (bake_file.h): "680nm", ... or X, Y, Z
   int reference_paths = 0;
   std::vector<ErrorRow> rows;
 
