@@ -1,0 +1,98 @@
+// The sky during a solar eclipse (docs/ECLIPSES.md). Single scattering is
+// what the uneclipsed lookup gives, scaled per channel by the ratio of two
+// integrals along the view ray, with and without the moon hiding part of
+// the sun at each point (so the tables' accuracy is kept, the moon's shadow
+// is followed exactly, and a moon far from the sun changes nothing).
+// Multiple scattering and the sky's irradiance are scaled by the sun's
+// visible fraction averaged over the neighbourhood (eclipse_skylight.h).
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "runtime/eclipse_skylight.h"
+#include "runtime/sky.h"
+#include "runtime/sky_lookup_constants.h"
+#include "runtime/sky_lookup_start.h"
+
+namespace skybake {
+namespace {
+
+// Below this share of the uneclipsed integral, the ratio of the two
+// integrals is taken as the eclipsed integral alone: a sun already set
+// along the whole ray leaves both at rounding level, whose ratio is noise.
+constexpr float kSmallestUneclipsedSingle = 1e-30f;
+
+Spectrum eclipsedShare(const Spectrum& eclipsed, const Spectrum& plain) {
+  Spectrum share(0.0f);
+  for (int c = 0; c < kMaxChannels; ++c) {
+    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
+  }
+  return share;
+}
+
+}  // namespace
+
+bool Sky::moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+  if (!moon.present()) return false;
+  const glm::dvec3 to_moon = moon.centre_m - point;
+  const double distance = glm::length(to_moon);
+  const double top = sampler_.domain().top_radius_m, bottom = sampler_.domain().bottom_radius_m;
+  // Anywhere in the atmosphere lies within this of the point, and the moon
+  // is seen from there displaced by at most this over its distance.
+  const double reach_m = 2.0 * std::sqrt(top * top - bottom * bottom) + (glm::length(point) - bottom);
+  if (!(distance > reach_m + moon.radius_m)) return true;
+  const double parallax_rad = reach_m / (distance - reach_m);
+  const double moon_radius_rad = std::asin(std::min(moon.radius_m / (distance - reach_m), 1.0));
+  const double separation_rad = std::atan2(glm::length(glm::cross(to_moon, sun_dir)), glm::dot(to_moon, sun_dir));
+  return separation_rad < atmosphere().sun_angular_radius_rad + moon_radius_rad + parallax_rad;
+}
+
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                          const glm::dvec3& sun_dir, const Moon& moon) const {
+  SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, 0.0);
+  if (!p.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  if (moonHidesSunNear(p.start.origin, sun_dir, moon)) {
+    const AtmosphereRay& s = p.start;
+    const SunlitRay ray{s.r, s.mu, p.mu_s, p.nu, s.ends_on_ground};
+    const MoonAlongRay along{moon, s.origin, s.dir, sun_dir, atmosphere().sun_angular_radius_rad};
+    const Texture2D& depth = bake_.tables.optical_depth;
+    const SingleScattering with_moon = integrateSingleScattering(sampler_, depth, atmosphere(), ray, p.lit_from_m,
+                                                                 s.length, kEclipseSingleScatteringSegments, &along);
+    const SingleScattering without = integrateSingleScattering(sampler_, depth, atmosphere(), ray, p.lit_from_m,
+                                                               s.length, kEclipseSingleScatteringSegments);
+    p.single.rayleigh *= eclipsedShare(with_moon.rayleigh, without.rayleigh);
+    p.single.mie *= eclipsedShare(with_moon.mie, without.mie);
+  }
+  p.multiple *= eclipseSkylightFraction(atmosphere(), moon, p.start.origin, sun_dir);
+  return {p.single.rayleigh * static_cast<float>(rayleighPhase(p.nu)) +
+              p.single.mie * static_cast<float>(mie_phase_(p.nu)) + p.multiple,
+          p.transmittance};
+}
+
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                               const glm::dvec3& sun_dir, const Moon& moon) const {
+  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir, moon);
+  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  if (!start.inside || !start.ends_on_ground) return v;
+  const glm::dvec3 ground = start.origin + view_dir * start.length;
+  const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun_dir, moon);
+  v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
+  return v;
+}
+
+Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
+                            const Moon& moon) const {
+  return sunIrradiance(point, normal, sun_dir) *
+         static_cast<float>(moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad));
+}
+
+SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
+                                    const Moon& moon) const {
+  SunAndSkyIrradiance e = irradiance(point, normal, sun_dir);
+  const double visible = moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad);
+  e.sun *= static_cast<float>(visible);
+  e.sky *= eclipseSkylightFraction(atmosphere(), moon, point, sun_dir);
+  return e;
+}
+
+}  // namespace skybake
