@@ -1,7 +1,6 @@
 #include "runtime/eclipse_skylight.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -12,64 +11,62 @@
 namespace skybake {
 
 Spectrum eclipseSkylightFraction(const AtmosphereParameters& a, const Moon& moon, const glm::dvec3& point,
-                                 const glm::dvec3& sun_dir) {
+                                 const glm::dvec3& sun_dir, int elevations, int azimuths, int distances) {
   if (!moon.present()) return Spectrum(1.0f);
   const AtmosphereMedia media(a);
-  const double r = std::clamp(glm::length(point), a.bottom_radius_m, a.top_radius_m);
-  // The longest straight path in the shell: a ray grazing the ground from the top.
-  const double longest_m = 2.0 * safeSqrt(a.top_radius_m * a.top_radius_m - a.bottom_radius_m * a.bottom_radius_m);
-  const SpectrumD extinction = media.extinction(r - a.bottom_radius_m);
-  const int channels = a.channelCount();
-  std::array<double, kMaxChannels> free_path{};
-  double longest_free_path = 0.0;
-  for (int c = 0; c < channels; ++c) {
-    free_path[c] = meanFreePath(extinction[c], longest_m);
-    longest_free_path = std::max(longest_free_path, free_path[c]);
-  }
-  // Two axes across the sun.
-  const glm::dvec3 helper = std::abs(sun_dir.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-  const glm::dvec3 across_u = glm::normalize(glm::cross(helper, sun_dir));
-  const glm::dvec3 across_v = glm::cross(sun_dir, across_u);
   const double alpha = a.sun_angular_radius_rad;
-
-  // f averaged over each ring, the point itself at radius 0.
-  std::array<double, kEclipseNeighbourhoodRings + 1> radius{}, ring_fraction{};
-  ring_fraction[0] = moon.visibleSunFraction(point, sun_dir, alpha);
-  const double outer_m = std::max(kEclipseOuterRingMeanFreePaths * longest_free_path, 2.0 * kEclipseInnerRing_m);
-  const double growth = std::pow(outer_m / kEclipseInnerRing_m, 1.0 / (kEclipseNeighbourhoodRings - 1));
-  for (int k = 1; k <= kEclipseNeighbourhoodRings; ++k) {
-    radius[k] = kEclipseInnerRing_m * std::pow(growth, k - 1);
-    // Each ring turned by half a step against the last: no direction is
-    // favoured throughout.
-    const double offset = 0.5 * (k % 2);
-    double sum = 0.0;
-    for (int j = 0; j < kEclipseNeighbourhoodDirections; ++j) {
-      const double phi = 2.0 * kPi * (j + offset) / kEclipseNeighbourhoodDirections;
-      const glm::dvec3 p = point + (across_u * std::cos(phi) + across_v * std::sin(phi)) * radius[k];
-      sum += moon.visibleSunFraction(p, sun_dir, alpha);
+  const double length = glm::length(point);
+  const double r = std::clamp(length, a.bottom_radius_m, a.top_radius_m);
+  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+  const glm::dvec3 x = up * r;
+  const glm::dvec3 helper = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 east = glm::normalize(glm::cross(helper, up)), north = glm::cross(up, east);
+  SpectrumD lit(0.0), all(0.0);
+  // Zenith cosines from u at the midpoints of `elevations` equal steps over
+  // [-1, 1], mu = h + (1 -+ h) u |u| about the horizon's h: dense near it,
+  // where the paths through the air are longest; each direction weighs its
+  // share of the sphere, dmu = 2 (1 -+ h) |u| du.
+  const double horizon_mu = tangentZenithCosine(r, a.bottom_radius_m);
+  for (int e = 0; e < elevations; ++e) {
+    const double u = -1.0 + 2.0 * (e + 0.5) / elevations;
+    const double side = u < 0.0 ? 1.0 + horizon_mu : 1.0 - horizon_mu;
+    const double mu = horizon_mu + side * u * std::abs(u);
+    const double solid_angle = 2.0 * side * std::abs(u) * (2.0 / elevations);
+    const double sin_theta = safeSqrt(1.0 - mu * mu);
+    for (int j = 0; j < azimuths; ++j) {
+      // Each band turned by half a step against the last: no azimuth is
+      // favoured throughout.
+      const double phi = 2.0 * kPi * (j + 0.5 * (e % 2)) / azimuths;
+      const glm::dvec3 w = up * mu + (east * std::cos(phi) + north * std::sin(phi)) * sin_theta;
+      const bool ground = rayIntersectsSphere(r, mu, a.bottom_radius_m);
+      const double end_m = distanceToAtmosphereEnd(r, mu, a.bottom_radius_m, a.top_radius_m, ground);
+      if (!(end_m > kEclipseFirstDistance_m)) continue;
+      const double growth = std::pow(end_m / kEclipseFirstDistance_m, 1.0 / (distances - 1));
+      SpectrumD depth(0.0);
+      double start = 0.0;
+      for (int k = 0; k < distances; ++k) {
+        const double stop = k + 1 == distances ? end_m : kEclipseFirstDistance_m * std::pow(growth, k);
+        const double mid = 0.5 * (start + stop), step = stop - start;
+        const glm::dvec3 p = x + w * mid;
+        const double altitude = std::max(glm::length(p) - a.bottom_radius_m, 0.0);
+        const SpectrumD scattering = SpectrumD(a.rayleigh_scattering) * media.rayleighDensity(altitude) +
+                                     SpectrumD(a.mie_scattering) * media.mieDensity(altitude);
+        // What dims the light on its way back to x: absorption, and the share
+        // of scattering that sends it out of the multiply scattered field.
+        const SpectrumD extinction = media.extinction(altitude) - scattering * kEclipseRedirectedScatteringShare;
+        // Optical depth to the step's middle: the steps before plus half this one.
+        const SpectrumD weight = scattering * glm::exp(-(depth + extinction * (0.5 * step))) * (step * solid_angle);
+        depth += extinction * step;
+        all += weight;
+        lit += weight * moon.visibleSunFraction(p, sun_dir, alpha);
+        start = stop;
+      }
     }
-    ring_fraction[k] = sum / kEclipseNeighbourhoodDirections;
   }
-
-  // Per channel, the integral of the piecewise linear f against the radial
-  // density exp(-rho / l) / l, exactly on each interval; beyond the last ring
-  // f is held.
+  const double here = moon.visibleSunFraction(x, sun_dir, alpha);
   Spectrum out(0.0f);
-  for (int c = 0; c < channels; ++c) {
-    const double l = free_path[c];
-    double total = 0.0;
-    double weight_left = 1.0;  // exp(-radius[k] / l)
-    for (int k = 0; k < kEclipseNeighbourhoodRings; ++k) {
-      const double width = radius[k + 1] - radius[k];
-      const double weight_right = std::exp(-radius[k + 1] / l);
-      const double mass = weight_left * -std::expm1(-width / l);  // integral of the density over the interval
-      // Integral of (rho - radius[k]) times the density over it, over width.
-      const double ramp = width > 0.0 ? (l * mass - width * weight_right) / width : 0.0;
-      total += ring_fraction[k] * mass + (ring_fraction[k + 1] - ring_fraction[k]) * ramp;
-      weight_left = weight_right;
-    }
-    total += ring_fraction[kEclipseNeighbourhoodRings] * weight_left;
-    out[c] = static_cast<float>(std::clamp(total, 0.0, 1.0));
+  for (int c = 0; c < a.channelCount(); ++c) {
+    out[c] = static_cast<float>(all[c] > 0.0 ? std::clamp(lit[c] / all[c], 0.0, 1.0) : here);
   }
   return out;
 }

@@ -5,19 +5,24 @@
 // the umbra, tens to hundreds of kilometres away, scattered toward the
 // camera's air and on to the camera. So the tables' multiple scattering (and
 // the sky's irradiance) are scaled instead by the sun's visible fraction
-// averaged over the camera's neighbourhood, weighted by how far light
-// travels to it before scattering:
+// averaged over where the light reaching the camera's air was last
+// scattered:
 //
-//   F = integral over the plane across the sun through the camera of
-//       f(x) w(|x|) dA,   w(rho) = exp(-rho / l) / (2 pi l rho),
+//   F = sum over directions w of  integral ds  f(x + s w) k(s)
+//       / the same without f,     k(s) = beta_s(x + s w) exp(-tau'(x, x + s w)),
 //
-// f the visible fraction (Moon::visibleSunFraction) and l the mean free path
-// at the camera's altitude, 1 / extinction, per channel. w is the share of
-// the light arriving at the camera's air along each direction in the plane
-// that was last scattered at distance rho (radiance along a ray gathers
-// scattering at every distance, dimmed by exp(-rho / l)), spread over the
-// directions evenly; it integrates to 1, so F = 1 with no moon, F = f for a
-// uniform f, and F is 0 only if the sun is hidden everywhere in reach.
+// f the visible fraction (Moon::visibleSunFraction) at each point, beta_s
+// the scattering coefficient there and tau' an optical depth back to x, per
+// channel: k is the share of the light arriving at x along w that was
+// scattered at distance s. Were tau' the whole optical depth, k would follow
+// the light scattered twice; but light scattered off the line to x is not
+// lost to x's surroundings, and part of it gets there after further
+// scattering, so multiply scattered light reaches further than once
+// scattered light does. tau' counts absorption and the share
+// 1 - kEclipseRedirectedScatteringShare of scattering. Directions are taken
+// evenly over the sphere, the phase functions and the sun's direction left
+// out. So F = 1 with no moon, F = f for a uniform f, and F in totality is
+// the share of the air light reaches x from that the sun still lights.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -27,30 +32,30 @@
 
 namespace skybake {
 
-// Rings and directions of the neighbourhood's quadrature. The rings' radii
-// grow geometrically from kEclipseInnerRing_m to kEclipseOuterRingMeanFreePaths
-// times the longest mean free path (light from further is dimmed by e^-30),
-// at most 1.22 times per ring at these counts. f is linear between rings
-// but for the umbra's edge, where it rises as the distance past it to the
-// power 3/2: there the rings overestimate F of a camera in totality by 2 %
-// at 64 rings (1 % at 96) against a brute-force integral
-// (tests/runtime/eclipse_test.cpp). Eight directions per ring resolve the
-// penumbra's gradient across a ring (twelve changed F by under 1e-3).
-inline constexpr int kEclipseNeighbourhoodRings = 64;
-inline constexpr int kEclipseNeighbourhoodDirections = 8;
-inline constexpr double kEclipseInnerRing_m = 300.0;
-inline constexpr double kEclipseOuterRingMeanFreePaths = 30.0;
-
-// The mean free path, m, from an extinction coefficient (m^-1); an
-// extinction below 1 / `longest_m` (thin air, or none) gives `longest_m`:
-// light goes no further than the atmosphere is long.
-inline double meanFreePath(double extinction_per_m, double longest_m) {
-  return extinction_per_m * longest_m > 1.0 ? 1.0 / extinction_per_m : longest_m;
-}
+// Directions (bands of zenith cosine, denser near the horizon, times
+// azimuths) and distances along each of the kernel's quadrature. Distances grow geometrically from
+// kEclipseFirstDistance_m to where the direction leaves the atmosphere or
+// meets the ground, by at most 1.3 times per step (midpoints); the umbra's
+// edge, where f starts to rise, is resolved to that. The counts against a
+// brute-force kernel: tests/runtime/eclipse_test.cpp.
+inline constexpr int kEclipseKernelElevations = 16;
+inline constexpr int kEclipseKernelAzimuths = 8;
+inline constexpr int kEclipseKernelDistances = 32;
+inline constexpr double kEclipseFirstDistance_m = 200.0;
+// The share of scattering along the way that the kernel does not count as
+// a loss (tau' above). A calibration, not a derivation: against the path
+// traced reference at the centre of a total eclipse's umbra (sun 40 deg
+// high, docs/ECLIPSES.md), 0 (the light scattered twice alone) makes the
+// zenith at 440 nm 5 times too dark on the ground, 1 (no scattering loss)
+// 3 times too bright; 0.6 puts the zenith within 15 % on the ground and
+// 30 % at 10 km in every channel.
+inline constexpr double kEclipseRedirectedScatteringShare = 0.55;
 
 // F above, per channel, for the neighbourhood of `point` (in the atmosphere)
-// under the sun at unit `sun_dir`.
+// under the sun at unit `sun_dir`. The counts set the quadrature (the
+// defaults above; tests compare with finer ones).
 Spectrum eclipseSkylightFraction(const AtmosphereParameters& a, const Moon& moon, const glm::dvec3& point,
-                                 const glm::dvec3& sun_dir);
+                                 const glm::dvec3& sun_dir, int elevations = kEclipseKernelElevations,
+                                 int azimuths = kEclipseKernelAzimuths, int distances = kEclipseKernelDistances);
 
 }  // namespace skybake

@@ -110,8 +110,9 @@ refused "--size = -5x5: each side must be in [1, 16384]" -- "${render[@]}" "${vi
 refused "--size = 99999999999x3: each side must be in [1, 16384]" -- "${render[@]}" "${view[@]}" --size 99999999999x3
 refused "--size = nanxnan: must be WIDTHxHEIGHT" -- "${render[@]}" "${view[@]}" --size nanxnan
 
-refused "--reference-samples = nan: must be a whole number in [1, 100000000]" -- validate "$work/none.exr" --reference-samples nan
+refused "--reference-samples = nan: must be a whole number in [0, 100000000]" -- validate "$work/none.exr" --reference-samples nan
 refused "--reference-samples = -5: must be a whole number in [1, 100000000]" -- compare "$small" --reference-samples -5
+refused "the comparators have no moon" -- compare "$small" --queries eclipse --reference-samples 4 --no-cache
 refused "--threads = 0: must be a whole number in [1, 4096]" -- validate "$work/none.exr" --threads 0
 refused "--threads = nan: must be a whole number in [1, 4096]" -- stress --threads nan
 for v in 0 nan inf; do

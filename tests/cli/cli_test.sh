@@ -128,7 +128,11 @@ progress_lines=$(grep -cE '^reference +[0-9]+% \([0-9]+/[0-9]+\) after +[0-9.]+ 
 [ "$progress_lines" -ge 2 ] || fail "validate logged $progress_lines progress lines before its last: $(cat "$work/stderr")"
 grep -q $'\r' "$work/stderr" && fail "validate drew a terminal bar into a file"
 
-expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples 0
+expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples -1
+# Eclipses: 0 paths give the reference's single scattering alone (fast), and
+# the details name each query's moon.
+expect_status 0 "query set 'eclipse'" -- validate "$work/good.exr" --queries eclipse --reference-samples 0 --no-cache --details "$work/eclipse.csv"
+grep -q "^radiance,0,50,0,0,0,0,0.28," "$work/eclipse.csv" || fail "validate --details lacks the total eclipse's zenith row"
 
 # reference: two pieces into one cache, then validate finds every query there
 # and computes none; --estimate counts what the cache lacks.
