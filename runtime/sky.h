@@ -164,6 +164,19 @@ class Sky {
                                        const Moon& moon) const;
   RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                             const glm::dvec3& sun_dir, const Moon& moon) const;
+  // The same with the camera's skylight share given (eclipseSkylight of the
+  // camera): it is one for every view from a camera in the atmosphere, so an
+  // image computes it once and its lookups cost about a third as much. (A
+  // camera in space enters the atmosphere at another point for each view:
+  // use the lookups above.)
+  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
+                                       const Moon& moon, const Spectrum& camera_skylight) const;
+  RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                            const glm::dvec3& sun_dir, const Moon& moon,
+                                            const Spectrum& camera_skylight) const;
+  // The share of the uneclipsed multiple scattering and sky irradiance left
+  // at `point` (runtime/eclipse_skylight.h), per channel.
+  Spectrum eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
   // The direct sun times the part of its disk the moon leaves visible from
   // `point`; the sky part scaled as multiple scattering is.
   SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,

@@ -47,8 +47,20 @@ bool Sky::moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, c
   return separation_rad < atmosphere().sun_angular_radius_rad + moon_radius_rad + parallax_rad;
 }
 
+Spectrum Sky::eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+  return eclipseSkylightFraction(atmosphere(), moon, point, sun_dir);
+}
+
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                           const glm::dvec3& sun_dir, const Moon& moon) const {
+  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  return skyRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
+}
+
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                          const glm::dvec3& sun_dir, const Moon& moon,
+                                          const Spectrum& camera_skylight) const {
   SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, 0.0);
   if (!p.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   if (moonHidesSunNear(p.start.origin, sun_dir, moon)) {
@@ -63,7 +75,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
     p.single.rayleigh *= eclipsedShare(with_moon.rayleigh, without.rayleigh);
     p.single.mie *= eclipsedShare(with_moon.mie, without.mie);
   }
-  p.multiple *= eclipseSkylightFraction(atmosphere(), moon, p.start.origin, sun_dir);
+  p.multiple *= camera_skylight;
   return {p.single.rayleigh * static_cast<float>(rayleighPhase(p.nu)) +
               p.single.mie * static_cast<float>(mie_phase_(p.nu)) + p.multiple,
           p.transmittance};
@@ -71,7 +83,15 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                                const glm::dvec3& sun_dir, const Moon& moon) const {
-  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir, moon);
+  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  return receivedRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
+}
+
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                               const glm::dvec3& sun_dir, const Moon& moon,
+                                               const Spectrum& camera_skylight) const {
+  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir, moon, camera_skylight);
   const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
   if (!start.inside || !start.ends_on_ground) return v;
   const glm::dvec3 ground = start.origin + view_dir * start.length;

@@ -105,6 +105,8 @@ expect_status 2 "unclosed.csv:2:1: quoted cell has no closing quote" -- lookup i
 # render: PNG and EXR; a bad extension or size is refused.
 expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection fisheye --size 32x32 -o "$work/sky.png"
 [ -s "$work/sky.png" ] || fail "render wrote no PNG"
+expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 50 --moon 0,40,0.28 --projection fisheye --size 32x32 -o "$work/eclipse.png"
+[ -s "$work/eclipse.png" ] || fail "render --moon wrote no PNG"
 expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection latlong --size 64x32 -o "$work/sky.exr"
 expect_status 2 "sky.exr" -- info "$work/sky.exr"
 expect_status 2 ".png" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection fisheye -o "$work/sky.jpg"
