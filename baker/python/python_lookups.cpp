@@ -17,9 +17,9 @@
 #include <thread>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include "baker/python/python_bindings.h"
 #include "data_formats/error.h"
-#include <glm/geometric.hpp>
 
 #include "runtime/sky.h"
 
@@ -154,18 +154,15 @@ py::dict atmosphereDict(const AtmosphereParameters& a) {
 }  // namespace
 
 void registerLookups(py::module_& m) {
-  m.def(
-      "_moon_seen_from",
-      [](const std::array<double, 3>& camera, const std::array<double, 3>& direction, double angular_radius_rad) {
-        const glm::dvec3 dir(direction[0], direction[1], direction[2]);
-        if (!(glm::length(dir) > 0.0) || !std::isfinite(angular_radius_rad) || angular_radius_rad < 0.0) {
-          throw Error(ErrorKind::BadInput, "moon_seen_from: needs a non-zero direction and an angular radius >= 0");
-        }
-        const Moon moon =
-            Moon::seenFrom({camera[0], camera[1], camera[2]}, glm::normalize(dir), angular_radius_rad);
-        return py::make_tuple(std::array<double, 3>{moon.centre_m.x, moon.centre_m.y, moon.centre_m.z},
-                              moon.radius_m);
-      });
+  m.def("_moon_seen_from", [](const std::array<double, 3>& camera, const std::array<double, 3>& direction,
+                              double angular_radius_rad) {
+    const glm::dvec3 dir(direction[0], direction[1], direction[2]);
+    if (!(glm::length(dir) > 0.0) || !std::isfinite(angular_radius_rad) || angular_radius_rad < 0.0) {
+      throw Error(ErrorKind::BadInput, "moon_seen_from: needs a non-zero direction and an angular radius >= 0");
+    }
+    const Moon moon = Moon::seenFrom({camera[0], camera[1], camera[2]}, glm::normalize(dir), angular_radius_rad);
+    return py::make_tuple(std::array<double, 3>{moon.centre_m.x, moon.centre_m.y, moon.centre_m.z}, moon.radius_m);
+  });
   py::class_<Sky>(m, "Sky")
       .def(py::init([](const std::string& path) { return Sky::load(path); }), py::arg("path"),
            py::call_guard<py::gil_scoped_release>())
