@@ -244,6 +244,10 @@ class Sky {
   // atmosphere within reach of a ray from `point` (false: the eclipse
   // lookups are the plain ones).
   bool moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
+  // The share of the plain sky irradiance at `point` left under an eclipse:
+  // the eclipsed over the plain sky radiance, each summed over the same
+  // cosine-weighted directions (sky_eclipse.cpp).
+  Spectrum eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
   // `ray` with a sun outside the baked sun angles moved to the nearest one,
   // as the tables take it (see the geometry conventions above).
   SunlitRay withBakedSun(const SunlitRay& ray) const;

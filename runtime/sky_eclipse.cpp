@@ -22,6 +22,15 @@ namespace {
 // along the whole ray leaves both at rounding level, whose ratio is noise.
 constexpr float kSmallestUneclipsedSingle = 1e-30f;
 
+// The sky irradiance's directions under an eclipse: cosine-weighted over
+// the hemisphere, kIrradianceBands bands of equal weight in the zenith
+// angle's sine squared times kIrradianceAzimuths azimuths. The plain and the
+// eclipsed sky are summed over the same directions and only their ratio is
+// used, so the rule's error (the sky near the sun, the horizon's glow)
+// largely cancels; 48 directions put one about every 30 deg.
+constexpr int kIrradianceBands = 6;
+constexpr int kIrradianceAzimuths = 8;
+
 Spectrum eclipsedShare(const Spectrum& eclipsed, const Spectrum& plain) {
   Spectrum share(0.0f);
   for (int c = 0; c < kMaxChannels; ++c) {
@@ -111,8 +120,35 @@ SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& n
   SunAndSkyIrradiance e = irradiance(point, normal, sun_dir);
   const double visible = moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad);
   e.sun *= static_cast<float>(visible);
-  e.sky *= eclipseSkylightFraction(atmosphere(), moon, point, sun_dir);
+  if (moonHidesSunNear(point, sun_dir, moon)) e.sky *= eclipsedSkyIrradianceShare(point, sun_dir, moon);
   return e;
+}
+
+Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const double length = glm::length(point);
+  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+  // Within the shell, as the irradiance lookups take it.
+  const glm::dvec3 from = up * std::clamp(length, domain.bottom_radius_m, domain.top_radius_m);
+  const glm::dvec3 helper = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 east = glm::normalize(glm::cross(helper, up)), north = glm::cross(up, east);
+  const Spectrum skylight = eclipseSkylight(from, sun_dir, moon);
+  Spectrum eclipsed(0.0f), plain(0.0f);
+  for (int b = 0; b < kIrradianceBands; ++b) {
+    const double sin_squared = (b + 0.5) / kIrradianceBands;
+    const double sin_theta = std::sqrt(sin_squared), cos_theta = std::sqrt(1.0 - sin_squared);
+    for (int j = 0; j < kIrradianceAzimuths; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5 * (b % 2)) / kIrradianceAzimuths;
+      const glm::dvec3 dir = up * cos_theta + (east * std::cos(phi) + north * std::sin(phi)) * sin_theta;
+      eclipsed += skyRadiance(from, dir, sun_dir, moon, skylight).radiance;
+      plain += skyRadiance(from, dir, sun_dir).radiance;
+    }
+  }
+  Spectrum share(0.0f);
+  for (int c = 0; c < kMaxChannels; ++c) {
+    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
+  }
+  return share;
 }
 
 }  // namespace skybake
