@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include <glm/geometric.hpp>
@@ -230,6 +231,34 @@ TEST(Eclipse, TotalityIsDarkButNotBlackAndAFarMoonChangesNothing) {
     for (int c = 0; c < 4; ++c) {
       EXPECT_EQ(p.radiance[c], e.radiance[c]);
       EXPECT_EQ(p.transmittance[c], e.transmittance[c]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skybake
+
+namespace skybake {
+namespace {
+
+// Hostile moons: one around the camera, one the size of the sky, one in the
+// atmosphere beside the camera, one at a NaN position. Every lookup stays
+// finite and non-negative (a point inside the moon sees no sun).
+TEST(Eclipse, HostileMoonsGiveFiniteLight) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  const glm::dvec3 camera(0.0, 0.0, a.bottom_radius_m + 1000.0), sun = direction(50.0, 0.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Moon& moon : {Moon{camera, 5000.0}, Moon{camera + sun * 1e9, 1e9}, Moon{camera + sun * 20e3, 3e3},
+                           Moon{glm::dvec3(nan, 0.0, 0.0), 1.7e6}}) {
+    for (auto [z, az] : {std::array{0.0, 0.0}, std::array{50.0, 0.0}, std::array{89.0, 90.0}, std::array{120.0, 0.0}}) {
+      const RadianceAndTransmittance v = sky.receivedRadiance(camera, direction(z, az), sun, moon);
+      const SunAndSkyIrradiance e = sky.irradiance(camera, {0.0, 0.0, 1.0}, sun, moon);
+      for (int c = 0; c < a.channelCount(); ++c) {
+        EXPECT_TRUE(std::isfinite(v.radiance[c]) && v.radiance[c] >= 0.0f) << v.radiance[c];
+        EXPECT_TRUE(std::isfinite(e.sun[c]) && e.sun[c] >= 0.0f);
+        EXPECT_TRUE(std::isfinite(e.sky[c]) && e.sky[c] >= 0.0f);
+      }
     }
   }
 }
