@@ -45,10 +45,11 @@ inline constexpr double kEclipseFirstDistance_m = 200.0;
 // The share of scattering along the way that the kernel does not count as
 // a loss (tau' above). A calibration, not a derivation: against the path
 // traced reference at the centre of a total eclipse's umbra (sun 40 deg
-// high, docs/ECLIPSES.md), 0 (the light scattered twice alone) makes the
-// zenith at 440 nm 5 times too dark on the ground, 1 (no scattering loss)
-// 3 times too bright; 0.6 puts the zenith within 15 % on the ground and
-// 30 % at 10 km in every channel.
+// high, moon 0.28 deg, docs/ECLIPSES.md), 0 (the light scattered twice
+// alone) makes the zenith at 440 nm about 5 times too dark on the ground,
+// 1 (no scattering loss) about 3 times too bright; 0.55 puts the ground's
+// zenith at 1.18 / 1.13 / 0.77 of the reference at 680 / 550 / 440 nm (at
+// 10 km it is 2.2 / 1.8 / 1.2: see docs/ECLIPSES.md).
 inline constexpr double kEclipseRedirectedScatteringShare = 0.55;
 
 // F above, per channel, for the neighbourhood of `point` (in the atmosphere)
