@@ -10,7 +10,7 @@ namespace skybake {
 
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
-                                           double t_end, int segments) {
+                                           double t_end, int segments, const MoonAlongRay* moon) {
   // A light shaft's shadow can reach past the ray's end: nothing is lit.
   if (!(t_end > t_start)) return {Spectrum(0.0f), Spectrum(0.0f)};
   const AtmosphereMedia media(a);
@@ -24,8 +24,8 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     // As TableSampler::transmittanceToSun, with one exponential for the
     // sunlight's whole path, to the node and on to the ray's start.
     const TableSampler::SunFromR sun(sampler, r_t, a.sun_angular_radius_rad);
-    const double visible = sun.visibleFraction(mu_s_t);
-    if (visible <= 0.0) return;  // in the planet's shadow
+    const double visible = sun.visibleFraction(mu_s_t) * (moon ? moon->visibleSunFraction(t) : 1.0);
+    if (visible <= 0.0) return;  // in the planet's shadow or the moon's umbra
     const Spectrum depth = sun.opticalDepth(optical_depth, sun.muCoord(mu_s_t)) +
                            sampler.opticalDepthAlongRay(optical_depth, r, mu, t, ray.ray_intersects_ground);
     const SpectrumD light(glm::exp(-depth) * static_cast<float>(visible));

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "data_formats/atmosphere_parameters.h"
+#include "runtime/moon_occluder.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/table_sampler.h"
 
@@ -33,9 +34,11 @@ struct SunlitRay {
 // seen from the ray's start; `segments` is how many sub-intervals of 4
 // Gauss nodes the whole of [t_start, t_end] gets, shared among the pieces by
 // length (at least one each; optically thick ones are split further, see
-// ray_quadrature.h).
+// ray_quadrature.h). With `moon`, the sunlight at each node is also
+// dimmed by the part of the disk the moon hides there (an eclipse); its
+// origin, dir and sun_dir must be the 3D form of `ray`.
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
-                                           double t_end, int segments);
+                                           double t_end, int segments, const MoonAlongRay* moon = nullptr);
 
 }  // namespace skybake

@@ -42,6 +42,8 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/bake_file.h"
+#include "runtime/atmosphere_ray.h"
+#include "runtime/moon_occluder.h"
 #include "runtime/multiple_scattering_phase.h"
 #include "runtime/phase_functions.h"
 #include "runtime/single_scattering_ray.h"
@@ -172,6 +174,40 @@ class Sky {
   // segment passes through the ground).
   Spectrum transmittance(const glm::dvec3& a, const glm::dvec3& b) const;
 
+  // ---- a solar eclipse: the same lookups with a moon before the sun ----
+  // (docs/ECLIPSES.md; runtime/moon_occluder.h, runtime/eclipse_skylight.h)
+  // Single scattering follows the moon's shadow exactly along the ray (the
+  // sun's visible fraction at each point, with the moon's parallax);
+  // multiple scattering and the sky's irradiance are the tables' scaled by
+  // the visible fraction averaged over the neighbourhood light comes from
+  // (an approximation: the light of totality comes from sunlit air outside
+  // the umbra). A moon that hides no part of the sun from anywhere in the
+  // atmosphere gives the uneclipsed lookups' values exactly. About 10 times
+  // a day lookup while the moon is near the sun.
+  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
+                                       const Moon& moon) const;
+  RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                            const glm::dvec3& sun_dir, const Moon& moon) const;
+  // The same with the camera's skylight share given (eclipseSkylight of the
+  // camera): it is one for every view from a camera in the atmosphere, so an
+  // image computes it once and its lookups cost about a third as much. (A
+  // camera in space enters the atmosphere at another point for each view:
+  // use the lookups above.)
+  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
+                                       const Moon& moon, const Spectrum& camera_skylight) const;
+  RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                            const glm::dvec3& sun_dir, const Moon& moon,
+                                            const Spectrum& camera_skylight) const;
+  // The share of the uneclipsed multiple scattering and sky irradiance left
+  // at `point` (runtime/eclipse_skylight.h), per channel.
+  Spectrum eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
+  // The direct sun times the part of its disk the moon leaves visible from
+  // `point`; the sky part scaled as multiple scattering is.
+  SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
+                                 const Moon& moon) const;
+  Spectrum sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
+                         const Moon& moon) const;
+
   // skyRadiance for many view directions at once; same results.
   void skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
                         SpectrumBatch radiance, SpectrumBatch transmittance) const;
@@ -209,10 +245,33 @@ class Sky {
   }
   // The radiance scattered toward the start of a ray that ends on the ground,
   // over its part [t_start, t_end], integrated along it (for bakes whose
-  // tables hold no such rays). `from_start` is the same ray from t_start on,
-  // `to_start` the transmittance over [0, t_start].
-  Spectrum groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
-                             const Spectrum& to_start) const;
+  // tables hold no such rays): single scattering without its phase
+  // functions, and multiple scattering. `from_start` is the same ray from
+  // t_start on, `to_start` the transmittance over [0, t_start].
+  void groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
+                         const Spectrum& to_start, SingleScattering& single, Spectrum& multiple) const;
+  // skyRadiance before its parts are summed: single scattering (without
+  // phase functions) and multiple scattering, for lookups that weigh them
+  // apart (the eclipse lookups).
+  struct SkyRadianceParts {
+    bool inside = false;  // false: the ray misses the atmosphere (radiance 0, transmittance 1)
+    AtmosphereRay start;  // the ray from where it is inside the atmosphere
+    double mu_s = 1.0, nu = 1.0;
+    double lit_from_m = 0.0;  // where scattering starts along start (past a light shaft's shadow)
+    SingleScattering single{Spectrum(0.0f), Spectrum(0.0f)};
+    Spectrum multiple{0.0f};
+    Spectrum transmittance{1.0f};
+  };
+  SkyRadianceParts skyRadianceParts(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
+                                    double shadow_length_m) const;
+  // Whether the moon may hide part of the sun from some point of the
+  // atmosphere within reach of a ray from `point` (false: the eclipse
+  // lookups are the plain ones).
+  bool moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
+  // The share of the plain sky irradiance at `point` left under an eclipse:
+  // the eclipsed over the plain sky radiance, each summed over the same
+  // cosine-weighted directions (sky_eclipse.cpp).
+  Spectrum eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
   // `ray` with a sun outside the baked sun angles moved to the nearest one,
   // as the tables take it (see the geometry conventions above).
   SunlitRay withBakedSun(const SunlitRay& ray) const;

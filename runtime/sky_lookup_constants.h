@@ -17,6 +17,16 @@ inline constexpr double kIntegratedSingleScatteringTopCosine = 0.0175;
 // (docs/MEASUREMENTS.md).
 inline constexpr int kLookupSingleScatteringSegments = 4;
 
+// ---- solar eclipses (sky_eclipse.cpp) ----
+
+// Sub-intervals of 4 Gauss nodes over the view ray for single scattering
+// under an eclipse, integrated with and without the moon (their ratio scales
+// the uneclipsed lookup). The moon's shadow ends in a penumbra thousands of
+// kilometres wide, smooth along any ray, and its umbra (a hundred
+// kilometres or so) has soft edges; 16 sub-intervals put several nodes
+// across the umbra of a ray crossing it near the ground.
+inline constexpr int kEclipseSingleScatteringSegments = 16;
+
 // ---- rays toward the ground of a bake without such views (sky_radiance.cpp) ----
 
 // A bake whose tables hold no rays toward the ground ([scene]

@@ -13,19 +13,32 @@ namespace skybake {
 
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                           const glm::dvec3& sun_dir, double shadow_length_m) const {
+  const SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, shadow_length_m);
+  if (!p.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  return {p.single.rayleigh * static_cast<float>(rayleighPhase(p.nu)) +
+              p.single.mie * static_cast<float>(mie_phase_(p.nu)) + p.multiple,
+          p.transmittance};
+}
+
+Sky::SkyRadianceParts Sky::skyRadianceParts(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                            const glm::dvec3& sun_dir, double shadow_length_m) const {
   const AtmosphereDomain& domain = sampler_.domain();
-  const AtmosphereRay start = enterAtmosphere(domain, camera, view_dir);
-  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  SkyRadianceParts parts;
+  parts.start = enterAtmosphere(domain, camera, view_dir);
+  const AtmosphereRay& start = parts.start;
+  parts.inside = start.inside;
+  if (!start.inside) return parts;
   const double r = start.r;
   const double mu = start.mu;
   const double mu_s = clampCosine(glm::dot(start.origin, sun_dir) / r);
   const double nu = clampCosine(glm::dot(view_dir, sun_dir));
+  parts.mu_s = mu_s;
+  parts.nu = nu;
   const bool ground = start.ends_on_ground;
   const BakeTables& t = bake_.tables;
 
-  const Spectrum transmittance =
-      ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, start.length, true))
-             : glm::exp(-sampler_.opticalDepthToTop(t.optical_depth, r, mu));
+  parts.transmittance = ground ? glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, start.length, true))
+                               : glm::exp(-sampler_.opticalDepthToTop(t.optical_depth, r, mu));
 
   // Light shafts: only the part of the ray beyond the shadow scatters, seen
   // through the shadowed part. Without a shadow that part starts here; a
@@ -40,36 +53,34 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
     mu_s_p = clampCosine((r * mu_s + shadow * nu) / r_p);
     shadow_transmittance = glm::exp(-sampler_.opticalDepthAlongRay(t.optical_depth, r, mu, shadow, ground));
   }
+  parts.lit_from_m = shadow;
   if (ground && !domain.scattering_ground_views) {
     // The tables hold no rays toward the ground: integrate this one.
-    return {groundRayRadiance({r, mu, mu_s, nu, ground}, shadow, start.length, {r_p, mu_p, mu_s_p, nu, ground},
-                              shadow_transmittance),
-            transmittance};
+    groundRayRadiance({r, mu, mu_s, nu, ground}, shadow, start.length, {r_p, mu_p, mu_s_p, nu, ground},
+                      shadow_transmittance, parts.single, parts.multiple);
+    return parts;
   }
-  const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, shadow, start.length, [&] {
+  parts.single = singleScattering({r, mu, mu_s, nu, ground}, shadow, start.length, [&] {
     return SingleScattering{
         sampler_.scattering(t.single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance,
         hasSingleMie() ? sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance
                        : Spectrum(0.0f)};
   });
-  const Spectrum multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
-                            multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
-  const Spectrum radiance = single.rayleigh * static_cast<float>(rayleighPhase(nu)) +
-                            single.mie * static_cast<float>(mie_phase_(nu)) + multiple;
-  return {radiance, transmittance};
+  parts.multiple = sampler_.scattering(t.multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
+                   multiple_shape_(r_p - domain.bottom_radius_m, nu) * shadow_transmittance;
+  return parts;
 }
 
-Spectrum Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
-                                const Spectrum& to_start) const {
+void Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
+                            const Spectrum& to_start, SingleScattering& single, Spectrum& multiple) const {
   const BakeTables& t = bake_.tables;
-  const SingleScattering single = integrateSingleScattering(sampler_, t.optical_depth, atmosphere(), withBakedSun(ray),
-                                                            t_start, t_end, kGroundRaySubintervals);
+  single = integrateSingleScattering(sampler_, t.optical_depth, atmosphere(), withBakedSun(ray), t_start, t_end,
+                                     kGroundRaySubintervals);
   const SunlitRay baked_from_start = withBakedSun(from_start);
-  const RadianceAndTransmittance multiple = directSegmentRadiance(
+  const RadianceAndTransmittance tabulated_density = directSegmentRadiance(
       sampler_, t, atmosphere(), multiple_shape_, baked_from_start.r, baked_from_start.mu, baked_from_start.mu_s,
       ray.nu, std::max(t_end - t_start, 0.0), kGroundRaySubintervals, false);
-  return single.rayleigh * static_cast<float>(rayleighPhase(ray.nu)) +
-         single.mie * static_cast<float>(mie_phase_(ray.nu)) + multiple.radiance * to_start;
+  multiple = tabulated_density.radiance * to_start;
 }
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,

@@ -150,10 +150,15 @@ void runCompare(const CompareOptions& o) {
   const AtmosphereParameters& a = config.atmosphere;
   requireWavelengthChannels(a, o.config_path, "compare");
   const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
-  // Comparators answer rays to the sky or the ground; rays to a point and
-  // irradiance are validate's.
+  // Comparators answer rays to the sky or the ground; rays to a point,
+  // irradiance and eclipses are validate's.
   QuerySet queries{all.name, {}, {}};
   for (const RadianceQuery& q : all.radiance) {
+    if (q.moon.present())
+      throwBadInput(
+          fmt::format("compare: {} holds eclipse queries (a moon); the comparators "
+                      "have no moon: use skybake validate",
+                      o.queries));
     if (!(q.distance_m > 0.0)) queries.radiance.push_back(q);
   }
 

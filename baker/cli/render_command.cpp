@@ -1,7 +1,10 @@
 // skybake render FILE.exr --altitude-m A --sun-zenith-deg Z [--sun-azimuth-deg P]
 //   --projection fisheye|latlong|perspective [--fov-deg F] [--size WxH]
 //   [--exposure E] [--tonemap none|reinhard|aces] [--channels rgb|spectral] [--no-sun]
-//   [--backend cpu|gl] -o OUT.png|OUT.exr
+//   [--backend cpu|gl] [--moon AZIMUTH,ELEVATION,ANGULAR_RADIUS] -o OUT.png|OUT.exr
+#include <array>
+#include <cmath>
+#include <cstdlib>
 #include <optional>
 
 #include <OpenImageIO/filesystem.h>
@@ -42,7 +45,38 @@ struct RenderOptions {
   std::string backend = "cpu";
   std::string channels = "rgb";
   bool no_sun = false;
+  std::string moon;  // AZIMUTH,ELEVATION,ANGULAR_RADIUS in degrees; empty: none
 };
+
+// --moon AZIMUTH,ELEVATION,ANGULAR_RADIUS (degrees): three finite numbers,
+// the azimuth within a turn either way, the elevation in [-90, 90], the
+// angular radius in (0, kMaxMoonAngularRadius_deg].
+std::array<double, 3> parseMoon(const std::string& text) {
+  std::array<double, 3> values{};
+  size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const size_t comma = text.find(',', start);
+    if ((i < 2) == (comma == std::string::npos)) {
+      refuseOptionValue("--moon", text, "must be AZIMUTH,ELEVATION,ANGULAR_RADIUS in degrees, e.g. 0,40,0.28");
+    }
+    const std::string part = text.substr(start, i < 2 ? comma - start : std::string::npos);
+    char* end = nullptr;
+    values[i] = std::strtod(part.c_str(), &end);
+    if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(values[i])) {
+      refuseOptionValue("--moon", text, fmt::format("'{}' is not a finite number of degrees", part));
+    }
+    start = comma + 1;
+  }
+  if (std::abs(values[0]) > kMaxAzimuth_deg) {
+    refuseOptionValue("--moon", text, fmt::format("the azimuth must be in [-{0}, {0}] degrees", kMaxAzimuth_deg));
+  }
+  if (std::abs(values[1]) > 90.0) refuseOptionValue("--moon", text, "the elevation must be in [-90, 90] degrees");
+  if (!(values[2] > 0.0) || values[2] > kMaxMoonAngularRadius_deg) {
+    refuseOptionValue("--moon", text,
+                      fmt::format("the angular radius must be in (0, {}] degrees", kMaxMoonAngularRadius_deg));
+  }
+  return values;
+}
 
 // --fov-deg: below a degree the view is finer than any table resolves; more
 // than a full turn is not a field of view.
@@ -131,8 +165,13 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
   spec.attribute("skybake:sun_azimuth_deg", static_cast<float>(view.sun_azimuth_deg));
   spec.attribute("skybake:sun_angular_radius_rad", static_cast<float>(sky.atmosphere().sun_angular_radius_rad));
   spec.attribute("skybake:sun_in_image", view.sun_disk ? 1 : 0);
-  // The sun at the camera, on a surface facing it.
-  const Spectrum sun_irradiance = sky.sunIrradiance(cameraPosition(sky, view), sun, sun);
+  // The sun at the camera, on a surface facing it (the part the moon leaves).
+  const Spectrum sun_irradiance = sky.sunIrradiance(cameraPosition(sky, view), sun, sun, view.moon);
+  if (view.moon.present()) {
+    const glm::dvec3 m = view.moon.centre_m;
+    spec.attribute("skybake:moon_centre_m", fmt::format("{} {} {}", m.x, m.y, m.z));
+    spec.attribute("skybake:moon_radius_m", static_cast<float>(view.moon.radius_m));
+  }
   std::vector<float> irradiance(&sun_irradiance[0], &sun_irradiance[0] + sky.channelCount());
   // Text, as the wavelengths: OpenImageIO would store a float array as a
   // v2f, a v3f or a floatvector depending on the number of channels.
@@ -218,6 +257,11 @@ void runRender(RenderOptions o) {
   if (o.channels == "spectral" && !exr) {
     refuseOptionValue("--channels", o.channels, "needs an .exr output; a PNG shows sRGB");
   }
+  const bool has_moon = !o.moon.empty();
+  const std::array<double, 3> moon = has_moon ? parseMoon(o.moon) : std::array<double, 3>{};
+  if (has_moon && o.backend == "gl") {
+    refuseOptionValue("--moon", o.moon, "the gl backend has no eclipses yet: use --backend cpu");
+  }
   const ImageBackend backend(o.backend);
   requireWritableOutput(o.output_path, {o.bake_path});
   SkyView& v = o.view;
@@ -246,6 +290,7 @@ void runRender(RenderOptions o) {
                                   "\"wavelengths\" for spectral images",
                                   o.bake_path));
   }
+  if (has_moon) v.moon = moonSeenFrom(sky, v, moon[0], moon[1], moon[2]);
   requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
                          static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) *
                              (kImageBytesPerPixel + kImageBytesPerPixelChannel * sky.channelCount()));
@@ -308,6 +353,11 @@ Command addRenderCommand(CLI::App& app) {
                   "OpenGL 3.3 context: EGL, a GPU or Mesa's llvmpipe; float arithmetic, same images to within "
                   "0.5 % RMS).")
       ->capture_default_str();
+  cmd->add_option("--moon", o->moon,
+                  "A solar eclipse: the moon at AZIMUTH,ELEVATION,ANGULAR_RADIUS degrees (azimuth as "
+                  "--sun-azimuth-deg's, elevation above the horizontal, seen from the camera at the mean lunar "
+                  "distance), e.g. 0,40,0.28 before a sun at --sun-zenith-deg 50 for totality. It hides the sun "
+                  "disk and shadows the sky (docs/ECLIPSES.md). CPU backend only.");
   return {cmd, [o] { runRender(*o); }};
 }
 

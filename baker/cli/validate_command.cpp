@@ -51,7 +51,9 @@ std::string colourColumns(const colour::Xyz& bake, const CachedReference& refere
 // (and their CIE XYZ and CIEDE2000 with a colour reference).
 void writeDetails(const std::string& path, const AtmosphereParameters& a, const QuerySet& queries,
                   const ReferenceValues& reference, const MethodValues& bake, const ColourDetails& colour) {
-  std::string text = "kind,altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m";
+  std::string text =
+      "kind,altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,"
+      "moon_angular_radius_deg";
   for (double w : a.wavelengths_nm) text += fmt::format(",bake_{0},reference_{0},reference_error_{0}", w);
   if (colour.reference != nullptr) {
     text += ",bake_X,bake_Y,bake_Z,reference_X,reference_Y,reference_Z,reference_error_Y,ciede2000";
@@ -60,8 +62,8 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
   const int n = a.channelCount();
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
-    text += fmt::format("radiance,{},{},{},{},{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
-                        q.view_azimuth_deg, q.distance_m);
+    text += fmt::format("radiance,{},{},{},{},{},{},{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
+                        q.view_azimuth_deg, q.distance_m, q.moon.separation_deg, q.moon.angular_radius_deg);
     for (int c = 0; c < n; ++c) {
       text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.radiance[i][c], reference.radiance[i].value[c],
                           reference.radiance[i].standard_error[c]);
@@ -71,7 +73,7 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
   }
   for (size_t i = 0; i < queries.irradiance.size(); ++i) {
     const IrradianceQuery& q = queries.irradiance[i];
-    text += fmt::format("sky_irradiance,{},{},,,", q.altitude_m, q.sun_zenith_deg);
+    text += fmt::format("sky_irradiance,{},{},,,,,", q.altitude_m, q.sun_zenith_deg);
     for (int c = 0; c < n; ++c) {
       text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.irradiance[i][c], reference.irradiance[i].value[c],
                           reference.irradiance[i].standard_error[c]);

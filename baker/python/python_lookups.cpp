@@ -10,14 +10,17 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include "baker/python/python_bindings.h"
 #include "data_formats/error.h"
+
 #include "runtime/sky.h"
 
 namespace py = pybind11;
@@ -95,6 +98,37 @@ py::tuple radianceRows(const Sky& sky, const Rows& from, const Rows& to, const R
   return py::make_tuple(radiance, transmittance);
 }
 
+// The eclipse lookups: a moon per row (its centre, m from the planet's
+// centre, and its radius, m).
+py::tuple eclipseRows(const Sky& sky, const Rows& camera, const Rows& view, const Rows& sun, const Rows& moon_centre,
+                      const Rows& moon_radius, bool irradiance) {
+  const size_t n = rowCount(camera, 3, irradiance ? "point_m" : "camera_m");
+  if (rowCount(view, 3, irradiance ? "normal" : "view_dir") != n || rowCount(sun, 3, "sun_dir") != n ||
+      rowCount(moon_centre, 3, "moon centre_m") != n || static_cast<size_t>(moon_radius.size()) != n) {
+    throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
+  }
+  const int channels = sky.channelCount();
+  Spectra first = spectra(n, channels), second = spectra(n, channels);
+  const double *a = camera.data(), *b = view.data(), *s = sun.data(), *m = moon_centre.data(),
+               *radius = moon_radius.data();
+  float *f = first.mutable_data(), *g = second.mutable_data();
+  forRows(n, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      const Moon moon{row3(m, i), radius[i]};
+      if (irradiance) {
+        const SunAndSkyIrradiance e = sky.irradiance(row3(a, i), row3(b, i), row3(s, i), moon);
+        store(f, i, channels, e.sun);
+        store(g, i, channels, e.sky);
+      } else {
+        const RadianceAndTransmittance v = sky.skyRadiance(row3(a, i), row3(b, i), row3(s, i), moon);
+        store(f, i, channels, v.radiance);
+        store(g, i, channels, v.transmittance);
+      }
+    }
+  });
+  return py::make_tuple(first, second);
+}
+
 py::dict atmosphereDict(const AtmosphereParameters& a) {
   auto spectrum = [&](const Spectrum& s) {
     std::vector<double> v;
@@ -121,11 +155,26 @@ py::dict atmosphereDict(const AtmosphereParameters& a) {
 }  // namespace
 
 void registerLookups(py::module_& m) {
+  m.def("_moon_seen_from", [](const std::array<double, 3>& camera, const std::array<double, 3>& direction,
+                              double angular_radius_rad) {
+    const glm::dvec3 dir(direction[0], direction[1], direction[2]);
+    if (!(glm::length(dir) > 0.0) || !std::isfinite(angular_radius_rad) || angular_radius_rad < 0.0) {
+      throw Error(ErrorKind::BadInput, "moon_seen_from: needs a non-zero direction and an angular radius >= 0");
+    }
+    const Moon moon = Moon::seenFrom({camera[0], camera[1], camera[2]}, glm::normalize(dir), angular_radius_rad);
+    return py::make_tuple(std::array<double, 3>{moon.centre_m.x, moon.centre_m.y, moon.centre_m.z}, moon.radius_m);
+  });
   py::class_<Sky>(m, "Sky")
       .def(py::init([](const std::string& path) { return Sky::load(path); }), py::arg("path"),
            py::call_guard<py::gil_scoped_release>())
       .def("_sky_radiance", [](const Sky& sky, const Rows& camera, const Rows& view, const Rows& sun,
                                const Rows& shadow) { return radianceRows(sky, camera, view, sun, shadow, false); })
+      .def("_sky_radiance_eclipse",
+           [](const Sky& sky, const Rows& camera, const Rows& view, const Rows& sun, const Rows& moon_centre,
+              const Rows& moon_radius) { return eclipseRows(sky, camera, view, sun, moon_centre, moon_radius, false); })
+      .def("_irradiance_eclipse",
+           [](const Sky& sky, const Rows& point, const Rows& normal, const Rows& sun, const Rows& moon_centre,
+              const Rows& moon_radius) { return eclipseRows(sky, point, normal, sun, moon_centre, moon_radius, true); })
       .def("_radiance_to_point", [](const Sky& sky, const Rows& camera, const Rows& point, const Rows& sun,
                                     const Rows& shadow) { return radianceRows(sky, camera, point, sun, shadow, true); })
       .def("_irradiance",

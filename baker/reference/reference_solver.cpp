@@ -52,19 +52,22 @@ glm::dvec3 directionAround(const glm::dvec3& axis, double cos_theta, double phi)
 
 class PathTracer {
  public:
-  explicit PathTracer(const AtmosphereParameters& a) : a_(a), media_(a) {}
+  PathTracer(const AtmosphereParameters& a, const Moon& moon) : a_(a), media_(a), moon_(moon) {}
 
   double altitude(const glm::dvec3& p) const { return glm::length(p) - a_.bottom_radius_m; }
 
   // Sun transmittance at p times the part of the sun disk above p's horizon
-  // (as the bake counts it): 0 in the planet's shadow. The visible part of a
-  // disk centred below the horizon grazes it.
+  // (as the bake counts it) and past the moon: 0 in the planet's shadow and
+  // in the moon's umbra. The visible part of a disk centred below the
+  // horizon grazes it.
   SpectrumD sunTransmittance(const glm::dvec3& p, const glm::dvec3& sun, int segments) const {
     const double r = std::max(glm::length(p), a_.bottom_radius_m);
     const double mu_s = clampCosine(glm::dot(p, sun) / glm::length(p));
     const double horizon_mu = tangentZenithCosine(r, a_.bottom_radius_m);
-    const double visible = sunDiskVisibleFraction(
-        mu_s - horizon_mu, sunDiskHalfSizeAtHorizon(a_.bottom_radius_m, r, a_.sun_angular_radius_rad));
+    const double visible =
+        sunDiskVisibleFraction(mu_s - horizon_mu,
+                               sunDiskHalfSizeAtHorizon(a_.bottom_radius_m, r, a_.sun_angular_radius_rad)) *
+        moon_.visibleSunFraction(p, sun, a_.sun_angular_radius_rad);
     if (visible <= 0.0) return SpectrumD(0.0);
     return glm::exp(-integrateOpticalDepthToTop(media_, r, std::max(mu_s, horizon_mu), segments)) * visible;
   }
@@ -286,6 +289,7 @@ class PathTracer {
 
   const AtmosphereParameters& a_;
   AtmosphereMedia media_;
+  Moon moon_;  // none: the sun is hidden by the planet alone
 };
 
 // Estimates the mean of path(sampler) from `paths` paths split into
@@ -323,8 +327,8 @@ namespace {
 // of the channels, or the identity).
 template <typename MapFn>
 ReferenceEstimate radianceThrough(const AtmosphereParameters& a, const ReferenceRay& query, int paths, uint64_t seed,
-                                  MapFn&& map) {
-  const PathTracer tracer(a);
+                                  const Moon& moon, MapFn&& map) {
+  const PathTracer tracer(a, moon);
   const AtmosphereRay ray =
       atmosphereRay(a.bottom_radius_m, a.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
@@ -339,8 +343,8 @@ ReferenceEstimate radianceThrough(const AtmosphereParameters& a, const Reference
 
 template <typename MapFn>
 ReferenceEstimate skyIrradianceThrough(const AtmosphereParameters& a, const glm::dvec3& point, const glm::dvec3& sun,
-                                       int paths, uint64_t seed, MapFn&& map) {
-  const PathTracer tracer(a);
+                                       int paths, uint64_t seed, const Moon& moon, MapFn&& map) {
+  const PathTracer tracer(a, moon);
   const double length = glm::length(point);
   const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
   const glm::dvec3 start = up * std::clamp(length, a.bottom_radius_m, a.top_radius_m);
@@ -357,13 +361,14 @@ SpectrumD unmapped(const SpectrumD& s) { return s; }
 
 }  // namespace
 
-ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed) const {
-  return radianceThrough(a_, query, paths, seed, unmapped);
+ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed,
+                                            const Moon& moon) const {
+  return radianceThrough(a_, query, paths, seed, moon, unmapped);
 }
 
 ReferenceEstimate ReferenceSolver::mappedRadiance(const ReferenceRay& query, int paths, uint64_t seed,
-                                                  const glm::dmat4& lanes_to_output) const {
-  return radianceThrough(a_, query, paths, seed, [&](const SpectrumD& s) { return lanes_to_output * s; });
+                                                  const glm::dmat4& lanes_to_output, const Moon& moon) const {
+  return radianceThrough(a_, query, paths, seed, moon, [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 
 SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
@@ -374,13 +379,15 @@ SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
 }
 
 ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
-                                                 uint64_t seed) const {
-  return skyIrradianceThrough(a_, point, sun, paths, seed, unmapped);
+                                                 uint64_t seed, const Moon& moon) const {
+  return skyIrradianceThrough(a_, point, sun, paths, seed, moon, unmapped);
 }
 
 ReferenceEstimate ReferenceSolver::mappedSkyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
-                                                       uint64_t seed, const glm::dmat4& lanes_to_output) const {
-  return skyIrradianceThrough(a_, point, sun, paths, seed, [&](const SpectrumD& s) { return lanes_to_output * s; });
+                                                       uint64_t seed, const glm::dmat4& lanes_to_output,
+                                                       const Moon& moon) const {
+  return skyIrradianceThrough(a_, point, sun, paths, seed, moon,
+                              [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 
 }  // namespace skybake

@@ -20,6 +20,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/atmosphere_parameters.h"
+#include "runtime/moon_occluder.h"
 
 namespace skybake {
 
@@ -42,8 +43,12 @@ class ReferenceSolver {
   // The radiance the viewer receives along the ray, W m^-2 sr^-1 nm^-1:
   // in-scattering of all orders plus, for a ray that ends on the ground (and
   // has no distance limit), the transmitted radiance of the lit Lambertian
-  // ground. The direct sun disk is not included.
-  ReferenceEstimate radiance(const ReferenceRay& ray, int paths, uint64_t seed) const;
+  // ground. The direct sun disk is not included. `moon` (none by default)
+  // hides part of the sun wherever the sun is connected to: the single
+  // scattering quadrature, the lit ground and every next-event estimate, so
+  // the paths give the true light inside the moon's shadow. 0 paths give
+  // single scattering alone (the deterministic part).
+  ReferenceEstimate radiance(const ReferenceRay& ray, int paths, uint64_t seed, const Moon& moon = Moon{}) const;
 
   // The same estimate of a linear map of the channels, lanes_to_output *
   // radiance (glm's column convention: column c holds what one unit of
@@ -51,17 +56,18 @@ class ReferenceSolver {
   // such as CIE XYZ. Each path's contribution is mapped before it is
   // averaged, so the standard error counts the channels' correlation (one
   // path serves them all). radiance() is the same estimate unmapped.
-  ReferenceEstimate mappedRadiance(const ReferenceRay& ray, int paths, uint64_t seed,
-                                   const glm::dmat4& lanes_to_output) const;
+  ReferenceEstimate mappedRadiance(const ReferenceRay& ray, int paths, uint64_t seed, const glm::dmat4& lanes_to_output,
+                                   const Moon& moon = Moon{}) const;
 
   // Transmittance along the same segment (exact quadrature, no noise).
   SpectrumD transmittance(const ReferenceRay& ray) const;
 
   // Sky irradiance (direct sun excluded) on a horizontal surface at `point`.
-  ReferenceEstimate skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths, uint64_t seed) const;
+  ReferenceEstimate skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths, uint64_t seed,
+                                  const Moon& moon = Moon{}) const;
   // Sky irradiance through a linear map of the channels, as mappedRadiance.
   ReferenceEstimate mappedSkyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths, uint64_t seed,
-                                        const glm::dmat4& lanes_to_output) const;
+                                        const glm::dmat4& lanes_to_output, const Moon& moon = Moon{}) const;
 
  private:
   const AtmosphereParameters& a_;

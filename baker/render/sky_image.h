@@ -30,7 +30,14 @@ struct SkyView {
   int width = 512;
   int height = 512;
   bool sun_disk = true;  // false: the sun disk is left out (a renderer adds its own directional light)
+  Moon moon;             // a solar eclipse's moon (none by default): see moonSeenFrom
 };
+
+// The moon at `azimuth_deg` (in the view's frame, as the sun's) and
+// `elevation_deg` above the horizontal, `angular_radius_deg` in radius, seen
+// from the view's camera at the mean lunar distance.
+Moon moonSeenFrom(const Sky& sky, const SkyView& view, double azimuth_deg, double elevation_deg,
+                  double angular_radius_deg);
 
 // Spectral radiance per pixel, W m^-2 sr^-1 nm^-1: `channels` floats per
 // pixel in the bake's channel order, rows top to bottom.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -64,7 +65,20 @@ void addSunDisk(const Sky& sky, const SkyView& v, SpectralImage& image) {
   const double bottom = sky.atmosphere().bottom_radius_m;
   const double top = sky.atmosphere().top_radius_m;
   const double target_spacing = radius / kSubsamplesPerSunRadius;
-#pragma omp parallel for schedule(dynamic)
+  // The moon before the sun, seen from the camera (none: nothing hidden).
+  const glm::dvec3 to_moon = v.moon.centre_m - camera;
+  const double moon_distance = glm::length(to_moon);
+  const bool moon = v.moon.present() && moon_distance > v.moon.radius_m;
+  const glm::dvec3 moon_dir = moon ? to_moon / moon_distance : glm::dvec3(0.0, 0.0, 1.0);
+  const double moon_radius = moon ? std::asin(v.moon.radius_m / moon_distance) : 0.0;
+  // The disk's solid angle the subsamples count with and without the moon
+  // (transmittance aside), to scale the image's sun to the exact visible
+  // part of the disk (Moon::visibleSunFraction): the limbs' ramps blur
+  // where the moon's and the sun's edges lie closer than a ramp, and would
+  // leave a sliver of sun in totality.
+  double counted_past_moon = 0.0, counted_whole = 0.0;
+  std::vector<Spectrum> added_sun(moon ? static_cast<size_t>(v.width) * v.height : 0, Spectrum(0.0f));
+#pragma omp parallel for schedule(dynamic) reduction(+ : counted_past_moon, counted_whole)
   for (int y = 0; y < v.height; ++y) {
     for (int x = 0; x < v.width; ++x) {
       glm::dvec3 centre;
@@ -87,7 +101,13 @@ void addSunDisk(const Sky& sky, const SkyView& v, SpectralImage& image) {
           if (!directionAtImagePoint(v, sx, sy, dir)) continue;
           const double solid_angle = solidAnglePerPixelArea_sr(v, sx, sy);
           pixel_solid_angle += solid_angle;
-          const double covered = std::clamp(0.5 + (ramp_radius - angleBetween(dir, sun)) / ramp, 0.0, 1.0);
+          // The moon's limb gets the same ramp as the sun's, from outside.
+          const double past_moon =
+              moon ? std::clamp(0.5 + (angleBetween(dir, moon_dir) - moon_radius) / ramp, 0.0, 1.0) : 1.0;
+          const double covered_whole = std::clamp(0.5 + (ramp_radius - angleBetween(dir, sun)) / ramp, 0.0, 1.0);
+          const double covered = covered_whole * past_moon;
+          counted_whole += covered_whole * solid_angle;
+          counted_past_moon += covered * solid_angle;
           if (covered <= 0.0) continue;
           const AtmosphereRay ray = atmosphereRay(bottom, top, camera, dir, 0.0);
           if (ray.ends_on_ground) continue;
@@ -99,6 +119,20 @@ void addSunDisk(const Sky& sky, const SkyView& v, SpectralImage& image) {
       }
       if (!(pixel_solid_angle > 0.0)) continue;
       const Spectrum added = solar * sun_solid_angle / static_cast<float>(pixel_solid_angle);
+      if (moon) {
+        added_sun[static_cast<size_t>(y) * v.width + x] = added;
+        continue;
+      }
+      float* pixel = image.pixel(x, y);
+      for (int c = 0; c < image.channels; ++c) pixel[c] += added[c];
+    }
+  }
+  if (!moon) return;
+  const double exact = v.moon.visibleSunFraction(camera, sun, radius);
+  const float scale = counted_past_moon > 0.0 ? static_cast<float>(exact * counted_whole / counted_past_moon) : 0.0f;
+  for (int y = 0; y < v.height; ++y) {
+    for (int x = 0; x < v.width; ++x) {
+      const Spectrum added = added_sun[static_cast<size_t>(y) * v.width + x] * scale;
       float* pixel = image.pixel(x, y);
       for (int c = 0; c < image.channels; ++c) pixel[c] += added[c];
     }

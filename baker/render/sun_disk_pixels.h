@@ -12,7 +12,8 @@ namespace skybake {
 
 // Adds the sun disk of `view` (the bake's sun: its angular radius and
 // radiance, Sky::solarRadiance) to `image`, as renderSkyRadiance rendered
-// it; nothing when view.sun_disk is false or the bake's sun is a point.
+// it; nothing when view.sun_disk is false or the bake's sun is a point. A
+// view's moon hides the part of the disk behind it.
 void addSunDisk(const Sky& sky, const SkyView& view, SpectralImage& image);
 
 }  // namespace skybake

@@ -124,10 +124,10 @@ int colourGroupHalfPaths(int paths) {
 }
 
 ColourEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour, const ReferenceRay& ray, int paths,
-                                       uint64_t seed) {
+                                       uint64_t seed, const Moon& moon) {
   const int half_paths = colourGroupHalfPaths(paths);
   return sumOverGroups(colour, [&](const ReferenceSolver& solver, const glm::dmat4& to_xyz, int g, int h) {
-    return solver.mappedRadiance(ray, half_paths, groupSeed(seed, g, h), to_xyz);
+    return solver.mappedRadiance(ray, half_paths, groupSeed(seed, g, h), to_xyz, moon);
   });
 }
 
@@ -169,7 +169,7 @@ ColourReferenceValues computeColourReference(const ColourReferenceAtmospheres& c
       const RadianceQuery& q = queries.radiance[item];
       const QueryGeometry g = geometryOf(a, q);
       const ColourEstimate e = colourRadianceReference(colour, {g.camera, g.view, g.sun, q.distance_m}, settings.paths,
-                                                       stableHash(radianceKey(q)));
+                                                       stableHash(radianceKey(q)), g.moon);
       out.radiance[item] = {e.value, e.standard_error, SpectrumD(0.0), e.half_difference};
     } else {
       const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];

@@ -73,7 +73,7 @@ struct ColourEstimate {
   SpectrumD half_difference;  // (A - B) / 2: a draw of the error of `value`
 };
 ColourEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour, const ReferenceRay& ray, int paths,
-                                       uint64_t seed);
+                                       uint64_t seed, const Moon& moon = Moon{});
 ColourEstimate colourSkyIrradianceReference(const ColourReferenceAtmospheres& colour, const glm::dvec3& point,
                                             const glm::dvec3& sun, int paths, uint64_t seed);
 

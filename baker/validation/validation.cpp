@@ -46,15 +46,24 @@ std::string radianceQuantity(const AtmosphereParameters& a, const RadianceQuery&
 }
 
 std::string radianceKey(const RadianceQuery& q) {
-  return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
-                     q.distance_m);
+  const std::string key = fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
+                                      q.view_azimuth_deg, q.distance_m);
+  // An eclipse's value is not the plain sky's: its key names the moon.
+  return q.moon.present() ? fmt::format("{} moon {} {}", key, q.moon.separation_deg, q.moon.angular_radius_deg) : key;
 }
 std::string irradianceKey(const IrradianceQuery& q) { return fmt::format("e {} {}", q.altitude_m, q.sun_zenith_deg); }
 
 QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
-  return {cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
-          directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
-          directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0)};
+  QueryGeometry g{cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
+                  directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
+                  directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0), Moon{}};
+  if (q.moon.present()) {
+    // Turned from the sun toward +y, perpendicular to the sun's x-z plane.
+    const double s = radiansFromDegrees(q.moon.separation_deg);
+    const glm::dvec3 moon_dir = g.sun * std::cos(s) + glm::dvec3(0.0, 1.0, 0.0) * std::sin(s);
+    g.moon = Moon::seenFrom(g.camera, glm::normalize(moon_dir), radiansFromDegrees(q.moon.angular_radius_deg));
+  }
+  return g;
 }
 
 ReferenceSettings referenceSettings(int paths, const std::string& cache_dir, bool no_cache) {
@@ -134,7 +143,7 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
       const RadianceQuery& q = queries.radiance[item];
       const QueryGeometry g = geometryOf(a, q);
       const ReferenceRay ray{g.camera, g.view, g.sun, q.distance_m};
-      const ReferenceEstimate e = solver.radiance(ray, settings.paths, stableHash(radianceKey(q)));
+      const ReferenceEstimate e = solver.radiance(ray, settings.paths, stableHash(radianceKey(q)), g.moon);
       out.radiance[item] = {e.value, e.standard_error, solver.transmittance(ray)};
     } else {
       const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];
@@ -177,7 +186,8 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
     const QueryGeometry g = geometryOf(a, q);
     const RadianceAndTransmittance v = q.distance_m > 0.0
                                            ? sky.radianceToPoint(g.camera, g.camera + g.view * q.distance_m, g.sun)
-                                           : sky.receivedRadiance(g.camera, g.view, g.sun);
+                                       : q.moon.present() ? sky.receivedRadiance(g.camera, g.view, g.sun, g.moon)
+                                                          : sky.receivedRadiance(g.camera, g.view, g.sun);
     out.radiance.push_back(v.radiance);
     out.transmittance.push_back(v.transmittance);
   }

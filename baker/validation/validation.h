@@ -82,6 +82,7 @@ QuerySet queryPiece(const QuerySet& queries, int piece, int pieces);
 // x-z plane, view azimuth from the sun's.
 struct QueryGeometry {
   glm::dvec3 camera, view, sun;
+  Moon moon;  // none unless the query has one
 };
 QueryGeometry geometryOf(const AtmosphereParameters& atmosphere, const RadianceQuery& query);
 

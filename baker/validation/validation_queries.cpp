@@ -1,6 +1,9 @@
 #include "baker/validation/validation_queries.h"
 
+#include <fmt/format.h>
+
 #include "baker/validation/csv_table.h"
+#include "data_formats/error.h"
 
 namespace skybake {
 namespace {
@@ -54,9 +57,30 @@ QuerySet quickQuerySet(double thickness) {
                  false);
 }
 
+QuerySet eclipseQuerySet() {
+  // Sun 40 deg high. The moon's angular radius 0.28 deg against the sun's
+  // 0.2666 (Earth) casts an umbra about 90 km across; 0.006 deg from the
+  // centre puts the camera 40 km off its axis, 0.03 deg 200 km off, outside
+  // it; 0.25 and 0.45 deg are partial eclipses of three quarters and a
+  // quarter of the disk; 0.25 deg centred is annular.
+  const double sun_zenith_deg = 50.0;
+  const MoonQuery moons[] = {{0.0, 0.28}, {0.006, 0.28}, {0.03, 0.28}, {0.25, 0.28}, {0.45, 0.28}, {0.0, 0.25}};
+  const double views[][2] = {{0.0, 0.0},  {45.0, 0.0},   {60.0, 180.0}, {60.0, 90.0},
+                             {85.0, 0.0}, {88.0, 180.0}, {89.5, 90.0},  {120.0, 90.0}};
+  QuerySet set;
+  set.name = "eclipse";
+  for (double altitude : {0.0, 10000.0}) {
+    for (const MoonQuery& moon : moons) {
+      for (const auto& view : views) set.radiance.push_back({altitude, sun_zenith_deg, view[0], view[1], 0.0, moon});
+    }
+  }
+  return set;
+}
+
 RadianceQueryColumns radianceQueryColumns(const CsvReader& q) {
-  return {q.require("altitude_m"), q.require("sun_zenith_deg"), q.require("view_zenith_deg"),
-          q.require("view_azimuth_deg"), q.find("distance_m")};
+  return {q.require("altitude_m"),          q.require("sun_zenith_deg"), q.require("view_zenith_deg"),
+          q.require("view_azimuth_deg"),    q.find("distance_m"),        q.find("moon_separation_deg"),
+          q.find("moon_angular_radius_deg")};
 }
 
 void requireRadianceQueryRanges(const CsvReader& q, const CsvRow& row, const RadianceQueryColumns& c) {
@@ -65,6 +89,8 @@ void requireRadianceQueryRanges(const CsvReader& q, const CsvRow& row, const Rad
   q.requireRange(row, c.view_zenith_deg, 0.0, kMaxZenithAngle_deg);
   q.requireRange(row, c.view_azimuth_deg, -kMaxAzimuth_deg, kMaxAzimuth_deg);
   if (c.distance_m) q.requireRange(row, *c.distance_m, -kMaxQueryDistance_m, kMaxQueryDistance_m);
+  if (c.moon_separation_deg) q.requireRange(row, *c.moon_separation_deg, 0.0, kMaxZenithAngle_deg);
+  if (c.moon_angular_radius_deg) q.requireRange(row, *c.moon_angular_radius_deg, 0.0, kMaxMoonAngularRadius_deg);
 }
 
 QuerySet querySetFromCsv(const std::filesystem::path& path) {
@@ -75,8 +101,17 @@ QuerySet querySetFromCsv(const std::filesystem::path& path) {
   for (CsvRow row; q.next(row);) {
     requireRadianceQueryRanges(q, row, c);
     const std::vector<double>& v = row.values;
-    set.radiance.push_back({v[c.altitude_m], v[c.sun_zenith_deg], v[c.view_zenith_deg], v[c.view_azimuth_deg],
-                            c.distance_m ? v[*c.distance_m] : 0.0});
+    const MoonQuery moon{c.moon_separation_deg ? v[*c.moon_separation_deg] : 0.0,
+                         c.moon_angular_radius_deg ? v[*c.moon_angular_radius_deg] : 0.0};
+    const double distance_m = c.distance_m ? v[*c.distance_m] : 0.0;
+    if (moon.present() && distance_m > 0.0) {
+      throwBadInput(
+          fmt::format("{}: a row with both distance_m {} and a moon: radiance to a point under an "
+                      "eclipse is not available (leave out distance_m or moon_angular_radius_deg)",
+                      path.string(), distance_m));
+    }
+    set.radiance.push_back(
+        {v[c.altitude_m], v[c.sun_zenith_deg], v[c.view_zenith_deg], v[c.view_azimuth_deg], distance_m, moon});
   }
   return set;
 }
@@ -84,6 +119,7 @@ QuerySet querySetFromCsv(const std::filesystem::path& path) {
 QuerySet querySetNamed(const std::string& which, double thickness) {
   if (which == "standard") return standardQuerySet(thickness);
   if (which == "quick") return quickQuerySet(thickness);
+  if (which == "eclipse") return eclipseQuerySet();
   return querySetFromCsv(which);
 }
 

@@ -28,12 +28,27 @@ inline constexpr double kMaxAzimuth_deg = 360.0;
 // out, though the camera of a query may be below the ground (looked up on it).
 inline constexpr double kPointOnGroundTolerance_m = 1e-3;
 
+// A moon before the sun (a solar eclipse), as the camera sees it: its
+// centre `separation_deg` from the sun's, turned from it across the sun's
+// vertical plane (toward +y of the query's local frame, perpendicular to the
+// sun), at the mean lunar distance (runtime/moon_occluder.h). Angular radius
+// 0: no moon.
+struct MoonQuery {
+  double separation_deg = 0.0;
+  double angular_radius_deg = 0.0;
+  bool present() const { return angular_radius_deg > 0.0; }
+};
+// A moon's angular radius above this (deg) is no moon's: the Moon spans 0.24
+// to 0.28 deg from the Earth; 5 deg leaves room for other worlds' moons.
+inline constexpr double kMaxMoonAngularRadius_deg = 5.0;
+
 struct RadianceQuery {
   double altitude_m;
   double sun_zenith_deg;
   double view_zenith_deg;
   double view_azimuth_deg;  // from the sun's azimuth
   double distance_m;        // > 0: radiance to the point at this distance
+  MoonQuery moon{};         // none but in eclipse queries
 };
 
 struct IrradianceQuery {
@@ -56,6 +71,13 @@ QuerySet standardQuerySet(double atmosphere_thickness_m);
 // A small subset of the standard set (for CI and quick looks).
 QuerySet quickQuerySet(double atmosphere_thickness_m);
 
+// Solar eclipses (docs/QUERIES.md): the sun 40 deg high, a moon making a
+// total eclipse seen from the umbra's centre, from inside it off centre and
+// from just outside it, partial eclipses and an annular one; cameras on the
+// ground and at 10 km; views at the zenith, across the sky, near the
+// horizon and to the ground.
+QuerySet eclipseQuerySet();
+
 // The columns of a radiance query CSV (those of `skybake lookup radiance`),
 // each value checked against the limits above. Throws Error(BadInput) with
 // the file, line and column of a missing column or an out-of-range value.
@@ -65,6 +87,8 @@ struct RadianceQueryColumns {
   size_t view_zenith_deg;
   size_t view_azimuth_deg;
   std::optional<size_t> distance_m;
+  std::optional<size_t> moon_separation_deg;  // the eclipse columns (MoonQuery)
+  std::optional<size_t> moon_angular_radius_deg;
 };
 // The columns of a radiance query CSV (required ones refused when missing).
 RadianceQueryColumns radianceQueryColumns(const CsvReader& reader);
@@ -74,7 +98,7 @@ void requireRadianceQueryRanges(const CsvReader& reader, const CsvRow& row, cons
 // Radiance queries from a CSV with the columns of `skybake lookup radiance`.
 QuerySet querySetFromCsv(const std::filesystem::path& path);
 
-// "standard", "quick", or else the path of a CSV (the --queries option).
+// "standard", "quick", "eclipse", or else the path of a CSV (the --queries option).
 QuerySet querySetNamed(const std::string& which, double atmosphere_thickness_m);
 
 // Sun bands: day (elevation > 10 deg), low sun (0 to 10), twilight (-10 to 0).

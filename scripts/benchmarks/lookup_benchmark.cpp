@@ -86,4 +86,29 @@ BENCHMARK(BM_SkyRadianceBatch)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95)->Uni
 
 }  // namespace
 
+// Eclipse lookups (docs/ECLIPSES.md): the camera on the ground at the centre
+// of a total eclipse's umbra, sun 40 deg high behind a 0.28 deg moon. With
+// the argument 1 the camera's skylight share is computed once and passed
+// (as skybake render does), with 0 at every lookup.
+void BM_SkyRadianceEclipse(benchmark::State& state) {
+  const skybake::Sky& sky = benchSky();
+  const Directions d = randomDirections(kRays);
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m);
+  const double zenith = skybake::radiansFromDegrees(50.0);
+  const glm::dvec3 sun(std::sin(zenith), 0.0, std::cos(zenith));
+  const skybake::Moon moon = skybake::Moon::seenFrom(camera, sun, skybake::radiansFromDegrees(0.28));
+  const bool shared_skylight = state.range(0) != 0;
+  const skybake::Spectrum skylight = sky.eclipseSkylight(camera, sun, moon);
+  size_t i = 0;
+  for (auto _ : state) {
+    const glm::dvec3 view(d.x[i], d.y[i], d.z[i]);
+    const auto v =
+        shared_skylight ? sky.skyRadiance(camera, view, sun, moon, skylight) : sky.skyRadiance(camera, view, sun, moon);
+    benchmark::DoNotOptimize(v);
+    i = (i + 1) % kRays;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SkyRadianceEclipse)->ArgName("shared_skylight")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 BENCHMARK_MAIN();

@@ -6,6 +6,7 @@
 // integral rests on, sums to the sphere's parts it should.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "baker/render/sky_image.h"
@@ -132,6 +133,52 @@ TEST(SunDiskPixels, NoSunLeavesTheImageAlone) {
   image.radiance.assign(static_cast<size_t>(v.width) * v.height * image.channels, 0.0f);
   addSunDisk(sky, v, image);
   for (float value : image.radiance) EXPECT_EQ(value, 0.0f);
+}
+
+}  // namespace
+}  // namespace skybake
+
+namespace skybake {
+namespace {
+
+// Under an eclipse the image holds the part of the sun the moon leaves:
+// none in totality (the moon's limb 0.013 deg outside the sun's, closer
+// than the subsamples' ramp), the exact uncovered share in a partial and an
+// annular eclipse (Sky::sunIrradiance with the moon).
+TEST(SunDiskPixels, TheMoonHidesItsShareOfTheDisk) {
+  const Sky sky = Sky::load(SKYBAKE_TEST_BAKE_DIR "/earth.exr");
+  SkyView v;
+  v.projection = Projection::Perspective;
+  v.width = 48;
+  v.height = 32;
+  v.fov_deg = 2.0;  // pixels a sixth of the sun's radius across: the crescent spans many
+  v.sun_zenith_deg = 50.0;
+  v.view_elevation_deg = 40.0;
+  v.view_azimuth_deg = 0.0;
+  const glm::dvec3 sun = sunDirection(v);
+  for (auto [elevation_deg, radius_deg] : {std::array{40.0, 0.28}, std::array{40.3, 0.28}, std::array{40.0, 0.25}}) {
+    v.moon = moonSeenFrom(sky, v, 0.0, elevation_deg, radius_deg);
+    SpectralImage image{v.width, v.height, sky.channelCount(), {}};
+    image.radiance.assign(static_cast<size_t>(v.width) * v.height * image.channels, 0.0f);
+    addSunDisk(sky, v, image);
+    Spectrum integral(0.0f);
+    for (int y = 0; y < v.height; ++y) {
+      for (int x = 0; x < v.width; ++x) {
+        for (int ch = 0; ch < image.channels; ++ch) {
+          integral[ch] += static_cast<float>(image.pixel(x, y)[ch] * pixelSolidAngle_sr(v, x, y));
+        }
+      }
+    }
+    const Spectrum expected = sky.sunIrradiance(cameraPosition(sky, v), sun, sun, v.moon);
+    for (int ch = 0; ch < sky.channelCount(); ++ch) {
+      if (expected[ch] == 0.0f) {
+        EXPECT_EQ(integral[ch], 0.0f) << "totality";
+      } else {
+        // As the whole disk's bound above.
+        EXPECT_NEAR(integral[ch], expected[ch], 0.005 * expected[ch]) << "moon at " << elevation_deg << " deg";
+      }
+    }
+  }
 }
 
 }  // namespace

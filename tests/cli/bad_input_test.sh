@@ -100,6 +100,10 @@ refused "--altitude-m = -1e30: must be a finite number in [-1e+12, 1e+12]" -- "$
 refused "--altitude-m = nan: must be a finite number in [-1e+12, 1e+12]" -- "${render[@]}" --sun-zenith-deg 30 --altitude-m nan
 refused "--sun-zenith-deg = nan: must be a finite number in [0, 180]" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg nan
 refused "--sun-zenith-deg = -inf: must be a finite number in [0, 180]" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg -inf
+refused "--moon = 0,40: must be AZIMUTH,ELEVATION,ANGULAR_RADIUS" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg 50 --moon 0,40
+refused "--moon = 0,40,nan:" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg 50 --moon 0,40,nan
+refused "the angular radius must be in (0, 5] degrees" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg 50 --moon 0,40,0
+refused "the gl backend has no eclipses yet" -- "${render[@]}" --altitude-m 0 --sun-zenith-deg 50 --moon 0,40,0.28 --backend gl
 refused "--sun-azimuth-deg = nan: must be a finite number in [-360, 360]" -- "${render[@]}" "${view[@]}" --sun-azimuth-deg nan
 refused "--view-azimuth-deg = 1e300: must be a finite number in [-360, 360]" -- "${render[@]}" "${view[@]}" --view-azimuth-deg 1e300
 refused "--view-elevation-deg = nan: must be a finite number in [-90, 90]" -- "${render[@]}" "${view[@]}" --view-elevation-deg nan
@@ -110,8 +114,9 @@ refused "--size = -5x5: each side must be in [1, 16384]" -- "${render[@]}" "${vi
 refused "--size = 99999999999x3: each side must be in [1, 16384]" -- "${render[@]}" "${view[@]}" --size 99999999999x3
 refused "--size = nanxnan: must be WIDTHxHEIGHT" -- "${render[@]}" "${view[@]}" --size nanxnan
 
-refused "--reference-samples = nan: must be a whole number in [1, 100000000]" -- validate "$work/none.exr" --reference-samples nan
+refused "--reference-samples = nan: must be a whole number in [0, 100000000]" -- validate "$work/none.exr" --reference-samples nan
 refused "--reference-samples = -5: must be a whole number in [1, 100000000]" -- compare "$small" --reference-samples -5
+refused "the comparators have no moon" -- compare "$small" --queries eclipse --reference-samples 4 --no-cache
 refused "--threads = 0: must be a whole number in [1, 4096]" -- validate "$work/none.exr" --threads 0
 refused "--threads = nan: must be a whole number in [1, 4096]" -- stress --threads nan
 for v in 0 nan inf; do

@@ -141,6 +141,8 @@ expect_status 2 "unclosed.csv:2:1: quoted cell has no closing quote" -- lookup i
 # render: PNG and EXR; a bad extension or size is refused.
 expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection fisheye --size 32x32 -o "$work/sky.png"
 [ -s "$work/sky.png" ] || fail "render wrote no PNG"
+expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 50 --moon 0,40,0.28 --projection fisheye --size 32x32 -o "$work/eclipse.png"
+[ -s "$work/eclipse.png" ] || fail "render --moon wrote no PNG"
 expect_status 0 "" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection latlong --size 64x32 -o "$work/sky.exr"
 expect_status 2 "sky.exr" -- info "$work/sky.exr"
 expect_status 2 ".png" -- render "$work/good.exr" --altitude-m 0 --sun-zenith-deg 60 --projection fisheye -o "$work/sky.jpg"
@@ -164,7 +166,11 @@ progress_lines=$(grep -cE '^reference +[0-9]+% \([0-9]+/[0-9]+\) after +[0-9.]+ 
 [ "$progress_lines" -ge 2 ] || fail "validate logged $progress_lines progress lines before its last: $(cat "$work/stderr")"
 grep -q $'\r' "$work/stderr" && fail "validate drew a terminal bar into a file"
 
-expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples 0
+expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-samples -1
+# Eclipses: 0 paths give the reference's single scattering alone (fast), and
+# the details name each query's moon.
+expect_status 0 "query set 'eclipse'" -- validate "$work/good.exr" --queries eclipse --reference-samples 0 --no-cache --details "$work/eclipse.csv"
+grep -q "^radiance,0,50,0,0,0,0,0.28," "$work/eclipse.csv" || fail "validate --details lacks the total eclipse's zenith row"
 
 # validate --colour-config: the colour table, its JSON and CSV columns, and a
 # second run served from the colour cache; refused for a config whose

@@ -23,7 +23,7 @@ import numpy as _np
 from . import _skybake
 from ._skybake import BadInput
 
-__all__ = ["Sky", "BadInput", "bake", "validate"]
+__all__ = ["Sky", "BadInput", "bake", "validate", "moon_seen_from"]
 
 
 def _rows(*vectors, scalars=()):
@@ -42,6 +42,16 @@ def _rows(*vectors, scalars=()):
     out = [_np.ascontiguousarray(_np.broadcast_to(v, shape + (3,)).reshape(n, 3)) for v in vectors]
     out += [_np.ascontiguousarray(_np.broadcast_to(s, shape).reshape(n)) for s in scalars]
     return shape, out
+
+
+def moon_seen_from(camera_m, direction, angular_radius_rad):
+    """A solar eclipse's moon for the lookups' moon argument: (centre_m,
+    radius_m) of the moon seen from camera_m in unit direction `direction`
+    with angular radius angular_radius_rad, at the mean lunar distance
+    (runtime/moon_occluder.h, Moon::seenFrom)."""
+    centre, radius = _skybake._moon_seen_from(list(map(float, camera_m)), list(map(float, direction)),
+                                              float(angular_radius_rad))
+    return _np.asarray(centre), radius
 
 
 class Sky:
@@ -116,9 +126,17 @@ class Sky:
         c = self.channel_count
         return tuple(r.reshape(shape + (c,)) for r in results)
 
-    def sky_radiance(self, camera_m, view_dir, sun_dir, shadow_length_m=0.0):
+    def sky_radiance(self, camera_m, view_dir, sun_dir, shadow_length_m=0.0, moon=None):
         """Radiance toward the camera along view_dir and the transmittance to
-        the ray's end (the ground's reflected light not included)."""
+        the ray's end (the ground's reflected light not included). moon: a
+        solar eclipse's moon, (centre_m, radius_m) (see moon_seen_from;
+        docs/ECLIPSES.md), not with a shadow length."""
+        if moon is not None:
+            if _np.any(_np.asarray(shadow_length_m) != 0.0):
+                raise BadInput("sky_radiance: a moon and a shadow length together are not available")
+            centre_m, radius_m = moon
+            shape, (c, v, s, m, r) = _rows(camera_m, view_dir, sun_dir, centre_m, scalars=(radius_m,))
+            return self._shaped(shape, *self._sky._sky_radiance_eclipse(c, v, s, m, r))
         shape, (c, v, s, d) = _rows(camera_m, view_dir, sun_dir, scalars=(shadow_length_m,))
         return self._shaped(shape, *self._sky._sky_radiance(c, v, s, d))
 
@@ -128,8 +146,13 @@ class Sky:
         shape, (c, p, s, d) = _rows(camera_m, point_m, sun_dir, scalars=(shadow_length_m,))
         return self._shaped(shape, *self._sky._radiance_to_point(c, p, s, d))
 
-    def irradiance(self, point_m, normal, sun_dir):
-        """(sun, sky) irradiance on a surface at point_m with unit normal."""
+    def irradiance(self, point_m, normal, sun_dir, moon=None):
+        """(sun, sky) irradiance on a surface at point_m with unit normal;
+        moon as in sky_radiance."""
+        if moon is not None:
+            centre_m, radius_m = moon
+            shape, (p, n, s, m, r) = _rows(point_m, normal, sun_dir, centre_m, scalars=(radius_m,))
+            return self._shaped(shape, *self._sky._irradiance_eclipse(p, n, s, m, r))
         shape, (p, n, s) = _rows(point_m, normal, sun_dir)
         return self._shaped(shape, *self._sky._irradiance(p, n, s))
 

@@ -1,0 +1,157 @@
+// The sky during a solar eclipse (docs/ECLIPSES.md). Single scattering is
+// what the uneclipsed lookup gives, scaled per channel by the ratio of two
+// integrals along the view ray, with and without the moon hiding part of
+// the sun at each point (so the tables' accuracy is kept, the moon's shadow
+// is followed exactly, and a moon far from the sun changes nothing).
+// Multiple scattering and the sky's irradiance are scaled by the sun's
+// visible fraction averaged over the neighbourhood (eclipse_skylight.h).
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "runtime/eclipse_skylight.h"
+#include "runtime/sky.h"
+#include "runtime/sky_lookup_constants.h"
+#include "runtime/sky_lookup_start.h"
+
+namespace skybake {
+namespace {
+
+// Below this share of the uneclipsed integral, the ratio of the two
+// integrals is taken as the eclipsed integral alone: a sun already set
+// along the whole ray leaves both at rounding level, whose ratio is noise.
+constexpr float kSmallestUneclipsedSingle = 1e-30f;
+
+// The sky irradiance's directions under an eclipse: cosine-weighted over
+// the hemisphere, kIrradianceBands bands of equal weight in the zenith
+// angle's sine squared times kIrradianceAzimuths azimuths. The plain and the
+// eclipsed sky are summed over the same directions and only their ratio is
+// used, so the rule's error (the sky near the sun, the horizon's glow)
+// largely cancels; 48 directions put one about every 30 deg.
+constexpr int kIrradianceBands = 6;
+constexpr int kIrradianceAzimuths = 8;
+
+Spectrum eclipsedShare(const Spectrum& eclipsed, const Spectrum& plain) {
+  Spectrum share(0.0f);
+  for (int c = 0; c < kMaxChannels; ++c) {
+    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
+  }
+  return share;
+}
+
+}  // namespace
+
+bool Sky::moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+  if (!moon.present()) return false;
+  const glm::dvec3 to_moon = moon.centre_m - point;
+  const double distance = glm::length(to_moon);
+  const double top = sampler_.domain().top_radius_m, bottom = sampler_.domain().bottom_radius_m;
+  // Anywhere in the atmosphere lies within this of the point, and the moon
+  // is seen from there displaced by at most this over its distance.
+  const double reach_m = 2.0 * std::sqrt(top * top - bottom * bottom) + (glm::length(point) - bottom);
+  if (!(distance > reach_m + moon.radius_m)) return true;
+  const double parallax_rad = reach_m / (distance - reach_m);
+  const double moon_radius_rad = std::asin(std::min(moon.radius_m / (distance - reach_m), 1.0));
+  const double separation_rad = std::atan2(glm::length(glm::cross(to_moon, sun_dir)), glm::dot(to_moon, sun_dir));
+  return separation_rad < atmosphere().sun_angular_radius_rad + moon_radius_rad + parallax_rad;
+}
+
+Spectrum Sky::eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+  // The kernel's points lie within the atmosphere's reach of `point`: a moon
+  // that hides the sun from none of them leaves F exactly 1.
+  if (!moonHidesSunNear(point, sun_dir, moon)) return Spectrum(1.0f);
+  return eclipseSkylightFraction(atmosphere(), moon, point, sun_dir);
+}
+
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                          const glm::dvec3& sun_dir, const Moon& moon) const {
+  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  return skyRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
+}
+
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                          const glm::dvec3& sun_dir, const Moon& moon,
+                                          const Spectrum& camera_skylight) const {
+  SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, 0.0);
+  if (!p.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  if (moonHidesSunNear(p.start.origin, sun_dir, moon)) {
+    const AtmosphereRay& s = p.start;
+    const SunlitRay ray{s.r, s.mu, p.mu_s, p.nu, s.ends_on_ground};
+    const MoonAlongRay along{moon, s.origin, s.dir, sun_dir, atmosphere().sun_angular_radius_rad};
+    const Texture2D& depth = bake_.tables.optical_depth;
+    const SingleScattering with_moon = integrateSingleScattering(sampler_, depth, atmosphere(), ray, p.lit_from_m,
+                                                                 s.length, kEclipseSingleScatteringSegments, &along);
+    const SingleScattering without = integrateSingleScattering(sampler_, depth, atmosphere(), ray, p.lit_from_m,
+                                                               s.length, kEclipseSingleScatteringSegments);
+    p.single.rayleigh *= eclipsedShare(with_moon.rayleigh, without.rayleigh);
+    p.single.mie *= eclipsedShare(with_moon.mie, without.mie);
+  }
+  p.multiple *= camera_skylight;
+  return {p.single.rayleigh * static_cast<float>(rayleighPhase(p.nu)) +
+              p.single.mie * static_cast<float>(mie_phase_(p.nu)) + p.multiple,
+          p.transmittance};
+}
+
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                               const glm::dvec3& sun_dir, const Moon& moon) const {
+  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
+  return receivedRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
+}
+
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                               const glm::dvec3& sun_dir, const Moon& moon,
+                                               const Spectrum& camera_skylight) const {
+  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir, moon, camera_skylight);
+  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  if (!start.inside || !start.ends_on_ground) return v;
+  const glm::dvec3 ground = start.origin + view_dir * start.length;
+  const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun_dir, moon);
+  v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
+  return v;
+}
+
+Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
+                            const Moon& moon) const {
+  return sunIrradiance(point, normal, sun_dir) *
+         static_cast<float>(moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad));
+}
+
+SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
+                                    const Moon& moon) const {
+  SunAndSkyIrradiance e = irradiance(point, normal, sun_dir);
+  const double visible = moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad);
+  e.sun *= static_cast<float>(visible);
+  if (moonHidesSunNear(point, sun_dir, moon)) e.sky *= eclipsedSkyIrradianceShare(point, sun_dir, moon);
+  return e;
+}
+
+Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+  const AtmosphereDomain& domain = sampler_.domain();
+  const double length = glm::length(point);
+  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+  // Within the shell, as the irradiance lookups take it.
+  const glm::dvec3 from = up * std::clamp(length, domain.bottom_radius_m, domain.top_radius_m);
+  const glm::dvec3 helper = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 east = glm::normalize(glm::cross(helper, up)), north = glm::cross(up, east);
+  const Spectrum skylight = eclipseSkylight(from, sun_dir, moon);
+  Spectrum eclipsed(0.0f), plain(0.0f);
+  for (int b = 0; b < kIrradianceBands; ++b) {
+    const double sin_squared = (b + 0.5) / kIrradianceBands;
+    const double sin_theta = std::sqrt(sin_squared), cos_theta = std::sqrt(1.0 - sin_squared);
+    for (int j = 0; j < kIrradianceAzimuths; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5 * (b % 2)) / kIrradianceAzimuths;
+      const glm::dvec3 dir = up * cos_theta + (east * std::cos(phi) + north * std::sin(phi)) * sin_theta;
+      eclipsed += skyRadiance(from, dir, sun_dir, moon, skylight).radiance;
+      plain += skyRadiance(from, dir, sun_dir).radiance;
+    }
+  }
+  Spectrum share(0.0f);
+  for (int c = 0; c < kMaxChannels; ++c) {
+    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
+  }
+  return share;
+}
+
+}  // namespace skybake
