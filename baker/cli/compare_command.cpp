@@ -1,8 +1,12 @@
 // skybake compare [CONFIG.toml] [--queries quick|standard|Q.csv] [--resolutions 0.5,1,2]
+// skybake compare COLOUR_CONFIG.toml --colour [--queries ...]
 // Error against the reference and cost, for the bake at several resolutions
-// and for the simpler methods people use instead, on the same queries.
+// and for the simpler methods people use instead, on the same queries; or,
+// with --colour, a colour bake beside bakes of 3 and 4 wavelengths of the
+// same atmosphere, in colour error against the colour reference.
 #include <omp.h>
 
+#include <array>
 #include <chrono>
 #include <memory>
 
@@ -18,9 +22,12 @@
 #include "baker/comparators/flat_closed_form.h"
 #include "baker/comparators/hillaire_multiple_scattering.h"
 #include "baker/comparators/ray_marched_single.h"
+#include "baker/validation/colour_error.h"
+#include "baker/validation/colour_reference.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
+#include "data_formats/config_at_wavelengths.h"
 #include "data_formats/error.h"
 
 namespace skybake::cli {
@@ -34,6 +41,8 @@ struct CompareOptions {
   std::string json_path;
   std::string cache_dir;
   bool no_cache = false;
+  bool colour = false;
+  bool resolutions_given = false;
 };
 
 // The bake as a method.
@@ -47,6 +56,7 @@ class BakedSky final : public SkyMethod {
     return sky_.receivedRadiance(camera, view, sun);
   }
   double precomputeSeconds() const override { return seconds_; }
+  const Sky& sky() const { return sky_; }
   size_t memoryBytes() const override {
     const BakeTables& t = sky_.tables();
     size_t texels = 0;
@@ -142,8 +152,102 @@ std::vector<BakeConfig> scaledConfigs(const BakeConfig& config, const std::strin
   return scaled;
 }
 
+// The wavelengths a colour comparison bakes as wavelength files: the
+// built-in Earth's three, and four evenly spread over the visible (the most
+// one file holds).
+constexpr std::array<double, 3> kThreeCompareWavelengths_nm = {680.0, 550.0, 440.0};
+constexpr std::array<double, 4> kFourCompareWavelengths_nm = {440.0, 520.0, 600.0, 680.0};
+
+std::string colourCell(const ColourErrorReport& r, const char* band) {
+  const ColourErrorRow* row = r.find("sky_radiance", band);
+  if (row == nullptr || row->stats.count == 0) return "-";
+  return fmt::format("{:.2f} % / {:.2f} / {:.2f}", 100 * row->stats.luminance_rms, row->stats.ciede2000_median,
+                     row->stats.ciede2000_p95);
+}
+
+// --colour: the config's colour bake and its atmosphere baked on 3 and on 4
+// wavelengths, each against the colour reference (41 wavelengths, CIE XYZ),
+// in luminance and CIEDE2000, with bake time, lookup time and table size.
+void runColourCompare(const CompareOptions& o) {
+  if (o.config_path.empty() || o.resolutions_given) {
+    throwBadInput(o.config_path.empty()
+                      ? std::string("compare --colour: give a colour bake's config (channels.store = \"cie_xyz\" "
+                                    "with spectra, e.g. data_formats/presets/earth_colour.toml)")
+                      : std::string("compare --colour: --resolutions does not apply (the bakes are compared at the "
+                                    "config's sizes)"));
+  }
+  const BakeConfig colour_config = loadConfigFile(o.config_path);
+  if (!colour_config.atmosphere.storesCieXyz()) {
+    throwBadInput(
+        fmt::format("{}: compare --colour needs a colour bake's config (channels.store = \"cie_xyz\")", o.config_path));
+  }
+  // The colour reference first: it refuses a config without spectra.
+  const ColourReferenceAtmospheres colour_atmospheres = colourReferenceAtmospheresFromFile(o.config_path);
+  struct Variant {
+    std::string name;
+    BakeConfig config;
+  };
+  std::vector<Variant> variants;
+  variants.push_back(
+      {"3 wavelengths (680, 550, 440 nm)", configFileAtWavelengths(o.config_path, kThreeCompareWavelengths_nm)});
+  variants.push_back(
+      {"4 wavelengths (440, 520, 600, 680 nm)", configFileAtWavelengths(o.config_path, kFourCompareWavelengths_nm)});
+  variants.push_back({fmt::format("colour: {} wavelengths to CIE XYZ", colour_config.atmosphere.wavelengths_nm.size()),
+                      colour_config});
+  uint64_t kept_bytes = 0;
+  for (const Variant& v : variants) kept_bytes = std::max(kept_bytes, estimateBakeMemory(v.config).peak_bytes);
+  requireMemoryAvailable(fmt::format("{}: compare --colour (one bake at a time)", o.config_path), kept_bytes);
+
+  const AtmosphereParameters& geometry = variants.front().config.atmosphere;
+  const QuerySet all = querySetNamed(o.queries, geometry.top_radius_m - geometry.bottom_radius_m);
+  QuerySet queries{all.name, {}, {}};
+  for (const RadianceQuery& q : all.radiance) {
+    if (q.moon.present()) {
+      throwBadInput(
+          fmt::format("compare --colour: {} holds eclipse queries (a moon): use skybake validate", o.queries));
+    }
+    if (!(q.distance_m > 0.0)) queries.radiance.push_back(q);
+  }
+  TerminalProgress progress;
+  const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
+  const ColourReferenceValues reference = computeColourReference(colour_atmospheres, queries, settings, progress);
+
+  fmt::print(
+      "compare in colour on '{}' ({} sky and ground rays; colour reference from {} wavelengths, {} paths per "
+      "query); sky radiance: luminance RMS / CIEDE2000 median / p95; {} cores\n\n",
+      queries.name, queries.radiance.size(), kColourReferenceWavelengthCount, settings.paths, omp_get_num_procs());
+  fmt::print("{:<40} {:>10} {:>9} {:>9}  {:>24} {:>24} {:>24}\n", "bake", "bake s", "us/ray", "MiB", "sky day",
+             "sky low sun", "sky twilight");
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const Variant& v : variants) {
+    SilentProgress silent;
+    fmt::print(stderr, "baking {} ...\n", v.name);
+    const BakedSky baked(v.name, bakeAtmosphere(v.config, 0, silent));
+    const MethodValues values = evaluate(baked, baked.sky().atmosphere(), queries);
+    const ColourErrorReport report = compareColourWithReference(
+        baked.sky().atmosphere(), queries, reference, {bakeXyz(baked.sky(), values.radiance), {}}, settings.paths);
+    fmt::print("{:<40} {:>10.2f} {:>9.2f} {:>9.2f}  {:>24} {:>24} {:>24}\n", v.name, baked.precomputeSeconds(),
+               values.seconds_per_ray * 1e6, baked.memoryBytes() / (1024.0 * 1024.0), colourCell(report, "day"),
+               colourCell(report, "low_sun"), colourCell(report, "twilight"));
+    nlohmann::ordered_json row = report.toJson();
+    row["method"] = v.name;
+    row["precompute_seconds"] = baked.precomputeSeconds();
+    row["seconds_per_ray"] = values.seconds_per_ray;
+    row["memory_bytes"] = baked.memoryBytes();
+    rows.push_back(row);
+  }
+  if (!o.json_path.empty()) {
+    writeFileContentsAtomically(
+        o.json_path, nlohmann::ordered_json{{"cores", omp_get_num_procs()}, {"methods", rows}}.dump(2) + "\n");
+  }
+}
+
 void runCompare(const CompareOptions& o) {
   if (!o.json_path.empty()) requireWritableOutput(o.json_path, {o.config_path, o.queries});
+  if (o.colour) {
+    runColourCompare(o);
+    return;
+  }
   const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
   const std::vector<BakeConfig> scaled_configs =
       scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);
@@ -219,14 +323,21 @@ Command addCompareCommand(CLI::App& app) {
   requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
                      ->capture_default_str(),
                  1, kMaxReferencePaths);
-  requireFiniteIn(
+  CLI::Option* resolutions =
       cmd->add_option("--resolutions", o->resolutions, "Bake at these multiples of the configured table sizes.")
-          ->delimiter(','),
-      kMinResolutionFactor, kMaxResolutionFactor);
+          ->delimiter(',');
+  requireFiniteIn(resolutions, kMinResolutionFactor, kMaxResolutionFactor);
+  cmd->add_flag("--colour", o->colour,
+                "CONFIG is a colour bake's (channels.store = \"cie_xyz\", with spectra): compare it with its "
+                "atmosphere baked on 3 and on 4 wavelengths, in luminance and CIEDE2000 against a colour reference "
+                "from 41 wavelengths (docs/COLOUR.md), with bake time, lookup time and size.");
   cmd->add_option("--json", o->json_path, "Also write the table as JSON here.");
   cmd->add_option("--cache-dir", o->cache_dir, "Reference cache directory (see validate).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
-  return {cmd, [o] { runCompare(*o); }};
+  return {cmd, [o, resolutions] {
+            o->resolutions_given = resolutions->count() > 0;
+            runCompare(*o);
+          }};
 }
 
 }  // namespace skybake::cli

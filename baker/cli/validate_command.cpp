@@ -54,12 +54,15 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
   std::string text =
       "kind,altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,"
       "moon_angular_radius_deg";
-  for (double w : a.wavelengths_nm) text += fmt::format(",bake_{0},reference_{0},reference_error_{0}", w);
+  // A colour bake's channels are X, Y, Z: the colour columns below hold them.
+  const int n = a.storesCieXyz() ? 0 : a.channelCount();
+  for (int c = 0; c < n; ++c) {
+    text += fmt::format(",bake_{0},reference_{0},reference_error_{0}", a.wavelengths_nm[c]);
+  }
   if (colour.reference != nullptr) {
     text += ",bake_X,bake_Y,bake_Z,reference_X,reference_Y,reference_Z,reference_error_Y,ciede2000";
   }
   text += "\n";
-  const int n = a.channelCount();
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
     text += fmt::format("radiance,{},{},{},{},{},{},{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
@@ -143,7 +146,7 @@ void runValidate(const ValidateOptions& o) {
   fmt::print(
       "relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
       "0 to 10, twilight: -10 to 0\n\n{}",
-      kSmallestComparedValue, report.table());
+      report.smallest_compared_value, report.table());
   if (colour_atmospheres) {
     fmt::print(
         "\ncolour against the reference in CIE XYZ from {} wavelengths, {:g} to {:g} nm ({} from the cache, {} "

@@ -15,6 +15,7 @@
 #include "baker/validation/validation_queries.h"
 #include "data_formats/error.h"
 #include "runtime/atmosphere_ray.h"
+#include "runtime/colour/spectral_to_xyz.h"
 
 namespace skybake {
 namespace {
@@ -254,10 +255,11 @@ namespace {
 
 class StatsBuilder {
  public:
+  explicit StatsBuilder(double smallest_compared) : smallest_compared_(smallest_compared) {}
   void add(const std::string& quantity, const std::string& band, int channel, double value, double reference,
            double reference_error) {
     Samples& s = samples_[{quantity, band}][channel];
-    if (!(reference >= kSmallestComparedValue)) {
+    if (!(reference >= smallest_compared_)) {
       ++s.skipped;
       return;
     }
@@ -308,6 +310,7 @@ class StatsBuilder {
     return e;
   }
 
+  double smallest_compared_;
   std::map<std::pair<std::string, std::string>, std::map<int, Samples>> samples_;
 };
 
@@ -324,7 +327,12 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
   // A colour bake's reference (colour_reference.h) is radiance and
   // irradiance in X, Y, Z only: it has no transmittance to compare with.
   const bool compare_transmittance = !a.storesCieXyz();
-  StatsBuilder stats;
+  // X, Y, Z integrate spectral radiance over the colour-matching functions,
+  // each of which integrates to the same width (equal-energy white): the
+  // spectral threshold times that width leaves out the same dark queries.
+  report.smallest_compared_value =
+      a.storesCieXyz() ? kSmallestComparedValue * colour::ybarIntegral_nm() : kSmallestComparedValue;
+  StatsBuilder stats(report.smallest_compared_value);
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
     const std::string quantity = radianceQuantity(a, q);
@@ -364,7 +372,7 @@ nlohmann::ordered_json ErrorReport::toJson() const {
   j["reference_paths"] = reference_paths;
   j["wavelengths_nm"] = wavelengths_nm;
   j["channels"] = channel_names;
-  j["smallest_compared_value"] = kSmallestComparedValue;
+  j["smallest_compared_value"] = smallest_compared_value;
   nlohmann::ordered_json rows_json = nlohmann::ordered_json::array();
   for (const ErrorRow& row : rows) {
     nlohmann::ordered_json channels = nlohmann::ordered_json::array();

@@ -127,6 +127,9 @@ struct ErrorReport {
   std::vector<double> wavelengths_nm;      // the bake's (a colour bake's: those it integrated)
   std::vector<std::string> channel_names;  // channelNames (bake_file.h): "680nm", ... or X, Y, Z
   int reference_paths = 0;
+  // Reference values below this are left out (kSmallestComparedValue; for a
+  // colour bake's X, Y, Z scaled to their units).
+  double smallest_compared_value = kSmallestComparedValue;
   std::vector<ErrorRow> rows;
 
   const ErrorRow* find(const std::string& quantity, const std::string& band) const;
