@@ -80,9 +80,10 @@ void runValidate(const ValidateOptions& o) {
       o.bake_path, settings.paths, queries.name, queries.radiance.size(), queries.irradiance.size(), reference.cached,
       reference.computed, reference.seconds);
   fmt::print(
-      "relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
-      "0 to 10, twilight: -10 to 0\n\n{}",
-      kSmallestComparedValue, report.table());
+      "relative error |L - Lref| / Lref; values below {} skipped ({} nautical, {} astronomical and night); "
+      "sun elevation: day > 10 deg, low_sun 0 to 10, twilight (civil) -6 to 0, nautical -12 to -6, "
+      "astronomical -18 to -12, night below -18\n\n{}",
+      kSmallestComparedValue, kSmallestComparedNauticalValue, kSmallestComparedAstronomicalValue, report.table());
   if (!left_out.empty()) fmt::print("\n{}\n", left_out);
 
   nlohmann::ordered_json j = report.toJson();

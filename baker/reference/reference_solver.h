@@ -34,9 +34,23 @@ struct ReferenceRay {
   double distance_m;  // > 0: up to the point at this distance; else to the ray's end
 };
 
+// Whether the reference places its path vertices partly toward sunlit air
+// (reference_solver.cpp, sampleVertex): for a sun below the horizon of the
+// query's camera (the cosine of its zenith angle there below 0), where the
+// light scattered more than once comes from sunlit air far from the view
+// ray. Daylight queries keep their sampling, and so their values, bit for
+// bit; the query keys of the others name the sampling (validation.cpp).
+inline bool referenceSamplesTowardLitAir(double camera_sun_zenith_cosine) { return camera_sun_zenith_cosine < 0.0; }
+
 class ReferenceSolver {
  public:
-  explicit ReferenceSolver(const AtmosphereParameters& atmosphere);
+  // Where path vertices go: toward sunlit air for suns below the horizon
+  // (the default), or by the density alone for every sun (the daylight
+  // estimator everywhere: slower to converge in twilight, kept to check the
+  // other against).
+  enum class VertexSampling { TowardLitAirBelowHorizon, DensityOnly };
+  explicit ReferenceSolver(const AtmosphereParameters& atmosphere,
+                           VertexSampling sampling = VertexSampling::TowardLitAirBelowHorizon);
 
   // The radiance the viewer receives along the ray, W m^-2 sr^-1 nm^-1:
   // in-scattering of all orders plus, for a ray that ends on the ground (and
@@ -51,7 +65,10 @@ class ReferenceSolver {
   ReferenceEstimate skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths, uint64_t seed) const;
 
  private:
+  bool towardLitAir(double camera_sun_zenith_cosine) const;
+
   const AtmosphereParameters& a_;
+  VertexSampling sampling_;
 };
 
 }  // namespace skybake

@@ -31,11 +31,25 @@ RayKind rayKind(const AtmosphereParameters& a, const RadianceQuery& q) {
 
 }  // namespace
 
-std::string radianceKey(const RadianceQuery& q) {
-  return fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
-                     q.distance_m);
+namespace {
+
+// Queries with the sun below the camera's horizon are sampled partly toward
+// sunlit air (referenceSamplesTowardLitAir): their keys name that sampling,
+// so values cached before it (other seeds, more noise) are never mistaken
+// for them, while the daylight keys, and values, stay as they were.
+std::string samplingSuffix(double sun_zenith_deg) {
+  return referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(sun_zenith_deg, 0.0).z) ? " lit-air" : "";
 }
-std::string irradianceKey(const IrradianceQuery& q) { return fmt::format("e {} {}", q.altitude_m, q.sun_zenith_deg); }
+
+}  // namespace
+
+std::string radianceKey(const RadianceQuery& q) {
+  return fmt::format("r {} {} {} {} {}{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg, q.view_azimuth_deg,
+                     q.distance_m, samplingSuffix(q.sun_zenith_deg));
+}
+std::string irradianceKey(const IrradianceQuery& q) {
+  return fmt::format("e {} {}{}", q.altitude_m, q.sun_zenith_deg, samplingSuffix(q.sun_zenith_deg));
+}
 
 QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
   return {cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
@@ -219,14 +233,26 @@ QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string&
   return out;
 }
 
+double smallestComparedValue(SunBand band) {
+  switch (band) {
+    case SunBand::Nautical:
+      return kSmallestComparedNauticalValue;
+    case SunBand::Astronomical:
+    case SunBand::Night:
+      return kSmallestComparedAstronomicalValue;
+    default:
+      return kSmallestComparedValue;
+  }
+}
+
 namespace {
 
 class StatsBuilder {
  public:
   void add(const std::string& quantity, const std::string& band, int channel, double value, double reference,
-           double reference_error) {
+           double reference_error, double smallest_compared = kSmallestComparedValue) {
     Samples& s = samples_[{quantity, band}][channel];
-    if (!(reference >= kSmallestComparedValue)) {
+    if (!(reference >= smallest_compared)) {
       ++s.skipped;
       return;
     }
@@ -237,10 +263,12 @@ class StatsBuilder {
   std::vector<ErrorRow> rows(int channels) const {
     static const char* kQuantityOrder[] = {"sky_radiance", "ground_radiance", "radiance_to_point", "transmittance",
                                            "sky_irradiance"};
-    static const char* kBandOrder[] = {"day", "low_sun", "twilight", "night", "all"};
+    std::vector<std::string> band_order;
+    for (SunBand band : allSunBands()) band_order.push_back(sunBandName(band));
+    band_order.push_back("all");
     std::vector<ErrorRow> out;
     for (const char* quantity : kQuantityOrder) {
-      for (const char* band : kBandOrder) {
+      for (const std::string& band : band_order) {
         auto it = samples_.find({quantity, band});
         if (it == samples_.end()) continue;
         ErrorRow row{quantity, band, {}};
@@ -297,19 +325,22 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
     const char* quantity = kind == RayKind::Sky      ? "sky_radiance"
                            : kind == RayKind::Ground ? "ground_radiance"
                                                      : "radiance_to_point";
-    const char* band = sunBandName(sunBand(q.sun_zenith_deg));
+    const SunBand sun_band = sunBand(q.sun_zenith_deg);
+    const char* band = sunBandName(sun_band);
     const CachedReference& r = reference.radiance[i];
     for (int c = 0; c < channels; ++c) {
-      stats.add(quantity, band, c, method.radiance[i][c], r.value[c], r.standard_error[c]);
+      stats.add(quantity, band, c, method.radiance[i][c], r.value[c], r.standard_error[c],
+                smallestComparedValue(sun_band));
       stats.add("transmittance", "all", c, method.transmittance[i][c], r.transmittance[c], 0.0);
     }
   }
   if (!method.irradiance.empty()) {
     for (size_t i = 0; i < queries.irradiance.size(); ++i) {
-      const char* band = sunBandName(sunBand(queries.irradiance[i].sun_zenith_deg));
+      const SunBand sun_band = sunBand(queries.irradiance[i].sun_zenith_deg);
+      const char* band = sunBandName(sun_band);
       for (int c = 0; c < channels; ++c) {
         stats.add("sky_irradiance", band, c, method.irradiance[i][c], reference.irradiance[i].value[c],
-                  reference.irradiance[i].standard_error[c]);
+                  reference.irradiance[i].standard_error[c], smallestComparedValue(sun_band));
       }
     }
   }
@@ -330,6 +361,9 @@ nlohmann::ordered_json ErrorReport::toJson() const {
   j["reference_paths"] = reference_paths;
   j["wavelengths_nm"] = wavelengths_nm;
   j["smallest_compared_value"] = kSmallestComparedValue;
+  nlohmann::ordered_json floors;
+  for (SunBand band : allSunBands()) floors[sunBandName(band)] = smallestComparedValue(band);
+  j["smallest_compared_value_by_band"] = floors;
   nlohmann::ordered_json rows_json = nlohmann::ordered_json::array();
   for (const ErrorRow& row : rows) {
     nlohmann::ordered_json channels = nlohmann::ordered_json::array();
@@ -348,12 +382,12 @@ nlohmann::ordered_json ErrorReport::toJson() const {
 }
 
 std::string ErrorReport::table() const {
-  std::string out = fmt::format("{:<18} {:<9} {:>5} {:>5}", "quantity", "band", "n", "skip");
+  std::string out = fmt::format("{:<18} {:<12} {:>5} {:>5}", "quantity", "band", "n", "skip");
   for (double w : wavelengths_nm) out += fmt::format("  {:>22}", fmt::format("{} nm rms/p95/max %", w));
   out += "  ref stderr %\n";
   for (const ErrorRow& row : rows) {
     const ErrorStats& first = row.channels.front();
-    out += fmt::format("{:<18} {:<9} {:>5} {:>5}", row.quantity, row.band, first.count, first.skipped);
+    out += fmt::format("{:<18} {:<12} {:>5} {:>5}", row.quantity, row.band, first.count, first.skipped);
     double ref = 0.0;
     for (const ErrorStats& s : row.channels) {
       out += fmt::format("  {:>22}", fmt::format("{:.2f} / {:.2f} / {:.2f}", 100 * s.rms, 100 * s.p95, 100 * s.max));
