@@ -112,7 +112,7 @@ struct ErrorStats {
 
 struct ErrorRow {
   std::string quantity;  // sky_radiance, ground_radiance, radiance_to_point, transmittance, sky_irradiance
-  std::string band;      // day, low_sun, twilight, night, all
+  std::string band;      // day, low_sun, twilight, nautical, astronomical, night, all
   std::vector<ErrorStats> channels;
 };
 
