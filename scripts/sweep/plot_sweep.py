@@ -59,8 +59,11 @@ def main():
             continue  # NaN throughout: no queries in this band
         ax.plot([r["bake_seconds"] for r in rows], [r[f"sky_rms_{band}_percent"] for r in rows], "o-", label=band)
     for r in rows:
-        ax.annotate(r["bake"], (r["bake_seconds"], r["sky_rms_day_percent"]), fontsize=7,
-                    textcoords="offset points", xytext=(4, 4))
+        # Beside the first band the validation has (day, in a sweep).
+        finite = [r[f"sky_rms_{band}_percent"] for band in BANDS if r[f"sky_rms_{band}_percent"] > 0]
+        if finite:
+            ax.annotate(r["bake"], (r["bake_seconds"], finite[0]), fontsize=7, textcoords="offset points",
+                        xytext=(4, 4))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("bake time (s)")
