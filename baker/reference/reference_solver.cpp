@@ -47,8 +47,8 @@ constexpr double kLitVertexShare = 0.5;
 // unbiased), so a coarse quadrature that keeps the proposal cheap suffices.
 constexpr int kLitProposalOpticalDepthSegments = 2;
 // At a vertex in the planet's shadow with the sun below the horizon, the
-// share of next directions drawn from a cone toward the nearest sunlit air
-// (litAirDirection) instead of by the phase function. Deep in twilight only
+// share of next directions drawn uniformly over a band of directions toward
+// the sunlit air (litAirBand) instead of by the phase function. Deep in twilight only
 // a few percent of the sphere of directions reaches sunlit air, so phase
 // sampling alone spends nearly every path where no light is; the phase
 // share keeps every direction possible.
@@ -104,7 +104,9 @@ struct SunwardBand {
 class PathTracer {
  public:
   // `toward_lit_air`: place vertices after the first partly by the lit-air
-  // proposal (see sampleVertex); for a sun below the query's horizon only.
+  // proposal (sampleVertex) and, from vertices in the planet's shadow, draw
+  // part of the next directions toward sunlit air (litAirBand); for a sun
+  // below the query's horizon only.
   PathTracer(const AtmosphereParameters& a, bool toward_lit_air) : a_(a), media_(a), toward_lit_air_(toward_lit_air) {}
 
   double altitude(const glm::dvec3& p) const { return glm::length(p) - a_.bottom_radius_m; }
@@ -302,9 +304,11 @@ class PathTracer {
   // Samples, from two uniform numbers, the direction light came from before
   // scattering at a point in the air toward -dir, and returns the
   // phase-weighted scattering over the direction's density. With
-  // `lit_axis`, a share kLitDirectionShare of the directions is drawn
-  // uniformly from a cone around it (toward sunlit air, litAirDirection);
-  // the density is the mixture's, so the estimate stays unbiased.
+  // `lit_band`, a share kLitDirectionShare of the directions is drawn
+  // uniformly over it (toward sunlit air, litAirBand); the density is the
+  // mixture's, so the estimate stays unbiased. (A cone aimed at one point
+  // past the shadow's edge did worse: the sunlit air is a band across the
+  // sun's azimuth, not a spot; docs/ERROR_VS_TIME.md, deep twilight.)
   glm::dvec3 sampleScatteringDirection(const glm::dvec3& point, const glm::dvec3& dir, double u_cos, double u_phi,
                                        const SunwardBand* lit_band, SpectrumD& weight) const {
     const double h = altitude(point);

@@ -11,7 +11,10 @@
 // optical depths by quadrature of the density profiles, Lambertian ground,
 // Rayleigh + Cornette-Shanks Mie + absorption, Russian roulette. Only that
 // part (10 to 30 % of the radiance) is noisy, which cuts the noise several
-// fold against tracing every order. Each query has its own fixed seed.
+// fold against tracing every order. With the sun below the camera's horizon
+// the vertices and directions are drawn partly toward the sunlit air far
+// from the view ray, where deep-twilight light comes from (multiple
+// importance sampling, unbiased). Each query has its own fixed seed.
 #pragma once
 
 #include <cstdint>
