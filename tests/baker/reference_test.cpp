@@ -129,7 +129,9 @@ TEST(Reference, TwilightSamplingAgreesWithDaylightSamplingAndIsLessNoisy) {
       lit_noise += lit.standard_error[c] / lit.value[c];
       old_noise += same_paths.standard_error[c] / std::max(same_paths.value[c], 1e-300);
     }
-    if (q.deep) EXPECT_LT(2.0 * lit_noise, old_noise) << where;
+    if (q.deep) {
+      EXPECT_LT(2.0 * lit_noise, old_noise) << where;
+    }
   }
 }
 
