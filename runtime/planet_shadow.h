@@ -57,13 +57,4 @@ inline ShadowCrossings planetShadowCrossings(double r, double mu, double mu_s, d
   return planetShadowCrossings(glm::dvec3(0.0, 0.0, r), glm::dvec3(view_sin, 0.0, mu), sun, bottom_radius, length);
 }
 
-// How many of a ray rule's `segments` sub-intervals a piece between shadow
-// crossings gets: its share of the ray, at least one. Sub-intervals no longer
-// than the whole ray's are as accurate, and a ray cut in pieces costs a few
-// nodes more than a whole one, not a whole rule per piece.
-inline int segmentsForPiece(int segments, double piece_length, double ray_length) {
-  const double share = ray_length > 0.0 ? piece_length / ray_length : 1.0;
-  return std::clamp(static_cast<int>(std::ceil(segments * share)), 1, segments);
-}
-
 }  // namespace skybake

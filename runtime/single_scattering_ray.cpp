@@ -32,19 +32,11 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     rayleigh += light * (w * media.rayleighDensity(altitude));
     mie += light * (w * media.mieDensity(altitude));
   };
+  // The rule's pieces come from the ray alone; the shadow's edges cut them.
   const ShadowCrossings crossings = planetShadowCrossings(r, mu, ray.mu_s, ray.nu, a.bottom_radius_m, t_end);
-  const double length = t_end - t_start;
-  double piece_start = t_start;
-  for (int i = 0; i <= crossings.count; ++i) {
-    const bool last = i == crossings.count;
-    const double piece_end = last ? t_end : std::clamp(crossings.distance[i], t_start, t_end);
-    if (!last && !(piece_end > piece_start)) continue;
-    const int piece_segments = segmentsForPiece(segments, piece_end - piece_start, length);
-    forEachOpticallyThinNode(
-        piece_start, piece_end, piece_segments, -r * mu,
-        [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); }, node);
-    piece_start = piece_end;
-  }
+  forEachOpticallyThinNodeCutAt(
+      t_start, t_end, segments, -r * mu, crossings.distance.data(), crossings.count,
+      [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); }, node);
   return {Spectrum(rayleigh) * a.sun_irradiance * a.rayleigh_scattering,
           Spectrum(mie) * a.sun_irradiance * a.mie_scattering};
 }

@@ -2,9 +2,11 @@
 // optical-depth table. The bake's table stage computes the same integral
 // batched over the suns of a view ray (baker/stages/single_scattering_tables.cpp;
 // a test ties the two texel by texel), and lookups with the sun below the
-// horizon use it instead of those tables (see Sky). Each piece of the ray between the edges of the planet's shadow
-// gets its own Gauss-Legendre rule, so no rule spans the jump where the sun
-// appears or disappears.
+// horizon use it instead of those tables (see Sky). The rule's sub-intervals
+// are cut where the ray crosses the edge of the planet's shadow, each part
+// with its own Gauss-Legendre rule, so no rule spans the jump where the sun
+// appears or disappears, and the integral moves smoothly with the sun
+// (forEachOpticallyThinNodeCutAt).
 #pragma once
 
 #include "data_formats/atmosphere_parameters.h"
@@ -32,11 +34,11 @@ struct SunlitRay {
 
 // Single scattering over [t_start, t_end] of `ray` (metres from its start),
 // seen from the ray's start; `segments` is how many sub-intervals of 4
-// Gauss nodes the whole of [t_start, t_end] gets, shared among the pieces by
-// length (at least one each; optically thick ones are split further, see
-// ray_quadrature.h). With `moon`, the sunlight at each node is also
-// dimmed by the part of the disk the moon hides there (an eclipse); its
-// origin, dir and sun_dir must be the 3D form of `ray`.
+// Gauss nodes [t_start, t_end] gets (optically thick ones split further, see
+// ray_quadrature.h), each cut at the shadow's edges inside it. With `moon`,
+// the sunlight at each node is also dimmed by the part of the disk the moon
+// hides there (an eclipse); its origin, dir and sun_dir must be the 3D form
+// of `ray`.
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
                                            double t_end, int segments, const MoonAlongRay* moon = nullptr);

@@ -67,17 +67,34 @@ enum class Blend { Linear, GeometricWhereSteep };
 // Neighbours closer than this ratio are blended linearly even in geometric
 // mode: the blends then differ by < 1 % and the pow is saved.
 inline constexpr float kGeometricBlendRatio = 1.5f;
+// From this ratio on the blend is wholly geometric; between the two it moves
+// from linear to geometric smoothly (smoothstep in the ratio). A switch at
+// one ratio made lookups jump: the ratio of two nu slices changes with the
+// sun, and where it crossed the switch the sky stepped by up to 2 % within
+// 0.001 deg of sun angle (deep twilight, horizon views).
+inline constexpr float kFullyGeometricBlendRatio = 2.0f;
 
 // a^(1-w) b^w for positive a and b, in logarithms: the ratio b / a of a
 // normal and a denormal number (thick or dark atmospheres reach 1e-40)
 // overflows to infinity, and a * (b / a)^w then gives inf or NaN.
 inline float geometricBlend(float a, float b, float w) { return std::exp((1.0f - w) * std::log(a) + w * std::log(b)); }
 
+// The geometric blend's share for neighbours `ratio` apart (>= 1; infinite
+// for a denormal beside a normal number: wholly geometric).
+inline float geometricBlendShare(float ratio) {
+  const float x =
+      std::clamp((ratio - kGeometricBlendRatio) / (kFullyGeometricBlendRatio - kGeometricBlendRatio), 0.0f, 1.0f);
+  return x * x * (3.0f - 2.0f * x);
+}
+
 inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, float w) {
   Spectrum out = a + (b - a) * w;
   for (int c = 0; c < Spectrum::length(); ++c) {
     if (a[c] > 0.0f && b[c] > 0.0f && (b[c] > kGeometricBlendRatio * a[c] || a[c] > kGeometricBlendRatio * b[c])) {
-      out[c] = geometricBlend(a[c], b[c], w);
+      const float share = geometricBlendShare(a[c] > b[c] ? a[c] / b[c] : b[c] / a[c]);
+      // As a weighted sum, not out + (geometric - out) * share: with a
+      // denormal neighbour the difference cancels the geometric blend away.
+      out[c] = out[c] * (1.0f - share) + geometricBlend(a[c], b[c], w) * share;
     }
   }
   return out;

@@ -138,22 +138,28 @@ void runValidate(const ValidateOptions& o) {
             : validateColour(sky, queries, reference, colour_reference, bake, settings.paths);
   }
 
+  // The X, Y, Z of a colour bake are spectral values integrated over the
+  // colour-matching functions' width: its thresholds scale with it.
+  const double value_scale = report.smallest_compared_value / kSmallestComparedValue;
   fmt::print(
       "validate {} against the reference ({} paths per query), query set '{}': {} radiance and {} "
       "irradiance queries ({} from the cache, {} computed in {:.1f} s)\n",
       o.bake_path, settings.paths, queries.name, queries.radiance.size(), queries.irradiance.size(), reference.cached,
       reference.computed, reference.seconds);
   fmt::print(
-      "relative error |L - Lref| / Lref; values below {} skipped; day: sun elevation > 10 deg, low_sun: "
-      "0 to 10, twilight: -10 to 0\n\n{}",
-      report.smallest_compared_value, report.table());
+      "relative error |L - Lref| / Lref; values below {:.3g} skipped ({:.3g} nautical, {:.3g} astronomical and "
+      "night); sun elevation: day > 10 deg, low_sun 0 to 10, twilight (civil) -6 to 0, nautical -12 to -6, "
+      "astronomical -18 to -12, night below -18\n\n{}",
+      report.smallest_compared_value, kSmallestComparedNauticalValue * value_scale,
+      kSmallestComparedAstronomicalValue * value_scale, report.table());
   if (colour_atmospheres) {
     fmt::print(
         "\ncolour against the reference in CIE XYZ from {} wavelengths, {:g} to {:g} nm ({} from the cache, {} "
         "computed in {:.1f} s): luminance |Y - Yref| / Yref; CIEDE2000 with both scaled so that the reference "
-        "has L* = {:g} (sRGB white); reference Y below {:.3g} skipped\n\n{}",
+        "has L* = {:g} (sRGB white); reference Y below {:.3g} skipped (as above, times the colour-matching "
+        "functions' width)\n\n{}",
         kColourReferenceWavelengthCount, kColourReferenceFirst_nm, kColourReferenceLast_nm, colour_reference.cached,
-        colour_reference.computed, colour_reference.seconds, kComparedLightness, smallestComparedY(),
+        colour_reference.computed, colour_reference.seconds, kComparedLightness, smallestComparedY(SunBand::Day),
         colour_report.bake.table());
     if (!colour_bake) {
       fmt::print(

@@ -35,6 +35,35 @@ constexpr int kMaxPathVertices = 512;
 // Russian roulette starts after this many scattering events (0-based), so the
 // second and third orders, most of the multiple scattering, are never cut.
 constexpr int kRouletteFromEvent = 2;
+// With the sun below the horizon, the share of vertices placed by the
+// lit-air proposal (scattering times transmittance times the sun's light at
+// the point) where a ray crosses both the planet's shadow and sunlit air. The
+// rest follow the density proposal as in daylight, so every point of the ray
+// keeps a positive density (unbiasedness) and the shadowed air, which still
+// carries the higher orders, is not starved.
+constexpr double kLitVertexShare = 0.5;
+// Optical-depth segments for the sun's transmittance inside the lit-air
+// proposal: it only shapes where vertices go (any positive shape is
+// unbiased), so a coarse quadrature that keeps the proposal cheap suffices.
+constexpr int kLitProposalOpticalDepthSegments = 2;
+// At a vertex in the planet's shadow with the sun below the horizon, the
+// share of next directions drawn uniformly over a band of directions toward
+// the sunlit air (litAirBand) instead of by the phase function. Deep in twilight only
+// a few percent of the sphere of directions reaches sunlit air, so phase
+// sampling alone spends nearly every path where no light is; the phase
+// share keeps every direction possible.
+constexpr double kLitDirectionShare = 0.5;
+// The band's half-width in azimuth either side of the sun's: the sunlit air
+// past the shadow's edge is a band across the sun's azimuth some 500 km
+// away, seen over most of the sunward half of the horizon.
+constexpr double kLitBandHalfAzimuth_rad = 1.3;
+// How far above the elevation of the shadow's edge at the top the band
+// reaches (rad): the edge is a few degrees high, light from the lit air
+// above it comes from up to some 10 deg higher.
+constexpr double kLitBandAboveEdge_rad = 0.2;
+// Below this sine of the angle between the sun and a point's vertical the
+// sun has no azimuth to aim at (straight below): phase sampling only.
+constexpr double kSmallestSunwardSine = 1e-9;
 
 // Any unit vector perpendicular to n, and the third axis of a frame.
 void frameAround(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
@@ -50,9 +79,36 @@ glm::dvec3 directionAround(const glm::dvec3& axis, double cos_theta, double phi)
   return glm::normalize(axis * cos_theta + t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)));
 }
 
+// Directions toward the sun's side of the sky in a band of elevations: a
+// proposal uniform in solid angle over azimuths within
+// kLitBandHalfAzimuth_rad of the sun's and sines of elevation in
+// [sin_low, sin_high].
+struct SunwardBand {
+  glm::dvec3 up, sunward, side;
+  double sin_low = 0.0, sin_high = 0.0;
+
+  glm::dvec3 direction(double u_elevation, double u_azimuth) const {
+    const double sin_e = sin_low + u_elevation * (sin_high - sin_low);
+    const double cos_e = safeSqrt(1.0 - sin_e * sin_e);
+    const double azimuth = (2.0 * u_azimuth - 1.0) * kLitBandHalfAzimuth_rad;
+    return glm::normalize(cos_e * (std::cos(azimuth) * sunward + std::sin(azimuth) * side) + sin_e * up);
+  }
+  double pdf(const glm::dvec3& d) const {
+    const double sin_e = glm::dot(d, up);
+    const double azimuth = std::atan2(glm::dot(d, side), glm::dot(d, sunward));
+    if (sin_e < sin_low || sin_e > sin_high || std::abs(azimuth) > kLitBandHalfAzimuth_rad) return 0.0;
+    return 1.0 / (2.0 * kLitBandHalfAzimuth_rad * (sin_high - sin_low));
+  }
+};
+
 class PathTracer {
  public:
-  PathTracer(const AtmosphereParameters& a, const Moon& moon) : a_(a), media_(a), moon_(moon) {}
+  // `toward_lit_air`: place vertices after the first partly by the lit-air
+  // proposal (sampleVertex) and, from vertices in the planet's shadow, draw
+  // part of the next directions toward sunlit air (litAirBand); for a sun
+  // below the query's horizon only.
+  PathTracer(const AtmosphereParameters& a, const Moon& moon, bool toward_lit_air)
+      : a_(a), media_(a), moon_(moon), toward_lit_air_(toward_lit_air) {}
 
   double altitude(const glm::dvec3& p) const { return glm::length(p) - a_.bottom_radius_m; }
 
@@ -70,6 +126,14 @@ class PathTracer {
         moon_.visibleSunFraction(p, sun, a_.sun_angular_radius_rad);
     if (visible <= 0.0) return SpectrumD(0.0);
     return glm::exp(-integrateOpticalDepthToTop(media_, r, std::max(mu_s, horizon_mu), segments)) * visible;
+  }
+
+  // Whether no part of the sun disk is above p's horizon.
+  bool inPlanetShadow(const glm::dvec3& p, const glm::dvec3& sun) const {
+    const double r = std::max(glm::length(p), a_.bottom_radius_m);
+    const double mu_s = clampCosine(glm::dot(p, sun) / glm::length(p));
+    return sunDiskVisibleFraction(mu_s - tangentZenithCosine(r, a_.bottom_radius_m),
+                                  sunDiskHalfSizeAtHorizon(a_.bottom_radius_m, r, a_.sun_angular_radius_rad)) <= 0.0;
   }
 
   // Light scattered at p toward -view_dir, from the sun, per unit length.
@@ -146,8 +210,14 @@ class PathTracer {
   // Samples where the next scattering event on the ray happens, from one
   // uniform number u: a point in the air (density following scattering times
   // transmittance along the ray, mixed with a uniform share) or the ground at
-  // its end.
-  Vertex sampleVertex(const AtmosphereRay& ray, bool ground_allowed, double u) const {
+  // its end. With `toward_sun`, a ray that crosses both shadow and sunlit air
+  // mixes in a proposal that also follows the sun's light at each point
+  // (kLitVertexShare): in deep twilight the shadowed air near the viewer
+  // holds nearly all the density but none of the sunlight the next-event
+  // estimate collects, so density alone almost never puts a vertex where the
+  // light is. The density is the mixture's (one-sample multiple importance
+  // sampling with the balance heuristic), so the estimate stays unbiased.
+  Vertex sampleVertex(const AtmosphereRay& ray, bool ground_allowed, double u, const glm::dvec3* toward_sun) const {
     Vertex v;
     if (!(ray.length > 0.0)) {
       // A ray that starts on the ground pointing into it: the ground is all it meets.
@@ -175,6 +245,21 @@ class PathTracer {
       extinction_start = extinction_end;
     }
     const LogLinearProposal<kVertexBins> proposal(ray.length, node_value);
+    // The lit-air proposal: the same nodes times the sun's light there; used
+    // only where some nodes are shadowed and some lit (else it adds nothing).
+    std::array<double, kVertexBins + 1> lit_value{};
+    bool any_shadowed = false, any_lit = false;
+    if (toward_sun) {
+      for (int i = 0; i <= kVertexBins; ++i) {
+        const SpectrumD sun_light =
+            sunTransmittance(ray.origin + ray.dir * (i * dt), *toward_sun, kLitProposalOpticalDepthSegments);
+        const double sun_sum = sun_light.x + sun_light.y + sun_light.z + sun_light.w;
+        lit_value[i] = node_value[i] * sun_sum;
+        (sun_sum > 0.0 ? any_lit : any_shadowed) = true;
+      }
+    }
+    const LogLinearProposal<kVertexBins> lit_proposal(ray.length, lit_value);
+    const double lit_share = any_shadowed && any_lit && lit_proposal.usable() ? kLitVertexShare : 0.0;
     double ground_weight = 0.0;
     if (ground_allowed && ray.ends_on_ground) {
       const SpectrumD w = SpectrumD(a_.ground_albedo) * glm::exp(-depth);
@@ -195,9 +280,25 @@ class PathTracer {
     // In the air: uniformly or by the proposal, the rest of u choosing where.
     const double uniform_share = proposal.usable() ? kUniformVertexShare : 1.0;
     const double u_air = std::min((u - p_ground) / (1.0 - p_ground), std::nextafter(1.0, 0.0));
-    const double t = u_air < uniform_share ? u_air / uniform_share * ray.length
-                                           : proposal.sample((u_air - uniform_share) / (1.0 - uniform_share));
-    const double pdf = (1.0 - p_ground) * ((1.0 - uniform_share) * proposal.pdf(t) + uniform_share / ray.length);
+    double t, pdf;
+    if (lit_share == 0.0) {
+      t = u_air < uniform_share ? u_air / uniform_share * ray.length
+                                : proposal.sample((u_air - uniform_share) / (1.0 - uniform_share));
+      pdf = (1.0 - p_ground) * ((1.0 - uniform_share) * proposal.pdf(t) + uniform_share / ray.length);
+    } else {
+      // The lowest part of u picks the lit-air proposal, the rest the
+      // daylight mixture, each rescaled to [0, 1).
+      if (u_air < lit_share) {
+        t = lit_proposal.sample(u_air / lit_share);
+      } else {
+        const double u_day = (u_air - lit_share) / (1.0 - lit_share);
+        t = u_day < uniform_share ? u_day / uniform_share * ray.length
+                                  : proposal.sample((u_day - uniform_share) / (1.0 - uniform_share));
+      }
+      pdf = (1.0 - p_ground) *
+            (lit_share * lit_proposal.pdf(t) +
+             (1.0 - lit_share) * ((1.0 - uniform_share) * proposal.pdf(t) + uniform_share / ray.length));
+    }
     v.valid = true;
     v.position = ray.origin + ray.dir * t;
     v.weight = glm::exp(-integrateOpticalDepthAlongRay(media_, ray.r, ray.mu, t, kPathOpticalDepthSegments)) / pdf;
@@ -206,9 +307,14 @@ class PathTracer {
 
   // Samples, from two uniform numbers, the direction light came from before
   // scattering at a point in the air toward -dir, and returns the
-  // phase-weighted scattering over the direction's density.
+  // phase-weighted scattering over the direction's density. With
+  // `lit_band`, a share kLitDirectionShare of the directions is drawn
+  // uniformly over it (toward sunlit air, litAirBand); the density is the
+  // mixture's, so the estimate stays unbiased. (A cone aimed at one point
+  // past the shadow's edge did worse: the sunlit air is a band across the
+  // sun's azimuth, not a spot; docs/ERROR_VS_TIME.md, deep twilight.)
   glm::dvec3 sampleScatteringDirection(const glm::dvec3& point, const glm::dvec3& dir, double u_cos, double u_phi,
-                                       SpectrumD& weight) const {
+                                       const SunwardBand* lit_band, SpectrumD& weight) const {
     const double h = altitude(point);
     const SpectrumD rayleigh = SpectrumD(a_.rayleigh_scattering) * media_.rayleighDensity(h);
     const SpectrumD mie = SpectrumD(a_.mie_scattering) * media_.mieDensity(h);
@@ -222,19 +328,54 @@ class PathTracer {
     double p_uniform = rayleigh_sum + mie_sum > 0.0 ? rayleigh_sum / (rayleigh_sum + mie_sum) : 1.0;
     if (rayleigh_sum > 0.0 && mie_sum > 0.0) p_uniform = std::clamp(p_uniform, 0.1, 0.9);
     if (g == 0.0) p_uniform = 1.0;
-    double cos_theta;
-    if (u_cos < p_uniform) {
-      cos_theta = 2.0 * (u_cos / p_uniform) - 1.0;
+    const double lit_share = lit_band ? kLitDirectionShare : 0.0;
+    glm::dvec3 incoming;
+    if (u_cos < lit_share) {
+      incoming = lit_band->direction(u_cos / lit_share, u_phi);
     } else {
-      const double x = (u_cos - p_uniform) / (1.0 - p_uniform);
-      const double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * x);
-      cos_theta = std::clamp((1.0 + g * g - s * s) / (2.0 * g), -1.0, 1.0);
+      if (lit_share > 0.0) u_cos = (u_cos - lit_share) / (1.0 - lit_share);
+      double cos_theta;
+      if (u_cos < p_uniform) {
+        cos_theta = 2.0 * (u_cos / p_uniform) - 1.0;
+      } else {
+        const double x = (u_cos - p_uniform) / (1.0 - p_uniform);
+        const double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * x);
+        cos_theta = std::clamp((1.0 + g * g - s * s) / (2.0 * g), -1.0, 1.0);
+      }
+      incoming = directionAround(dir, cos_theta, 2.0 * kPi * u_phi);
     }
-    const glm::dvec3 incoming = directionAround(dir, cos_theta, 2.0 * kPi * u_phi);
     const double c = clampCosine(glm::dot(incoming, dir));
-    const double pdf = p_uniform / (4.0 * kPi) + (1.0 - p_uniform) * henyeyGreensteinPhase(g, c);
+    double pdf = p_uniform / (4.0 * kPi) + (1.0 - p_uniform) * henyeyGreensteinPhase(g, c);
+    if (lit_share > 0.0) pdf = lit_share * lit_band->pdf(incoming) + (1.0 - lit_share) * pdf;
     weight = (rayleigh * rayleighPhase(c) + mie * cornetteShanksPhase(g, c)) / pdf;
     return incoming;
+  }
+
+  // Where, seen from a point in the planet's shadow, the sunlit air lies:
+  // past the shadow's edge, a band across the sun's azimuth (the terminator
+  // is a great circle, nearly straight this close), seen at elevations from
+  // the point's horizon to a little above the atmosphere's top at the
+  // shadow's edge there (the top is the first air the sun reaches). None for
+  // a sun straight below the point (no azimuth to aim at).
+  bool litAirBand(const glm::dvec3& p, const glm::dvec3& sun, SunwardBand& band) const {
+    const double r = glm::length(p);
+    band.up = p / r;
+    const double sun_up = glm::dot(sun, band.up);
+    glm::dvec3 sunward = sun - sun_up * band.up;
+    const double sunward_length = glm::length(sunward);
+    if (!(sunward_length > kSmallestSunwardSine)) return false;
+    band.sunward = sunward / sunward_length;
+    band.side = glm::cross(band.up, band.sunward);
+    const double sun_zenith = std::acos(clampCosine(sun_up));
+    const double edge_at_top = 0.5 * kPi + std::acos(a_.bottom_radius_m / a_.top_radius_m);
+    const double arc = std::max(sun_zenith - edge_at_top, 0.0);
+    const glm::dvec3 edge = a_.top_radius_m * (std::cos(arc) * band.up + std::sin(arc) * band.sunward);
+    const double edge_sin = std::clamp(glm::dot(glm::normalize(edge - p), band.up), -1.0, 1.0);
+    const double horizon_sin = -safeSqrt(1.0 - std::pow(a_.bottom_radius_m / std::max(r, a_.bottom_radius_m), 2));
+    band.sin_low = horizon_sin;
+    band.sin_high =
+        std::min(std::sin(std::max(std::asin(edge_sin), std::asin(horizon_sin)) + kLitBandAboveEdge_rad), 1.0);
+    return band.sin_high > band.sin_low;
   }
 
   // Radiance arriving along -dir at `start` from scattering events along the
@@ -247,7 +388,10 @@ class PathTracer {
     double first_event_peak = 0.0;
     SpectrumD total(0.0);
     for (int depth = 0; depth < kMaxPathVertices && ray.inside; ++depth) {
-      const Vertex v = sampleVertex(ray, ground_allowed, rng.next());
+      // The lit-air proposal serves the next-event estimate at the vertex, so
+      // not the first vertex when its sun connection is the caller's.
+      const bool lit_proposal = toward_lit_air_ && (depth > 0 || !skip_first_sun);
+      const Vertex v = sampleVertex(ray, ground_allowed, rng.next(), lit_proposal ? &sun : nullptr);
       if (!v.valid) break;
       throughput *= v.weight;
       glm::dvec3 next_dir;
@@ -263,7 +407,11 @@ class PathTracer {
           total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
         SpectrumD phase_weight;
         const double u_cos = rng.next(), u_phi = rng.next();
-        next_dir = sampleScatteringDirection(v.position, ray.dir, u_cos, u_phi, phase_weight);
+        // In the shadow, aim part of the directions at sunlit air.
+        SunwardBand lit_band;
+        const bool aim = toward_lit_air_ && inPlanetShadow(v.position, sun) && litAirBand(v.position, sun, lit_band);
+        next_dir =
+            sampleScatteringDirection(v.position, ray.dir, u_cos, u_phi, aim ? &lit_band : nullptr, phase_weight);
         throughput *= phase_weight;
       }
       // Russian roulette from the third event on: unbiased, bounds path
@@ -290,6 +438,7 @@ class PathTracer {
   const AtmosphereParameters& a_;
   AtmosphereMedia media_;
   Moon moon_;  // none: the sun is hidden by the planet alone
+  bool toward_lit_air_;
 };
 
 // Estimates the mean of path(sampler) from `paths` paths split into
@@ -319,16 +468,22 @@ ReferenceEstimate estimateOverReplicates(int paths, uint64_t seed, PathFn&& path
 
 }  // namespace
 
-ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere) : a_(atmosphere) {}
+ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere, VertexSampling sampling)
+    : a_(atmosphere), sampling_(sampling) {}
+
+bool ReferenceSolver::towardLitAir(double camera_sun_zenith_cosine) const {
+  return sampling_ == VertexSampling::TowardLitAirBelowHorizon &&
+         referenceSamplesTowardLitAir(camera_sun_zenith_cosine);
+}
 
 namespace {
 
 // The radiance estimate with each contribution through `map` (a linear map
 // of the channels, or the identity).
 template <typename MapFn>
-ReferenceEstimate radianceThrough(const AtmosphereParameters& a, const ReferenceRay& query, int paths, uint64_t seed,
-                                  const Moon& moon, MapFn&& map) {
-  const PathTracer tracer(a, moon);
+ReferenceEstimate radianceThrough(const AtmosphereParameters& a, bool toward_lit_air, const ReferenceRay& query,
+                                  int paths, uint64_t seed, const Moon& moon, MapFn&& map) {
+  const PathTracer tracer(a, moon, toward_lit_air);
   const AtmosphereRay ray =
       atmosphereRay(a.bottom_radius_m, a.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
@@ -341,12 +496,18 @@ ReferenceEstimate radianceThrough(const AtmosphereParameters& a, const Reference
   return e;
 }
 
-template <typename MapFn>
-ReferenceEstimate skyIrradianceThrough(const AtmosphereParameters& a, const glm::dvec3& point, const glm::dvec3& sun,
-                                       int paths, uint64_t seed, const Moon& moon, MapFn&& map) {
-  const PathTracer tracer(a, moon);
+// The vertical at `point` (+z at the planet's centre).
+glm::dvec3 upAt(const glm::dvec3& point) {
   const double length = glm::length(point);
-  const glm::dvec3 up = length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+  return length > 0.0 ? point / length : glm::dvec3(0.0, 0.0, 1.0);
+}
+
+template <typename MapFn>
+ReferenceEstimate skyIrradianceThrough(const AtmosphereParameters& a, bool toward_lit_air, const glm::dvec3& point,
+                                       const glm::dvec3& sun, int paths, uint64_t seed, const Moon& moon, MapFn&& map) {
+  const PathTracer tracer(a, moon, toward_lit_air);
+  const double length = glm::length(point);
+  const glm::dvec3 up = upAt(point);
   const glm::dvec3 start = up * std::clamp(length, a.bottom_radius_m, a.top_radius_m);
   return estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
     // Cosine-weighted directions: irradiance = pi x mean radiance.
@@ -363,12 +524,14 @@ SpectrumD unmapped(const SpectrumD& s) { return s; }
 
 ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed,
                                             const Moon& moon) const {
-  return radianceThrough(a_, query, paths, seed, moon, unmapped);
+  return radianceThrough(a_, towardLitAir(glm::dot(glm::normalize(query.camera), query.sun)), query, paths, seed, moon,
+                         unmapped);
 }
 
 ReferenceEstimate ReferenceSolver::mappedRadiance(const ReferenceRay& query, int paths, uint64_t seed,
                                                   const glm::dmat4& lanes_to_output, const Moon& moon) const {
-  return radianceThrough(a_, query, paths, seed, moon, [&](const SpectrumD& s) { return lanes_to_output * s; });
+  return radianceThrough(a_, towardLitAir(glm::dot(glm::normalize(query.camera), query.sun)), query, paths, seed, moon,
+                         [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 
 SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
@@ -380,13 +543,13 @@ SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
 
 ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
                                                  uint64_t seed, const Moon& moon) const {
-  return skyIrradianceThrough(a_, point, sun, paths, seed, moon, unmapped);
+  return skyIrradianceThrough(a_, towardLitAir(glm::dot(upAt(point), sun)), point, sun, paths, seed, moon, unmapped);
 }
 
 ReferenceEstimate ReferenceSolver::mappedSkyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
                                                        uint64_t seed, const glm::dmat4& lanes_to_output,
                                                        const Moon& moon) const {
-  return skyIrradianceThrough(a_, point, sun, paths, seed, moon,
+  return skyIrradianceThrough(a_, towardLitAir(glm::dot(upAt(point), sun)), point, sun, paths, seed, moon,
                               [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 

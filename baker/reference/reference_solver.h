@@ -11,7 +11,10 @@
 // optical depths by quadrature of the density profiles, Lambertian ground,
 // Rayleigh + Cornette-Shanks Mie + absorption, Russian roulette. Only that
 // part (10 to 30 % of the radiance) is noisy, which cuts the noise several
-// fold against tracing every order. Each query has its own fixed seed.
+// fold against tracing every order. With the sun below the camera's horizon
+// the vertices and directions are drawn partly toward the sunlit air far
+// from the view ray, where deep-twilight light comes from (multiple
+// importance sampling, unbiased). Each query has its own fixed seed.
 #pragma once
 
 #include <cstdint>
@@ -36,9 +39,23 @@ struct ReferenceRay {
   double distance_m;  // > 0: up to the point at this distance; else to the ray's end
 };
 
+// Whether the reference places its path vertices partly toward sunlit air
+// (reference_solver.cpp, sampleVertex): for a sun below the horizon of the
+// query's camera (the cosine of its zenith angle there below 0), where the
+// light scattered more than once comes from sunlit air far from the view
+// ray. Daylight queries keep their sampling, and so their values, bit for
+// bit; the query keys of the others name the sampling (validation.cpp).
+inline bool referenceSamplesTowardLitAir(double camera_sun_zenith_cosine) { return camera_sun_zenith_cosine < 0.0; }
+
 class ReferenceSolver {
  public:
-  explicit ReferenceSolver(const AtmosphereParameters& atmosphere);
+  // Where path vertices go: toward sunlit air for suns below the horizon
+  // (the default), or by the density alone for every sun (the daylight
+  // estimator everywhere: slower to converge in twilight, kept to check the
+  // other against).
+  enum class VertexSampling { TowardLitAirBelowHorizon, DensityOnly };
+  explicit ReferenceSolver(const AtmosphereParameters& atmosphere,
+                           VertexSampling sampling = VertexSampling::TowardLitAirBelowHorizon);
 
   // The radiance the viewer receives along the ray, W m^-2 sr^-1 nm^-1:
   // in-scattering of all orders plus, for a ray that ends on the ground (and
@@ -70,7 +87,10 @@ class ReferenceSolver {
                                         const glm::dmat4& lanes_to_output, const Moon& moon = Moon{}) const;
 
  private:
+  bool towardLitAir(double camera_sun_zenith_cosine) const;
+
   const AtmosphereParameters& a_;
+  VertexSampling sampling_;
 };
 
 }  // namespace skybake

@@ -32,16 +32,17 @@ struct ViewNode {
   double mie_weight;
 };
 
-// Appends the nodes of [piece_start, piece_end] of the ray (r, mu), in
-// `segments` sub-intervals.
+// Appends the nodes of [0, length] of the ray (r, mu), in `segments`
+// sub-intervals, each cut where the planet's shadow crosses the ray
+// (forEachOpticallyThinNodeCutAt: as integrateSingleScattering cuts them).
 void collectViewNodes(const StageContext& ctx, const Texture2D& optical_depth, double r, double mu,
-                      bool ray_intersects_ground, double piece_start, double piece_end, int segments,
+                      bool ray_intersects_ground, double length, int segments, const ShadowCrossings& crossings,
                       std::vector<ViewNode>& nodes) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const AtmosphereMedia media(a);
   auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };
-  forEachOpticallyThinNode(
-      piece_start, piece_end, segments, -r * mu,
+  forEachOpticallyThinNodeCutAt(
+      0.0, length, segments, -r * mu, crossings.distance.data(), crossings.count,
       [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
       [&](double t, double w) {
         const double r_t = radiusAt(t);
@@ -109,21 +110,6 @@ void sumOverNodes(const StageContext& ctx, const Texture2D& optical_depth, const
   }
 }
 
-// The nodes of the ray, each piece between the shadow's edges with its own
-// rule, so none spans the jump where the sun appears or disappears.
-void collectPiecewiseNodes(const StageContext& ctx, const Texture2D& optical_depth, double r, double mu,
-                           bool ray_intersects_ground, const ShadowCrossings& crossings, double length,
-                           std::vector<ViewNode>& nodes) {
-  nodes.clear();
-  double piece_start = 0.0;
-  for (int i = 0; i <= crossings.count; ++i) {
-    const double piece_end = i < crossings.count ? crossings.distance[i] : length;
-    const int segments = segmentsForPiece(kSingleScatteringSegments, piece_end - piece_start, length);
-    collectViewNodes(ctx, optical_depth, r, mu, ray_intersects_ground, piece_start, piece_end, segments, nodes);
-    piece_start = piece_end;
-  }
-}
-
 }  // namespace
 
 SingleScattering computeSingleScattering(const StageContext& ctx, const Texture2D& optical_depth, double r, double mu,
@@ -154,8 +140,8 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
         const double length = distanceToAtmosphereEnd(row.r, row.mu, ctx.atmosphere.bottom_radius_m,
                                                       ctx.atmosphere.top_radius_m, row.ray_intersects_ground);
         whole_ray.clear();
-        collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, 0.0, length,
-                         kSingleScatteringSegments, whole_ray);
+        collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, length,
+                         kSingleScatteringSegments, ShadowCrossings{}, whole_ray);
         auto store = [&](size_t sun, const Spectrum& rayleigh_value, const Spectrum& mie_value) {
           const RowSunTexels::Slices& slices = suns.slices[sun];
           for (int i_nu = slices.first_nu; i_nu <= slices.last_nu; ++i_nu) {
@@ -174,8 +160,9 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
             shared_suns.push_back(i);
             continue;
           }
-          collectPiecewiseNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, crossings, length,
-                                pieces);
+          pieces.clear();
+          collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, length,
+                           kSingleScatteringSegments, crossings, pieces);
           alone.clear();
           alone.add(suns.mu_s[i], suns.nu[i]);
           sumOverNodes(ctx, optical_depth, pieces, row.r, alone);

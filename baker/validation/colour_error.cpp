@@ -68,7 +68,7 @@ ColourErrorStats summarize(Samples s) {
 
 }  // namespace
 
-double smallestComparedY() { return kSmallestComparedValue * colour::ybarIntegral_nm(); }
+double smallestComparedY(SunBand band) { return smallestComparedValue(band) * colour::ybarIntegral_nm(); }
 
 std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<Spectrum>& channels) {
   if (sky.atmosphere().storesCieXyz()) {
@@ -117,7 +117,7 @@ ColourErrorReport compareColourWithReference(const AtmosphereParameters& a, cons
     auto& [name, s] = samples[{quantityOrder(quantity), static_cast<int>(band)}];
     name = quantity;
     const colour::Xyz ref = xyzOf(r.value);
-    if (!(ref.y >= smallestComparedY())) {
+    if (!(ref.y >= smallestComparedY(band))) {
       ++s.skipped;
       return;
     }
@@ -183,7 +183,10 @@ nlohmann::ordered_json ColourErrorReport::toJson() const {
   j["reference_paths"] = reference_paths;
   j["compared_lightness"] = kComparedLightness;
   j["white"] = "sRGB (D65)";
-  j["smallest_compared_y"] = smallestComparedY();
+  j["smallest_compared_y"] = smallestComparedY(SunBand::Day);
+  nlohmann::ordered_json floors;
+  for (SunBand band : allSunBands()) floors[sunBandName(band)] = smallestComparedY(band);
+  j["smallest_compared_y_by_band"] = floors;
   nlohmann::ordered_json rows_json = nlohmann::ordered_json::array();
   for (const ColourErrorRow& row : rows) {
     const ColourErrorStats& s = row.stats;

@@ -30,9 +30,9 @@ namespace skybake {
 inline constexpr double kComparedLightness = 50.0;
 
 // Reference Y below this (W m^-2 sr^-1, or W m^-2 for irradiance) is left
-// out, as validate leaves out spectral values below kSmallestComparedValue:
-// it is the Y of a flat spectrum of that value.
-double smallestComparedY();
+// out in `band`, as validate leaves out spectral values below
+// smallestComparedValue(band): it is the Y of a flat spectrum of that value.
+double smallestComparedY(SunBand band);
 
 // A method's values as CIE XYZ. For a bake of wavelengths, its channels
 // through the colour-matching functions by the rule `skybake render` uses
@@ -58,7 +58,7 @@ double referenceColourError(const colour::Xyz& reference, const colour::Xyz& hal
 
 struct ColourErrorStats {
   int count = 0;                                    // queries compared
-  int skipped = 0;                                  // reference Y below smallestComparedY()
+  int skipped = 0;                                  // reference Y below smallestComparedY(band)
   double luminance_rms = 0.0, luminance_p95 = 0.0;  // relative
   double ciede2000_median = 0.0, ciede2000_p95 = 0.0, ciede2000_max = 0.0;
   double reference_luminance_standard_error = 0.0;                         // RMS of the relative standard error of Y

@@ -46,13 +46,28 @@ std::string radianceQuantity(const AtmosphereParameters& a, const RadianceQuery&
   return "";
 }
 
+namespace {
+
+// Queries with the sun below the camera's horizon are sampled partly toward
+// sunlit air (referenceSamplesTowardLitAir): their keys name that sampling,
+// so values cached before it (other seeds, more noise) are never mistaken
+// for them, while the daylight keys, and values, stay as they were.
+std::string samplingSuffix(double sun_zenith_deg) {
+  return referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(sun_zenith_deg, 0.0).z) ? " lit-air" : "";
+}
+
+}  // namespace
+
 std::string radianceKey(const RadianceQuery& q) {
-  const std::string key = fmt::format("r {} {} {} {} {}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
-                                      q.view_azimuth_deg, q.distance_m);
+  const std::string key = fmt::format("r {} {} {} {} {}{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
+                                      q.view_azimuth_deg, q.distance_m, samplingSuffix(q.sun_zenith_deg));
   // An eclipse's value is not the plain sky's: its key names the moon.
   return q.moon.present() ? fmt::format("{} moon {} {}", key, q.moon.separation_deg, q.moon.angular_radius_deg) : key;
 }
-std::string irradianceKey(const IrradianceQuery& q) { return fmt::format("e {} {}", q.altitude_m, q.sun_zenith_deg); }
+
+std::string irradianceKey(const IrradianceQuery& q) {
+  return fmt::format("e {} {}{}", q.altitude_m, q.sun_zenith_deg, samplingSuffix(q.sun_zenith_deg));
+}
 
 QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
   QueryGeometry g{cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
@@ -251,15 +266,26 @@ QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string&
   return out;
 }
 
+double smallestComparedValue(SunBand band) {
+  switch (band) {
+    case SunBand::Nautical:
+      return kSmallestComparedNauticalValue;
+    case SunBand::Astronomical:
+    case SunBand::Night:
+      return kSmallestComparedAstronomicalValue;
+    default:
+      return kSmallestComparedValue;
+  }
+}
+
 namespace {
 
 class StatsBuilder {
  public:
-  explicit StatsBuilder(double smallest_compared) : smallest_compared_(smallest_compared) {}
   void add(const std::string& quantity, const std::string& band, int channel, double value, double reference,
-           double reference_error) {
+           double reference_error, double smallest_compared = kSmallestComparedValue) {
     Samples& s = samples_[{quantity, band}][channel];
-    if (!(reference >= smallest_compared_)) {
+    if (!(reference >= smallest_compared)) {
       ++s.skipped;
       return;
     }
@@ -270,10 +296,12 @@ class StatsBuilder {
   std::vector<ErrorRow> rows(int channels) const {
     static const char* kQuantityOrder[] = {"sky_radiance", "ground_radiance", "radiance_to_point", "transmittance",
                                            "sky_irradiance"};
-    static const char* kBandOrder[] = {"day", "low_sun", "twilight", "night", "all"};
+    std::vector<std::string> band_order;
+    for (SunBand band : allSunBands()) band_order.push_back(sunBandName(band));
+    band_order.push_back("all");
     std::vector<ErrorRow> out;
     for (const char* quantity : kQuantityOrder) {
-      for (const char* band : kBandOrder) {
+      for (const std::string& band : band_order) {
         auto it = samples_.find({quantity, band});
         if (it == samples_.end()) continue;
         ErrorRow row{quantity, band, {}};
@@ -310,7 +338,6 @@ class StatsBuilder {
     return e;
   }
 
-  double smallest_compared_;
   std::map<std::pair<std::string, std::string>, std::map<int, Samples>> samples_;
 };
 
@@ -330,28 +357,32 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
   // X, Y, Z integrate spectral radiance over the colour-matching functions,
   // each of which integrates to the same width (equal-energy white): the
   // spectral threshold times that width leaves out the same dark queries.
-  report.smallest_compared_value =
-      a.storesCieXyz() ? kSmallestComparedValue * colour::ybarIntegral_nm() : kSmallestComparedValue;
-  StatsBuilder stats(report.smallest_compared_value);
+  const double value_scale = a.storesCieXyz() ? colour::ybarIntegral_nm() : 1.0;
+  report.smallest_compared_value = kSmallestComparedValue * value_scale;
+  StatsBuilder stats;
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
     const std::string quantity = radianceQuantity(a, q);
     if (quantity.empty()) continue;
-    const char* band = sunBandName(sunBand(q.sun_zenith_deg));
+    const SunBand sun_band = sunBand(q.sun_zenith_deg);
+    const char* band = sunBandName(sun_band);
     const CachedReference& r = reference.radiance[i];
     for (int c = 0; c < channels; ++c) {
-      stats.add(quantity, band, c, method.radiance[i][c], r.value[c], r.standard_error[c]);
+      stats.add(quantity, band, c, method.radiance[i][c], r.value[c], r.standard_error[c],
+                smallestComparedValue(sun_band) * value_scale);
       if (compare_transmittance) {
-        stats.add("transmittance", "all", c, method.transmittance[i][c], r.transmittance[c], 0.0);
+        stats.add("transmittance", "all", c, method.transmittance[i][c], r.transmittance[c], 0.0,
+                  kSmallestComparedValue);
       }
     }
   }
   if (!method.irradiance.empty()) {
     for (size_t i = 0; i < queries.irradiance.size(); ++i) {
-      const char* band = sunBandName(sunBand(queries.irradiance[i].sun_zenith_deg));
+      const SunBand sun_band = sunBand(queries.irradiance[i].sun_zenith_deg);
+      const char* band = sunBandName(sun_band);
       for (int c = 0; c < channels; ++c) {
         stats.add("sky_irradiance", band, c, method.irradiance[i][c], reference.irradiance[i].value[c],
-                  reference.irradiance[i].standard_error[c]);
+                  reference.irradiance[i].standard_error[c], smallestComparedValue(sun_band) * value_scale);
       }
     }
   }
@@ -373,6 +404,11 @@ nlohmann::ordered_json ErrorReport::toJson() const {
   j["wavelengths_nm"] = wavelengths_nm;
   j["channels"] = channel_names;
   j["smallest_compared_value"] = smallest_compared_value;
+  nlohmann::ordered_json floors;
+  for (SunBand band : allSunBands()) {
+    floors[sunBandName(band)] = smallestComparedValue(band) * (smallest_compared_value / kSmallestComparedValue);
+  }
+  j["smallest_compared_value_by_band"] = floors;
   nlohmann::ordered_json rows_json = nlohmann::ordered_json::array();
   for (const ErrorRow& row : rows) {
     nlohmann::ordered_json channels = nlohmann::ordered_json::array();
@@ -391,12 +427,12 @@ nlohmann::ordered_json ErrorReport::toJson() const {
 }
 
 std::string ErrorReport::table() const {
-  std::string out = fmt::format("{:<18} {:<9} {:>5} {:>5}", "quantity", "band", "n", "skip");
+  std::string out = fmt::format("{:<18} {:<12} {:>5} {:>5}", "quantity", "band", "n", "skip");
   for (const std::string& name : channel_names) out += fmt::format("  {:>22}", name + " rms/p95/max %");
   out += "  ref stderr %\n";
   for (const ErrorRow& row : rows) {
     const ErrorStats& first = row.channels.front();
-    out += fmt::format("{:<18} {:<9} {:>5} {:>5}", row.quantity, row.band, first.count, first.skipped);
+    out += fmt::format("{:<18} {:<12} {:>5} {:>5}", row.quantity, row.band, first.count, first.skipped);
     double ref = 0.0;
     for (const ErrorStats& s : row.channels) {
       out += fmt::format("  {:>22}", fmt::format("{:.2f} / {:.2f} / {:.2f}", 100 * s.rms, 100 * s.p95, 100 * s.max));

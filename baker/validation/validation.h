@@ -21,6 +21,15 @@ namespace skybake {
 // twilight or behind a thick atmosphere a relative error of a value this
 // small says nothing a renderer could show. They are counted as skipped.
 inline constexpr double kSmallestComparedValue = 1e-5;
+// The same floor in nautical and astronomical twilight, where the whole sky
+// lies 1e-3 to 1e-8 below the day's (kSmallestComparedValue would skip all
+// of it): each about 1e-3 of the band's zenith sky seen from the ground
+// (docs/ERROR_VS_TIME.md, deep twilight), so what is left out is what a
+// renderer could not show beside the rest of that sky.
+inline constexpr double kSmallestComparedNauticalValue = 1e-9;
+inline constexpr double kSmallestComparedAstronomicalValue = 1e-11;
+// The floor for a sun band (night counts as astronomical twilight).
+double smallestComparedValue(SunBand band);
 
 // More Monte Carlo paths per query than this would take days per query set
 // (--reference-samples).
@@ -118,7 +127,7 @@ struct ErrorStats {
 
 struct ErrorRow {
   std::string quantity;  // sky_radiance, ground_radiance, radiance_to_point, transmittance, sky_irradiance
-  std::string band;      // day, low_sun, twilight, night, all
+  std::string band;      // day, low_sun, twilight, nautical, astronomical, night, all
   std::vector<ErrorStats> channels;
 };
 

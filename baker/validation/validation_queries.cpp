@@ -47,7 +47,7 @@ QuerySet makeSet(const std::string& name, const std::vector<double>& altitudes, 
 QuerySet standardQuerySet(double thickness) {
   return makeSet("standard",
                  {0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m},
-                 {0.0, 30.0, 60.0, 75.0, 85.0, 88.0, 90.0, 92.0, 95.0, 100.0},
+                 {0.0, 30.0, 60.0, 75.0, 85.0, 88.0, 90.0, 92.0, 95.0, 100.0, 98.0, 102.0, 104.0, 106.0, 108.0},
                  {0.0, 30.0, 60.0, 75.0, 84.0, 88.0, 89.5, 90.5, 92.0, 96.0, 120.0, 170.0},
                  {100.0, 106.0, 110.0, 120.0, 150.0, 180.0}, {0.0, 90.0, 180.0}, thickness, true);
 }
@@ -124,10 +124,18 @@ QuerySet querySetNamed(const std::string& which, double thickness) {
 }
 
 SunBand sunBand(double sun_zenith_deg) {
-  if (sun_zenith_deg < 80.0) return SunBand::Day;
-  if (sun_zenith_deg <= 90.0) return SunBand::LowSun;
-  if (sun_zenith_deg <= 100.0) return SunBand::Twilight;
+  if (sun_zenith_deg < kLowSunFromZenith_deg) return SunBand::Day;
+  if (sun_zenith_deg <= kHorizonZenith_deg) return SunBand::LowSun;
+  if (sun_zenith_deg <= kCivilTwilightEndZenith_deg) return SunBand::Twilight;
+  if (sun_zenith_deg <= kNauticalTwilightEndZenith_deg) return SunBand::Nautical;
+  if (sun_zenith_deg <= kAstronomicalTwilightEndZenith_deg) return SunBand::Astronomical;
   return SunBand::Night;
+}
+
+const std::vector<SunBand>& allSunBands() {
+  static const std::vector<SunBand> bands = {SunBand::Day,      SunBand::LowSun,       SunBand::Twilight,
+                                             SunBand::Nautical, SunBand::Astronomical, SunBand::Night};
+  return bands;
 }
 
 const char* sunBandName(SunBand band) {
@@ -138,6 +146,10 @@ const char* sunBandName(SunBand band) {
       return "low_sun";
     case SunBand::Twilight:
       return "twilight";
+    case SunBand::Nautical:
+      return "nautical";
+    case SunBand::Astronomical:
+      return "astronomical";
     case SunBand::Night:
       return "night";
   }

@@ -64,8 +64,10 @@ struct QuerySet {
 
 // The standard set for an atmosphere with the given top altitude (m above
 // the ground): cameras at 0, 1 km, 10 km, 30 km, just under the top and in
-// space; suns from the zenith to 10 deg below the horizon; views over the
+// space; suns from the zenith to 18 deg below the horizon; views over the
 // dome and the ground, denser near the horizon; azimuths 0, 90 and 180 deg.
+// The suns of the first set (zenith to 10 deg below the horizon) come first
+// and keep their order; the deep-twilight suns (to 18 deg below) follow.
 QuerySet standardQuerySet(double atmosphere_thickness_m);
 
 // A small subset of the standard set (for CI and quick looks).
@@ -101,9 +103,20 @@ QuerySet querySetFromCsv(const std::filesystem::path& path);
 // "standard", "quick", "eclipse", or else the path of a CSV (the --queries option).
 QuerySet querySetNamed(const std::string& which, double atmosphere_thickness_m);
 
-// Sun bands: day (elevation > 10 deg), low sun (0 to 10), twilight (-10 to 0).
-enum class SunBand { Day, LowSun, Twilight, Night };
+// Sun bands by the sun's zenith angle: day (elevation above 10 deg), low sun
+// (0 to 10 deg), then the three twilights as almanacs define them by the
+// sun's depression below the horizon: civil ("twilight", 0 to 6 deg),
+// nautical (6 to 12) and astronomical (12 to 18); night beyond. Each band
+// holds its upper zenith end (a sun on the horizon is low sun).
+inline constexpr double kLowSunFromZenith_deg = 80.0;
+inline constexpr double kHorizonZenith_deg = 90.0;
+inline constexpr double kCivilTwilightEndZenith_deg = 96.0;
+inline constexpr double kNauticalTwilightEndZenith_deg = 102.0;
+inline constexpr double kAstronomicalTwilightEndZenith_deg = 108.0;
+enum class SunBand { Day, LowSun, Twilight, Nautical, Astronomical, Night };
 SunBand sunBand(double sun_zenith_deg);
 const char* sunBandName(SunBand band);
+// Every band, from day to night (the order reports list them in).
+const std::vector<SunBand>& allSunBands();
 
 }  // namespace skybake

@@ -157,6 +157,7 @@ std::string skyGlslDefines() {
   define("SKYBAKE_REFINED_OPTICAL_DEPTH", glslFloat(kRefinedOpticalDepth));
   define("SKYBAKE_MAX_PIECES_PER_SUBINTERVAL", std::to_string(kMaxPiecesPerSubinterval));
   define("SKYBAKE_GEOMETRIC_BLEND_RATIO", glslFloat(kGeometricBlendRatio));
+  define("SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO", glslFloat(kFullyGeometricBlendRatio));
   define("SKYBAKE_RAYLEIGH_PHASE_NORMALISATION", glslFloat(kRayleighPhaseNormalisation));
   define("SKYBAKE_BROAD_PHASE", glslFloat(MultipleScatteringPhase::kBroad));
   define("SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE", glslFloat(kIntegratedSingleScatteringTopCosine));

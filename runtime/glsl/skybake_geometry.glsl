@@ -161,12 +161,6 @@ SkybakeShadowCrossings skybakePlanetShadowCrossings(float r, float mu, float mu_
   return out_crossings;
 }
 
-// How many of a rule's `segments` sub-intervals a piece of the ray gets.
-int skybakeSegmentsForPiece(int segments, float piece_length_m, float ray_length_m) {
-  float share = ray_length_m > 0.0 ? piece_length_m / ray_length_m : 1.0;
-  return clamp(int(ceil(float(segments) * share)), 1, segments);
-}
-
 // Fraction of the sun disk above the horizon (runtime/sun_disk.h): `height`
 // of its centre above the horizon and its half-size, both in zenith cosine.
 float skybakeSunDiskVisibleFraction(float height, float half_size) {

@@ -82,9 +82,41 @@ bool skybakeNextPiece(inout SkybakePieces p, out float piece_start, out float pi
   return false;
 }
 
+// Single scattering at the 4-point rule's nodes over [a, b] of the ray
+// (r, mu) with the sun at (mu_s, nu), added to rayleigh and mie (without
+// the factors common to every node).
+void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, bool ray_intersects_ground,
+                                    vec4 start_to_top_up, vec4 start_to_top_down, float a, float b,
+                                    inout vec4 rayleigh, inout vec4 mie) {
+  float bottom = skybake_radii_m.x;
+  float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
+  float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
+  float h = b - a;
+  for (int k = 0; k < SKYBAKE_GAUSS_NODES; ++k) {
+    float t = a + 0.5 * h * (1.0 + gauss_abscissa[k]);
+    float w = 0.5 * h * gauss_weight[k];
+    float r_t = skybakeShellRadiusAlongRay(r, mu, t);
+    float altitude_m = r_t - bottom;
+    float mu_s_t = skybakeClampCosine((r * mu_s + t * nu) / r_t);
+    float visible = skybakeSunDiskVisibleFraction(mu_s_t - skybakeTangentZenithCosine(r_t, bottom),
+                                                  bottom / r_t * skybake_radii_m.w);
+    if (visible <= 0.0) continue;  // in the planet's shadow
+    // The sunlight's whole path in one exponential: to the node, then on to
+    // the ray's start.
+    float mu_t = skybakeCosineAlongRay(r, mu, t, r_t);
+    bool reversed = ray_intersects_ground || t <= -r * mu;
+    vec4 along = reversed ? max(skybakeOpticalDepthToTop(r_t, -mu_t) - start_to_top_down, vec4(0.0))
+                          : max(start_to_top_up - skybakeOpticalDepthToTop(r_t, mu_t), vec4(0.0));
+    vec4 light = exp(-(skybakeOpticalDepthToTop(r_t, mu_s_t) + along)) * visible;
+    rayleigh += light * (w * skybakeRayleighDensity(altitude_m));
+    mie += light * (w * skybakeMieDensity(altitude_m));
+  }
+}
+
 // Single scattering over [t_start, t_end] of the ray (r, mu) with the sun at
-// (mu_s, nu), seen from the ray's start; `segments` sub-intervals shared
-// among the pieces between shadow crossings (integrateSingleScattering).
+// (mu_s, nu), seen from the ray's start; `segments` sub-intervals over the
+// whole of it, each cut where the ray crosses the edge of the planet's
+// shadow (integrateSingleScattering, forEachOpticallyThinNodeCutAt).
 SkybakeSingleScattering skybakeIntegrateSingleScattering(float r, float mu, float mu_s, float nu,
                                                          bool ray_intersects_ground, float t_start, float t_end,
                                                          int segments) {
@@ -92,45 +124,24 @@ SkybakeSingleScattering skybakeIntegrateSingleScattering(float r, float mu, floa
   vec4 mie = vec4(0.0);
   // A light shaft's shadow can reach past the ray's end: nothing is lit.
   if (!(t_end > t_start)) return SkybakeSingleScattering(rayleigh, mie);
-  float bottom = skybake_radii_m.x;
   // The ray's own legs to the top, the same at every node.
   vec4 start_to_top_up = skybakeOpticalDepthToTop(r, mu);
   vec4 start_to_top_down = skybakeOpticalDepthToTop(r, -mu);
-  float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
-  float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
   SkybakeShadowCrossings crossings = skybakePlanetShadowCrossings(r, mu, mu_s, nu, t_end);
-  float ray_length_m = t_end - t_start;
-  float piece_start = t_start;
-  for (int i = 0; i <= crossings.count; ++i) {
-    bool last = i == crossings.count;
-    float piece_end = last ? t_end : clamp(crossings.distance_m[i], t_start, t_end);
-    if (!last && !(piece_end > piece_start)) continue;
-    SkybakePieces pieces = skybakePieces(r, mu, piece_start, piece_end,
-                                         skybakeSegmentsForPiece(segments, piece_end - piece_start, ray_length_m));
-    float a, b;
-    while (skybakeNextPiece(pieces, a, b)) {
-      float h = b - a;
-      for (int k = 0; k < SKYBAKE_GAUSS_NODES; ++k) {
-        float t = a + 0.5 * h * (1.0 + gauss_abscissa[k]);
-        float w = 0.5 * h * gauss_weight[k];
-        float r_t = skybakeShellRadiusAlongRay(r, mu, t);
-        float altitude_m = r_t - bottom;
-        float mu_s_t = skybakeClampCosine((r * mu_s + t * nu) / r_t);
-        float visible = skybakeSunDiskVisibleFraction(mu_s_t - skybakeTangentZenithCosine(r_t, bottom),
-                                                      bottom / r_t * skybake_radii_m.w);
-        if (visible <= 0.0) continue;  // in the planet's shadow
-        // The sunlight's whole path in one exponential: to the node, then
-        // on to the ray's start.
-        float mu_t = skybakeCosineAlongRay(r, mu, t, r_t);
-        bool reversed = ray_intersects_ground || t <= -r * mu;
-        vec4 along = reversed ? max(skybakeOpticalDepthToTop(r_t, -mu_t) - start_to_top_down, vec4(0.0))
-                              : max(start_to_top_up - skybakeOpticalDepthToTop(r_t, mu_t), vec4(0.0));
-        vec4 light = exp(-(skybakeOpticalDepthToTop(r_t, mu_s_t) + along)) * visible;
-        rayleigh += light * (w * skybakeRayleighDensity(altitude_m));
-        mie += light * (w * skybakeMieDensity(altitude_m));
+  SkybakePieces pieces = skybakePieces(r, mu, t_start, t_end, segments);
+  float a, b;
+  while (skybakeNextPiece(pieces, a, b)) {
+    float part_start = a;
+    for (int i = 0; i < 2; ++i) {
+      float cut = i == 0 ? crossings.distance_m.x : crossings.distance_m.y;
+      if (i < crossings.count && cut > part_start && cut < b) {
+        skybakeAddSingleScatteringPart(r, mu, mu_s, nu, ray_intersects_ground, start_to_top_up, start_to_top_down,
+                                       part_start, cut, rayleigh, mie);
+        part_start = cut;
       }
     }
-    piece_start = piece_end;
+    skybakeAddSingleScatteringPart(r, mu, mu_s, nu, ray_intersects_ground, start_to_top_up, start_to_top_down,
+                                   part_start, b, rayleigh, mie);
   }
   return SkybakeSingleScattering(rayleigh * skybake_sun_irradiance * skybake_rayleigh_scattering,
                                  mie * skybake_sun_irradiance * skybake_mie_scattering);

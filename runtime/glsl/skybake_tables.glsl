@@ -52,8 +52,10 @@ vec4 skybakeSampleBilinear(sampler2D table, SkybakeAxisLerp x, SkybakeAxisLerp y
 }
 
 // a^(1-w) b^w per channel where both are positive and more than
-// SKYBAKE_GEOMETRIC_BLEND_RATIO apart, linear elsewhere: exact for the
-// exponential falloff of a twilight sky across mu_s and nu (table_sampler.h).
+// SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO apart, linear where they are within
+// SKYBAKE_GEOMETRIC_BLEND_RATIO, moving smoothly from one to the other
+// between: exact for the exponential falloff of a twilight sky across mu_s
+// and nu, and without a jump as the ratio changes (table_sampler.h).
 vec4 skybakeBlendGeometricWhereSteep(vec4 a, vec4 b, float w) {
   vec4 linear_blend = a + (b - a) * w;
   bvec4 positive = bvec4(vec4(greaterThan(a, vec4(0.0))) * vec4(greaterThan(b, vec4(0.0))));
@@ -63,7 +65,9 @@ vec4 skybakeBlendGeometricWhereSteep(vec4 a, vec4 b, float w) {
   // Logarithms of 1 where the blend is linear, so no log(0) is taken.
   vec4 safe_a = mix(vec4(1.0), a, steep);
   vec4 safe_b = mix(vec4(1.0), b, steep);
-  return mix(linear_blend, exp((1.0 - w) * log(safe_a) + w * log(safe_b)), steep);
+  vec4 ratio = max(safe_a / safe_b, safe_b / safe_a);
+  vec4 share = smoothstep(vec4(SKYBAKE_GEOMETRIC_BLEND_RATIO), vec4(SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO), ratio);
+  return mix(linear_blend, exp((1.0 - w) * log(safe_a) + w * log(safe_b)), share * vec4(steep));
 }
 
 vec4 skybakeBlendAcross(vec4 a, vec4 b, float w, bool geometric) {

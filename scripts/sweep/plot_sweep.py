@@ -16,7 +16,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-BANDS = ["day", "low_sun", "twilight"]
+# The sun bands of `skybake validate` (validation_queries.h): civil
+# ("twilight"), nautical and astronomical twilight. A band a validation lacks
+# (one made before the deep-twilight bands, or a query set without those
+# suns) reads NaN and is left out of the plot.
+BANDS = ["day", "low_sun", "twilight", "nautical", "astronomical"]
 
 
 def worst_rms(validation, quantity, band):
@@ -51,10 +55,15 @@ def main():
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for band in BANDS:
+        if all(r[f"sky_rms_{band}_percent"] != r[f"sky_rms_{band}_percent"] for r in rows):
+            continue  # NaN throughout: no queries in this band
         ax.plot([r["bake_seconds"] for r in rows], [r[f"sky_rms_{band}_percent"] for r in rows], "o-", label=band)
     for r in rows:
-        ax.annotate(r["bake"], (r["bake_seconds"], r["sky_rms_day_percent"]), fontsize=7,
-                    textcoords="offset points", xytext=(4, 4))
+        # Beside the first band the validation has (day, in a sweep).
+        finite = [r[f"sky_rms_{band}_percent"] for band in BANDS if r[f"sky_rms_{band}_percent"] > 0]
+        if finite:
+            ax.annotate(r["bake"], (r["bake_seconds"], finite[0]), fontsize=7, textcoords="offset points",
+                        xytext=(4, 4))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("bake time (s)")

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -151,6 +152,43 @@ TEST_F(ReferenceCacheTest, PiecesGiveTheWholeSetsValues) {
   for (size_t i = 0; i < set.irradiance.size(); ++i) {
     EXPECT_EQ(from_pieces.irradiance[i].value.x, whole.irradiance[i].value.x);
   }
+}
+
+// The sun bands follow the almanac's twilights (sun depression 0-6, 6-12,
+// 12-18 deg), each holding its upper zenith end.
+TEST(SunBands, CivilNauticalAndAstronomicalTwilightBoundaries) {
+  EXPECT_EQ(sunBand(79.99), SunBand::Day);
+  EXPECT_EQ(sunBand(90.0), SunBand::LowSun);
+  EXPECT_EQ(sunBand(90.01), SunBand::Twilight);
+  EXPECT_EQ(sunBand(96.0), SunBand::Twilight);
+  EXPECT_EQ(sunBand(96.01), SunBand::Nautical);
+  EXPECT_EQ(sunBand(102.0), SunBand::Nautical);
+  EXPECT_EQ(sunBand(102.01), SunBand::Astronomical);
+  EXPECT_EQ(sunBand(108.0), SunBand::Astronomical);
+  EXPECT_EQ(sunBand(108.01), SunBand::Night);
+  EXPECT_STREQ(sunBandName(SunBand::Nautical), "nautical");
+  EXPECT_STREQ(sunBandName(SunBand::Astronomical), "astronomical");
+  EXPECT_EQ(allSunBands().size(), 6u);
+}
+
+// Every twilight band of the standard set has suns enough for an RMS figure:
+// at least two suns (420 radiance queries) each, and the daylight queries
+// are the ones they were (their cached references stay valid).
+TEST(SunBands, StandardSetCoversEveryTwilightBandAndKeepsDaylightKeys) {
+  const QuerySet set = standardQuerySet(60000.0);
+  std::map<SunBand, size_t> per_band;
+  for (const RadianceQuery& q : set.radiance) ++per_band[sunBand(q.sun_zenith_deg)];
+  for (SunBand band : {SunBand::Twilight, SunBand::Nautical, SunBand::Astronomical}) {
+    EXPECT_GE(per_band[band], 420u) << sunBandName(band);
+  }
+  EXPECT_EQ(per_band[SunBand::Day] + per_band[SunBand::LowSun], 1470u);  // 7 suns x 210, as before
+  // Daylight keys are as they were; keys with the sun below the horizon name
+  // the sampling toward sunlit air, so no value of the older sampling is used.
+  EXPECT_EQ(radianceKey({0.0, 30.0, 60.0, 90.0, 0.0}), "r 0 30 60 90 0");
+  EXPECT_EQ(radianceKey({0.0, 90.0, 60.0, 90.0, 0.0}), "r 0 90 60 90 0");
+  EXPECT_EQ(irradianceKey({1000.0, 88.0}), "e 1000 88");
+  EXPECT_EQ(radianceKey({0.0, 100.0, 60.0, 90.0, 0.0}), "r 0 100 60 90 0 lit-air");
+  EXPECT_EQ(irradianceKey({1000.0, 92.0}), "e 1000 92 lit-air");
 }
 
 }  // namespace

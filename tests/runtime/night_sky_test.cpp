@@ -187,6 +187,60 @@ TEST(NightSky, NoStepAtTheLowestBakedSun) {
   }
 }
 
+// Through civil, nautical and astronomical twilight and on into the night
+// (sun zenith 90 to 120 deg in 0.01 deg steps, across the lowest baked sun
+// at 108 deg and the switch to the night continuation there), at several
+// views and cameras and every wavelength, no step in the sky: the change
+// from one 0.01 deg step to the next is at most kNeighbourStepRatio times
+// the larger change of the two steps beside it, plus float rounding. For a
+// smooth sky neighbouring changes differ by the share their slope changes
+// over 0.01 deg (a few percent, less than 2x even at the mu_s texels' kinks;
+// at a turning point the middle change is the smallest of the three); a
+// jump adds its whole size to one change alone and fails once it exceeds
+// twice the local change. The zenith and the horizon only darken as the
+// sun sinks (the lit air recedes from them; multiple scattering only falls).
+constexpr float kNeighbourStepRatio = 3.0f;
+
+TEST(NightSky, NoStepThroughTheTwilightsAndIntoTheNight) {
+  const Sky& sky = earth();
+  constexpr double kFirstSun_deg = 90.0, kStep_deg = 0.01;
+  constexpr int kSteps = 3000;  // to 120 deg
+  struct View {
+    double zenith_deg, azimuth_deg;
+    bool darkens;  // physics says non-increasing as the sun sinks
+  };
+  const std::vector<View> views = {{0.0, 0.0, true},    {90.0, 0.0, true},  {90.0, 90.0, true},
+                                   {90.0, 180.0, true}, {60.0, 0.0, false}, {60.0, 180.0, false}};
+  double worst_ratio = 0.0;
+  for (double altitude : {0.0, 1e4, 3e4}) {
+    const glm::dvec3 camera = cameraAt(sky, altitude);
+    for (const View& v : views) {
+      const glm::dvec3 view = direction(v.zenith_deg, v.azimuth_deg);
+      std::vector<Spectrum> sky_by_sun;
+      for (int i = 0; i <= kSteps; ++i) {
+        sky_by_sun.push_back(sky.skyRadiance(camera, view, direction(kFirstSun_deg + kStep_deg * i, 0.0)).radiance);
+      }
+      for (int c = 0; c < 3; ++c) {
+        auto change = [&](int i) { return std::abs(sky_by_sun[i + 1][c] - sky_by_sun[i][c]); };
+        for (int i = 1; i + 1 < kSteps; ++i) {
+          const float beside = std::max(change(i - 1), change(i + 1));
+          const float rounding = kRoundingShare * sky_by_sun[i][c] + kRoundingFloor;
+          const std::string where = fmt::format(
+              "camera {} m, view {} deg azimuth {}, channel {}, sun {:.2f} -> {:.2f} deg", altitude, v.zenith_deg,
+              v.azimuth_deg, c, kFirstSun_deg + kStep_deg * i, kFirstSun_deg + kStep_deg * (i + 1));
+          ASSERT_LE(change(i), kNeighbourStepRatio * beside + rounding)
+              << where << ": changes " << change(i - 1) << ", " << change(i) << ", " << change(i + 1);
+          if (beside > rounding) worst_ratio = std::max(worst_ratio, double(change(i) / beside));
+          if (v.darkens) {
+            ASSERT_LE(sky_by_sun[i + 1][c], sky_by_sun[i][c] * (1.0f + kRoundingShare) + kRoundingFloor) << where;
+          }
+        }
+      }
+    }
+  }
+  RecordProperty("worst_neighbour_step_ratio", std::to_string(worst_ratio));
+}
+
 TEST(NightSky, SunAtTheNadirGivesTheNightFloor) {
   const Sky& sky = earth();
   for (double altitude : kInsideAltitudes_m) {

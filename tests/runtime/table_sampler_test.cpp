@@ -35,6 +35,29 @@ TEST(TableSampler, GeometricBlendFollowsAnExponential) {
   EXPECT_FLOAT_EQ(near[0], 1.1f);
 }
 
+// No jump where the neighbours' ratio reaches kGeometricBlendRatio (or
+// kFullyGeometricBlendRatio): as the ratio of two nu slices changes with the
+// sun, a switch there made the sky step. Midway between 1 and b the linear
+// and geometric blends differ by (1 + b) / 2 - sqrt(b): 0.0253 at b = 1.5
+// (1.0 % of 1.25), so a switch jumps by that. With the smooth move from one to
+// the other, steps of 1e-4 in b change the blend by about their own size
+// times its slope (< 0.5) plus the share's change times that difference
+// (slope of the share at most 3 per unit ratio): below 1e-4 * (0.5 + 3 *
+// 0.06) = 7e-5, bounded here by 1e-4; a switch fails by 250x.
+TEST(TableSampler, GeometricBlendMovesSmoothlyFromLinearAsNeighboursDrawApart) {
+  float previous = blendGeometricWhereSteep(Spectrum(1.0f), Spectrum(1.4f), 0.5f)[0];
+  EXPECT_FLOAT_EQ(previous, 1.2f);  // within the linear range
+  for (int i = 1; i <= 8000; ++i) {
+    const float b = 1.4f + 1e-4f * static_cast<float>(i);
+    const float blended = blendGeometricWhereSteep(Spectrum(1.0f), Spectrum(b), 0.5f)[0];
+    ASSERT_LT(std::abs(blended - previous), 1e-4f) << "b " << b;
+    ASSERT_LE(blended, 0.5f * (1.0f + b) * (1.0f + 1e-6f)) << "between the geometric and linear blends, b " << b;
+    ASSERT_GE(blended, std::sqrt(b) * (1.0f - 1e-6f)) << "between the geometric and linear blends, b " << b;
+    previous = blended;
+  }
+  EXPECT_NEAR(previous, std::sqrt(2.2f), 1e-6f);  // wholly geometric from kFullyGeometricBlendRatio on
+}
+
 // The scattering density falls steeply with the sun below the horizon (tenfold
 // between sun texels in deep twilight); a lookup there blends its sun
 // texels geometrically, as radiance lookups do, and linearly by day. A linear
