@@ -101,7 +101,7 @@ expect_status 2 "is a colour bake" -- render "$work/colour.exr" -o "$work/colour
   --sun-zenith-deg 40 --size 8x8 --channels spectral
 [ -e "$work/colour_spectral.exr" ] && fail "a refused render left an image"
 expect_status 0 "" -- render "$work/colour.exr" -o "$work/colour.png" --altitude-m 10 --sun-zenith-deg 40 --size 8x8
-expect_status 2 "skybake validate compares wavelength channels" -- validate "$work/colour.exr"
+expect_status 2 "add --colour-config CONFIG.toml" -- validate "$work/colour.exr"
 
 printf 'altitude_m,sun_zenith_deg,view_zenith_deg\n0,30,0\n' >"$work/missing.csv"
 expect_status 2 "missing column 'view_azimuth_deg'" -- lookup radiance "$work/good.exr" --queries "$work/missing.csv" -o "$work/bad.csv"
@@ -199,6 +199,39 @@ expect_status 2 "sun.irradiance = [1.474, 1.8504, 1.91198]: a list of one value 
 grep -q "reference" "$work/stderr" && fail "validate computed a reference before refusing the colour config"
 sed -e "s|\.\./\.\./data_formats|$source_dir/data_formats|" -e 's/phase_g = 0.8/phase_g = 0.7/' "$spectral" >"$work/other_spectral.toml"
 expect_status 2 "is not the bake's" -- validate "$work/spectral.exr" --queries quick --reference-samples 64 --no-cache --colour-config "$work/other_spectral.toml"
+
+# A colour bake against the colour reference: its X, Y, Z channel by
+# channel and its colour table; refused with a config that is not its own or
+# not a colour bake's. compare --colour puts it beside its atmosphere on 3 and
+# 4 wavelengths.
+colour_config="$source_dir/tests/cli/small_earth_colour.toml"
+expect_status 0 "baked 'small_earth_colour'" -- bake "$colour_config" -o "$work/small_colour.exr"
+expect_status 0 "Y rms/p95/max %" -- validate "$work/small_colour.exr" --queries quick --reference-samples 64 --cache-dir "$colour_cache" --colour-config "$colour_config" --json "$work/cc.json" --details "$work/cc.csv"
+/usr/bin/python3 - "$work/cc.json" "$work/cc.csv" <<'PY' || fail "validate of a colour bake wrote no X, Y, Z figures"
+import csv, json, math, sys
+j = json.load(open(sys.argv[1]))
+assert j["channels"] == ["X", "Y", "Z"], j["channels"]
+rows = {(r["quantity"], r["band"]): r for r in j["errors"]}
+day = rows[("sky_radiance", "day")]
+assert all(c["count"] > 0 and math.isfinite(c["rms"]) for c in day["channels"]), day
+assert not any(r["quantity"] == "transmittance" for r in j["errors"]), "a colour reference has no transmittance"
+colour = {(r["quantity"], r["band"]): r for r in j["colour"]["errors"]}
+assert colour[("sky_radiance", "day")]["count"] > 0, colour
+header = next(csv.reader(open(sys.argv[2])))
+assert header.count("bake_Y") == 1 and "bake_400" not in header, header
+PY
+expect_status 2 "not a colour bake's config" -- validate "$work/small_colour.exr" --queries quick --reference-samples 64 --no-cache --colour-config "$spectral"
+sed -e "s|\.\./\.\./data_formats|$source_dir/data_formats|" -e 's/phase_g = 0.8/phase_g = 0.7/' "$colour_config" >"$work/other_colour.toml"
+expect_status 2 "is not the colour bake's" -- validate "$work/small_colour.exr" --queries quick --reference-samples 64 --no-cache --colour-config "$work/other_colour.toml"
+expect_status 0 "colour: 5 wavelengths to CIE XYZ" -- compare "$colour_config" --colour --queries quick --reference-samples 64 --cache-dir "$colour_cache" --json "$work/compare_colour.json"
+/usr/bin/python3 - "$work/compare_colour.json" <<'PY' || fail "compare --colour did not compare three bakes"
+import json, sys
+methods = json.load(open(sys.argv[1]))["methods"]
+assert [m["method"].split(" ")[0] for m in methods] == ["3", "4", "colour:"], [m["method"] for m in methods]
+assert all(m["precompute_seconds"] > 0 and m["memory_bytes"] > 0 for m in methods), methods
+PY
+expect_status 2 "--resolutions does not apply" -- compare "$colour_config" --colour --resolutions 1
+expect_status 2 "needs a colour bake's config" -- compare "$spectral" --colour
 
 # reference: two pieces into one cache, then validate finds every query there
 # and computes none; --estimate counts what the cache lacks.
