@@ -1,7 +1,5 @@
 #include "baker/bake/bake.h"
 
-#include <sys/resource.h>
-
 #include <chrono>
 #include <limits>
 #include <optional>
@@ -21,23 +19,12 @@
 
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/colour_bake.h"
+#include "baker/bake/process_usage.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 
 namespace skybake {
 namespace {
-
-double processCpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-double peakMemoryMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;  // Linux reports KiB
-}
 
 Spectrum meanOf(const std::vector<Spectrum>& texels) {
   SpectrumD sum(0.0);  // long sum: double

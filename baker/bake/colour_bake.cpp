@@ -1,7 +1,5 @@
 #include "baker/bake/colour_bake.h"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -12,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "baker/bake/bake_policy.h"
+#include "baker/bake/process_usage.h"
 #include "baker/stages/order_shapes.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
@@ -23,18 +22,6 @@ namespace skybake {
 namespace {
 
 using colour::ColourBakeWeights;
-
-double processCpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-double peakMemoryMiB() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;  // Linux reports KiB
-}
 
 // The colour-matching weights of a pass's lanes: mix[c][l] is what one unit
 // of lane l adds to channel c.
