@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark: the colour bake of data_formats/presets/earth_colour.toml (15
+# Benchmark: the colour bake of data_formats/presets/earth_colour.toml (16
 # wavelengths integrated into CIE X, Y, Z: four passes of the order loop)
 # against a 3-wavelength bake of the same atmosphere (the same config on
 # 440, 550 and 680 nm, stored as wavelengths), at the default sizes, timed
@@ -41,7 +41,7 @@ done
 median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 colour=$(median "${colour_times[@]}")
 three=$(median "${three_times[@]}")
-printf 'colour bake (15 wavelengths -> XYZ): median %.2f s of %s: %s\n' "$colour" "$repetitions" "${colour_times[*]}"
+printf 'colour bake (16 wavelengths -> XYZ): median %.2f s of %s: %s\n' "$colour" "$repetitions" "${colour_times[*]}"
 printf '3-wavelength bake:                   median %.2f s of %s: %s\n' "$three" "$repetitions" "${three_times[*]}"
 printf 'ratio: %.2f\n' "$(echo "$colour / $three" | bc -l)"
 echo "files: colour $(stat -c %s "$work/colour.exr") bytes, 3 wavelengths $(stat -c %s "$work/three.exr") bytes"

@@ -99,7 +99,7 @@ TEST(ColourConfig, CanonicalTextReadsBackToItself) {
 TEST(ColourConfig, ShippedColourPresetReads) {
   const std::filesystem::path presets = std::filesystem::path(SKYBAKE_SOURCE_DIR) / "data_formats" / "presets";
   const BakeConfig c = loadConfigFile(presets / "earth_colour.toml");
-  EXPECT_EQ(c.atmosphere.wavelengths_nm.size(), 15u);
+  EXPECT_EQ(c.atmosphere.wavelengths_nm.size(), 16u);
   EXPECT_EQ(c.atmosphere.wavelengths_nm.front(), 380.0);
   EXPECT_EQ(c.atmosphere.wavelengths_nm.back(), 780.0);
   EXPECT_EQ(c.colour_groups.size(), 4u);
