@@ -214,7 +214,8 @@ Command addValidateCommand(CLI::App& app) {
                   "Also report colour error (luminance, CIEDE2000) against a reference in CIE XYZ from 41 "
                   "wavelengths, 380 to 780 nm, the atmosphere there read from this config's spectra: the config "
                   "the bake was made from. Refused for a config with a per-wavelength key given as a list of "
-                  "differing values, or a spectrum that stops short of 380 or 780 nm (docs/COLOUR.md).");
+                  "differing values, or a spectrum that stops short of 380 or 780 nm (docs/COLOUR.md). Required for a "
+                  "colour bake (channels X, Y, Z), which is compared with this reference only.");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");
   addThreadsOption(*cmd, o->threads);
   return {cmd, [o] { runValidate(*o); }};
