@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/numerics/optical_depth_integral.h"
+#include "direct_single_scattering.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/eclipse_skylight.h"
 #include "runtime/moon_occluder.h"
@@ -146,35 +147,11 @@ TEST(Eclipse, SkylightFractionIntegratesTheNeighbourhood) {
   for (int c = 0; c < a.channelCount(); ++c) EXPECT_EQ(far[c], 1.0f);
 }
 
-// Single scattering with the moon by direct integration: 400 x 4 Gauss nodes
-// along the ray, optical depths by quadrature of the profiles, the visible
-// fraction of the sun above the horizon times the moon's at each node.
+// Single scattering with the moon by direct integration
+// (direct_single_scattering.h), 400 x 4 Gauss nodes along the ray.
 Spectrum directEclipsedSingle(const AtmosphereParameters& a, const glm::dvec3& camera, const glm::dvec3& view,
                               const glm::dvec3& sun, const Moon& moon) {
-  const AtmosphereMedia media(a);
-  const double r = glm::length(camera), mu = glm::dot(camera, view) / r, mu_s = glm::dot(camera, sun) / r;
-  const double nu = glm::dot(view, sun);
-  const bool ground = rayIntersectsSphere(r, mu, a.bottom_radius_m);
-  const double length =
-      ground ? distanceToInnerSphere(r, mu, a.bottom_radius_m) : distanceToOuterSphere(r, mu, a.top_radius_m);
-  const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a.mie_phase_g, nu);
-  SpectrumD sum(0.0);
-  forEachQuadratureNode(0.0, length, 400, [&](double t, double w) {
-    const double r_t = radiusAlongRay(r, mu, t);
-    const double mu_s_t = (r * mu_s + t * nu) / r_t;
-    const double visible =
-        sunDiskVisibleFraction(mu_s_t - tangentZenithCosine(r_t, a.bottom_radius_m),
-                               sunDiskHalfSizeAtHorizon(a.bottom_radius_m, r_t, a.sun_angular_radius_rad)) *
-        moon.visibleSunFraction(camera + view * t, sun, a.sun_angular_radius_rad);
-    if (visible <= 0.0) return;
-    const SpectrumD depth =
-        integrateOpticalDepthAlongRay(media, r, mu, t) + integrateOpticalDepthToTop(media, r_t, mu_s_t);
-    const double h = r_t - a.bottom_radius_m;
-    const SpectrumD scattering = SpectrumD(a.rayleigh_scattering) * (media.rayleighDensity(h) * p_r) +
-                                 SpectrumD(a.mie_scattering) * (media.mieDensity(h) * p_m);
-    sum += scattering * glm::exp(-depth) * (w * visible);
-  });
-  return Spectrum(sum * SpectrumD(a.sun_irradiance));
+  return directSingleScatteringFrom(a, camera, view, sun, 0.0, 400, moon);
 }
 
 TEST(Eclipse, SingleScatteringFollowsTheMoonsShadow) {

@@ -13,6 +13,7 @@
 #include "baker/numerics/optical_depth_integral.h"
 #include "batch_lookups.h"
 #include "data_formats/error.h"
+#include "direct_single_scattering.h"
 #include "runtime/ray_quadrature.h"
 #include "runtime/sky.h"
 
@@ -36,37 +37,11 @@ glm::dvec3 direction(double zenith_deg, double azimuth_deg) {
   return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
 }
 
-// Single-scattered radiance by direct integration, no tables: 200 x 4 Gauss
-// nodes along the view ray (to its end, or to `distance` when > 0), optical
-// depths by quadrature of the density profiles (validated against closed
-// forms in the baker tests), the part of the sun disk above each point's
-// horizon as the bake counts it (sunDiskVisibleFraction).
+// Single-scattered radiance by direct integration (direct_single_scattering.h),
+// 200 x 4 Gauss nodes, for a camera at `altitude` above the pole.
 Spectrum directSingleScattering(const AtmosphereParameters& a, double altitude, const glm::dvec3& view,
                                 const glm::dvec3& sun, double distance = 0.0) {
-  const AtmosphereMedia media(a);
-  const double r = a.bottom_radius_m + altitude;
-  const double mu = view.z, mu_s = sun.z, nu = glm::dot(view, sun);
-  const bool ground = rayIntersectsSphere(r, mu, a.bottom_radius_m);
-  const double length = distance > 0.0 ? distance
-                        : ground       ? distanceToInnerSphere(r, mu, a.bottom_radius_m)
-                                       : distanceToOuterSphere(r, mu, a.top_radius_m);
-  const double p_r = rayleighPhase(nu), p_m = cornetteShanksPhase(a.mie_phase_g, nu);
-  SpectrumD sum(0.0);
-  forEachQuadratureNode(0.0, length, 200, [&](double t, double w) {
-    const double r_t = radiusAlongRay(r, mu, t);
-    const double mu_s_t = (r * mu_s + t * nu) / r_t;
-    const double visible =
-        sunDiskVisibleFraction(mu_s_t - tangentZenithCosine(r_t, a.bottom_radius_m),
-                               sunDiskHalfSizeAtHorizon(a.bottom_radius_m, r_t, a.sun_angular_radius_rad));
-    if (visible <= 0.0) return;  // in the planet's shadow
-    const SpectrumD depth =
-        integrateOpticalDepthAlongRay(media, r, mu, t) + integrateOpticalDepthToTop(media, r_t, mu_s_t);
-    const double h = r_t - a.bottom_radius_m;
-    const SpectrumD scattering = SpectrumD(a.rayleigh_scattering) * (media.rayleighDensity(h) * p_r) +
-                                 SpectrumD(a.mie_scattering) * (media.mieDensity(h) * p_m);
-    sum += scattering * glm::exp(-depth) * (w * visible);
-  });
-  return Spectrum(sum * SpectrumD(a.sun_irradiance));
+  return directSingleScatteringFrom(a, {0.0, 0.0, a.bottom_radius_m + altitude}, view, sun, distance, 200);
 }
 
 // Zenith angle (deg) of the geometric horizon seen from radius r.
