@@ -194,9 +194,10 @@ void runColourCompare(const CompareOptions& o) {
       {"4 wavelengths (440, 520, 600, 680 nm)", configFileAtWavelengths(o.config_path, kFourCompareWavelengths_nm)});
   variants.push_back({fmt::format("colour: {} wavelengths to CIE XYZ", colour_config.atmosphere.wavelengths_nm.size()),
                       colour_config});
-  uint64_t kept_bytes = 0;
-  for (const Variant& v : variants) kept_bytes = std::max(kept_bytes, estimateBakeMemory(v.config).peak_bytes);
-  requireMemoryAvailable(fmt::format("{}: compare --colour (one bake at a time)", o.config_path), kept_bytes);
+  uint64_t largest_peak_bytes = 0;  // the bakes run one at a time
+  for (const Variant& v : variants)
+    largest_peak_bytes = std::max(largest_peak_bytes, estimateBakeMemory(v.config).peak_bytes);
+  requireMemoryAvailable(fmt::format("{}: compare --colour (one bake at a time)", o.config_path), largest_peak_bytes);
 
   const AtmosphereParameters& geometry = variants.front().config.atmosphere;
   const QuerySet all = querySetNamed(o.queries, geometry.top_radius_m - geometry.bottom_radius_m);
