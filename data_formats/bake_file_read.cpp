@@ -233,7 +233,8 @@ FirstPart findFirstPart(const Reader& in) {
 
 BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t file_bytes) {
   Reader in(stream, source);
-  // Every part carries the attributes; the optical-depth part is in every version.
+  // The optical-depth part is in every version and carries every attribute
+  // (the others carry all but the config and the report since version 4).
   const FirstPart first = findFirstPart(in);
   BakeFile bake;
   bake.format_version = first.version;

@@ -84,8 +84,13 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imat
   header.insert(kAttrTableSize, Imf::StringAttribute(part.size_text));
   insertContentsAttributes(bake.contents, header);
   header.insert(kAttrOrders, Imf::IntAttribute(bake.orders_computed));
-  header.insert(kAttrConfig, Imf::StringAttribute(bake.config_toml));
-  header.insert(kAttrBakeReport, Imf::StringAttribute(bake.report_json));
+  // The provenance (a few kilobytes of config and report) once, in the part
+  // every bake has and every reader takes them from: repeated in each part
+  // it made a colour bake's headers 50 KB.
+  if (part.name == std::string_view(kPartOpticalDepth)) {
+    header.insert(kAttrConfig, Imf::StringAttribute(bake.config_toml));
+    header.insert(kAttrBakeReport, Imf::StringAttribute(bake.report_json));
+  }
   return header;
 }
 

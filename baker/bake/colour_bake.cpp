@@ -63,7 +63,7 @@ Texture zeroedLike(const Texture& t) {
 void addPassReport(const BakeReport& pass, const std::array<Spectrum, kMaxChannels>& mix, size_t index,
                    const std::vector<double>& pass_wavelengths_nm, BakeReport& report) {
   // One entry per stage and order, its seconds summed over the passes: the
-  // report (in every part's header) stays the size of one pass's.
+  // report (in the file header) stays the size of one pass's.
   for (const StageTiming& t : pass.stages) {
     auto same = [&](const StageTiming& r) { return r.stage == t.stage && r.order == t.order; };
     const auto found = std::find_if(report.stages.begin(), report.stages.end(), same);

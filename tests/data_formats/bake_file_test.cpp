@@ -5,7 +5,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfMultiPartInputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
 #include "data_formats/bake_file.h"
+#include "data_formats/bake_file_attributes.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 
@@ -129,6 +134,26 @@ TEST_F(BakeFileTest, HalfPrecisionKeepsTheDensityInFloat) {
   }
   // The other parts are half: the same values round to 0 there.
   EXPECT_EQ(read.tables.single_rayleigh.texels[0][0], 0.0f);
+}
+
+// The config and the report (kilobytes each) are stored once, in the part
+// every bake has; every other part still carries the rest of the header.
+TEST_F(BakeFileTest, ProvenanceIsStoredOnceInTheOpticalDepthPart) {
+  const BakeFile written = syntheticBake();
+  const fs::path path = dir / "provenance.exr";
+  writeBakeFile(path, written);
+  Imf::MultiPartInputFile file(path.c_str());
+  ASSERT_EQ(file.parts(), 6);
+  for (int p = 0; p < file.parts(); ++p) {
+    const Imf::Header& h = file.header(p);
+    const bool first = h.name() == bake_file::kPartOpticalDepth;
+    EXPECT_EQ(h.findTypedAttribute<Imf::StringAttribute>(bake_file::kAttrConfig) != nullptr, first) << h.name();
+    EXPECT_EQ(h.findTypedAttribute<Imf::StringAttribute>(bake_file::kAttrBakeReport) != nullptr, first) << h.name();
+    EXPECT_NE(h.findTypedAttribute<Imf::StringAttribute>(bake_file::kAttrWavelengths), nullptr) << h.name();
+  }
+  const BakeFile read = readBakeFile(path);
+  EXPECT_EQ(read.config_toml, written.config_toml);
+  EXPECT_EQ(read.report_json, written.report_json);
 }
 
 TEST_F(BakeFileTest, FailedWriteLeavesExistingFileIntactAndNoTemporary) {
