@@ -19,6 +19,7 @@
 
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/colour_bake.h"
+#include "baker/bake/order_convergence.h"
 #include "baker/bake/process_usage.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
@@ -32,20 +33,11 @@ Spectrum meanOf(const std::vector<Spectrum>& texels) {
   return Spectrum(sum / static_cast<double>(std::max<size_t>(texels.size(), 1)));
 }
 
-// Mean single-scattering radiance over all texels, phase functions applied.
-Spectrum meanSingleScatteringRadiance(const TableSampler& sampler, const Texture4D& rayleigh, const Texture4D& mie,
-                                      double g) {
-  const ScatteringSizes& s = sampler.scatteringSizes();
+// The mean over all texels from the slices' means (every slice has as many texels).
+Spectrum meanOfSlices(const std::vector<SpectrumD>& slice_means) {
   SpectrumD sum(0.0);
-  for (int i_r = 0; i_r < s.r; ++i_r)
-    for (int i_mu = 0; i_mu < s.mu; ++i_mu)
-      for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
-        for (int i_nu = 0; i_nu < s.nu; ++i_nu) {
-          const double nu = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, i_mu_s, i_nu).nu;
-          sum += SpectrumD(rayleigh.at(i_r, i_mu, i_mu_s, i_nu)) * rayleighPhase(nu) +
-                 SpectrumD(mie.at(i_r, i_mu, i_mu_s, i_nu)) * cornetteShanksPhase(g, nu);
-        }
-  return Spectrum(sum / static_cast<double>(rayleigh.texels.size()));
+  for (const SpectrumD& m : slice_means) sum += m;
+  return Spectrum(sum / static_cast<double>(std::max<size_t>(slice_means.size(), 1)));
 }
 
 void addScaled(std::vector<Spectrum>& sum, const std::vector<Spectrum>& delta, const Spectrum& scale) {
@@ -53,7 +45,8 @@ void addScaled(std::vector<Spectrum>& sum, const std::vector<Spectrum>& delta, c
 }
 
 // The last order's mean radiance over the sum of all orders so far, worst
-// channel: how much the last order still changed the sky. A channel whose
+// channel: how much the last order still changed the sky on average (the
+// decision takes the worst slice instead, OrderConvergence). A channel whose
 // total is zero (nothing scatters) has converged trivially; a non-finite one
 // never has (infinity: automatic orders then run to the cap and say so).
 float lastOrderShare(const std::vector<OrderContribution>& orders, int channels) {
@@ -206,9 +199,13 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                                          [&] { return computeDirectIrradianceTable(ctx, optical_depth); });
   stage.run("single_scattering", 1, rows_4d,
             [&] { computeSingleScatteringTables(ctx, optical_depth, tables.single_rayleigh, tables.single_mie); });
-  report.orders.push_back(
-      {1, meanSingleScatteringRadiance(sampler, tables.single_rayleigh, tables.single_mie, a.mie_phase_g),
-       Spectrum(0.0f)});
+  OrderConvergence convergence(sampler, a.channelCount());
+  {
+    const std::vector<SpectrumD> single =
+        sliceMeanSingleScatteringRadiance(sampler, tables.single_rayleigh, tables.single_mie, a.mie_phase_g);
+    convergence.add(single);
+    report.orders.push_back({1, meanOfSlices(single), Spectrum(0.0f)});
+  }
 
   // Orders 2..N, each texel divided by the multiple-scattering shape at its
   // r and nu (runtime/multiple_scattering_phase.h): while iterating, each
@@ -270,10 +267,17 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     });
     addReshaped(sampler, TexelLayout::Scattering, delta_multiple, order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_scattering);
-    report.orders.push_back({order, meanShapedRadiance(sampler, delta_multiple, order_shape), Spectrum(0.0f)});
+    const std::vector<SpectrumD> order_slices = sliceMeanShapedRadiance(sampler, delta_multiple, order_shape);
+    convergence.add(order_slices);
+    report.orders.push_back({order, meanOfSlices(order_slices), Spectrum(0.0f)});
     previous_shape = order_shape;
-    report.orders_decision.last_order_share = lastOrderShare(report.orders, a.channelCount());
-    if (settings.auto_orders && report.orders_decision.last_order_share < settings.order_tolerance) {
+    OrdersDecision& decision = report.orders_decision;
+    decision.mean_last_order_share = lastOrderShare(report.orders, a.channelCount());
+    const SliceShare worst = convergence.worstLastShare();
+    decision.last_order_share = static_cast<float>(worst.share);
+    decision.worst_altitude_m = worst.altitude_m;
+    decision.worst_sun_zenith_deg = worst.sun_zenith_deg;
+    if (settings.auto_orders && decision.last_order_share < settings.order_tolerance) {
       report.orders_decision.converged = true;
       break;
     }

@@ -39,7 +39,10 @@ std::string BakeReport::toJson(bool with_run_facts) const {
   j["orders"] = orders_json;
   nlohmann::ordered_json decision = {{"orders_used", static_cast<int>(orders.size())},
                                      {"mode", orders_decision.automatic ? "auto" : "fixed"},
-                                     {"last_order_share", orders_decision.last_order_share}};
+                                     {"last_order_share", orders_decision.last_order_share},
+                                     {"worst_slice_altitude_m", orders_decision.worst_altitude_m},
+                                     {"worst_slice_sun_zenith_deg", orders_decision.worst_sun_zenith_deg},
+                                     {"mean_last_order_share", orders_decision.mean_last_order_share}};
   if (orders_decision.automatic) {
     decision["tolerance"] = orders_decision.tolerance;
     decision["max_orders"] = orders_decision.cap;

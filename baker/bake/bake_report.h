@@ -40,10 +40,17 @@ struct TailEstimate {
 // until the last order's share of the total fell below the tolerance.
 struct OrdersDecision {
   bool automatic = false;
-  bool converged = false;      // automatic only: the tolerance was met
-  double tolerance = 0.0;      // automatic only
-  int cap = 0;                 // automatic only: bake.max_orders
-  float last_order_share = 0;  // the last order's share of the total, worst channel
+  bool converged = false;  // automatic only: the tolerance was met
+  double tolerance = 0.0;  // automatic only
+  int cap = 0;             // automatic only: bake.max_orders
+  // The last order's share of the total, worst channel, in the (altitude,
+  // sun) slice of the scattering table where it is largest (what automatic
+  // orders compare with the tolerance), and where that slice is.
+  float last_order_share = 0;
+  double worst_altitude_m = 0.0;
+  double worst_sun_zenith_deg = 0.0;
+  // The same share of the whole table's mean radiance (daylight dominates it).
+  float mean_last_order_share = 0;
 };
 
 struct BakeReport {

@@ -83,7 +83,12 @@ void addPassReport(const BakeReport& pass, const std::array<Spectrum, kMaxChanne
   d.tolerance = pass.orders_decision.tolerance;
   d.cap = pass.orders_decision.cap;
   d.converged = (index == 0 || d.converged) && pass.orders_decision.converged;
-  d.last_order_share = std::max(d.last_order_share, pass.orders_decision.last_order_share);
+  if (index == 0 || pass.orders_decision.last_order_share > d.last_order_share) {
+    d.last_order_share = pass.orders_decision.last_order_share;
+    d.worst_altitude_m = pass.orders_decision.worst_altitude_m;
+    d.worst_sun_zenith_deg = pass.orders_decision.worst_sun_zenith_deg;
+  }
+  d.mean_last_order_share = std::max(d.mean_last_order_share, pass.orders_decision.mean_last_order_share);
   report.tail.applied = (index == 0 || report.tail.applied) && pass.tail.applied;
   std::string wavelengths;
   for (double nm : pass_wavelengths_nm) wavelengths += fmt::format("{}{}", wavelengths.empty() ? "" : " ", nm);

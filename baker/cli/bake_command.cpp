@@ -190,11 +190,15 @@ void runBake(const BakeOptions& o) {
     writeReportSidecar(output, sidecar);
   });
   const OrdersDecision& decision = bake.report.orders_decision;
+  // Where the last order still adds most (the slowest-converging altitude
+  // and sun): what the orders leave out, said for every bake.
+  const std::string worst_slice =
+      fmt::format("the last adds {:.2g} of the light at {:.0f} m, sun zenith {:.1f} deg", decision.last_order_share,
+                  decision.worst_altitude_m, decision.worst_sun_zenith_deg);
   const std::string orders_note =
-      !decision.automatic  ? ""
-      : decision.converged ? fmt::format(", automatic: last order {:.2g} of the total", decision.last_order_share)
-                           : fmt::format(", automatic: NOT converged, last order {:.2g} of the total at the cap of {}",
-                                         decision.last_order_share, decision.cap);
+      !decision.automatic  ? "; " + worst_slice
+      : decision.converged ? ", automatic; " + worst_slice
+                           : fmt::format(", automatic, NOT converged at the cap of {}; {}", decision.cap, worst_slice);
   fmt::print(stderr, "skybake: baked '{}' ({} orders{}) into {} ({:.1f} MiB) in {:.2f} s on {} threads: {}\n",
              terminalSafe(config.name), bake.file.orders_computed, orders_note, o.output_path,
              bytes / (1024.0 * 1024.0), bake.report.wall_seconds, bake.report.threads, stageSummary(bake.report));

@@ -43,13 +43,17 @@ std::vector<SpectrumD> peakWeightsOfRows(const TableSampler& sampler, const Mult
 
 }  // namespace
 
-Spectrum meanShapedRadiance(const TableSampler& sampler, const Texture4D& table, const MultipleScatteringPhase& shape) {
+std::vector<SpectrumD> sliceMeanShapedRadiance(const TableSampler& sampler, const Texture4D& table,
+                                               const MultipleScatteringPhase& shape) {
+  const ScatteringSizes& s = sampler.scatteringSizes();
   const std::vector<SpectrumD> weight = peakWeightsOfRows(sampler, shape);
-  SpectrumD sum(0.0);  // long sum: double
+  std::vector<SpectrumD> sum(static_cast<size_t>(s.r) * s.mu_s, SpectrumD(0.0));  // long sums: double
   forEachTexel(sampler, TexelLayout::Scattering, [&](int i_r, int i_mu, int i_mu_s, int i_nu, double nu) {
-    sum += SpectrumD(table.at(i_r, i_mu, i_mu_s, i_nu) * shape(weight[i_r], nu));
+    sum[static_cast<size_t>(i_r) * s.mu_s + i_mu_s] +=
+        SpectrumD(table.at(i_r, i_mu, i_mu_s, i_nu) * shape(weight[i_r], nu));
   });
-  return Spectrum(sum / static_cast<double>(std::max<size_t>(table.texels.size(), 1)));
+  for (SpectrumD& v : sum) v /= static_cast<double>(s.mu) * s.nu;
+  return sum;
 }
 
 void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,

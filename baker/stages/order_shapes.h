@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "baker/stages/stage_context.h"
 #include "data_formats/textures.h"
@@ -16,9 +17,11 @@ namespace skybake {
 // the horizon split) or the stored density's (mu linear in [-1, 1]).
 enum class TexelLayout { Scattering, Density };
 
-// Mean radiance over all texels of a table stored divided by `shape`, the
-// shape multiplied back (W m^-2 sr^-1 nm^-1).
-Spectrum meanShapedRadiance(const TableSampler& sampler, const Texture4D& table, const MultipleScatteringPhase& shape);
+// Mean radiance over each (r, mu_s) slice (every mu and nu) of a table
+// stored divided by `shape`, the shape multiplied back (W m^-2 sr^-1 nm^-1):
+// entry i_r * mu_s_size + i_mu_s.
+std::vector<SpectrumD> sliceMeanShapedRadiance(const TableSampler& sampler, const Texture4D& table,
+                                               const MultipleScatteringPhase& shape);
 
 // sum += scale * delta * from / to at every texel: `delta` is divided by the
 // shape `from`, `sum` by `to`.
