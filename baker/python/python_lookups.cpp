@@ -165,8 +165,20 @@ void registerLookups(py::module_& m) {
     return py::make_tuple(std::array<double, 3>{moon.centre_m.x, moon.centre_m.y, moon.centre_m.z}, moon.radius_m);
   });
   py::class_<Sky>(m, "Sky")
-      .def(py::init([](const std::string& path) { return Sky::load(path); }), py::arg("path"),
-           py::call_guard<py::gil_scoped_release>())
+      .def(py::init([](const std::string& path) {
+             Sky sky = Sky::load(path);
+             // Its lookups would need N-channel arrays through every lane
+             // group; the module returns one Spectrum's lanes per row.
+             if (sky.laneGroupCount() > 1) {
+               throw Error(ErrorKind::BadInput,
+                           path + ": a spectral bake of " + std::to_string(sky.channelCount()) +
+                               " wavelengths: skybake.Sky reads bakes of at most 4 wavelength channels (or X, Y, "
+                               "Z); use skybake lookup or the C++ runtime's channel lookups, or bake the "
+                               "wavelengths 4 at a time");
+             }
+             return sky;
+           }),
+           py::arg("path"), py::call_guard<py::gil_scoped_release>())
       .def("_sky_radiance", [](const Sky& sky, const Rows& camera, const Rows& view, const Rows& sun,
                                const Rows& shadow) { return radianceRows(sky, camera, view, sun, shadow, false); })
       .def("_sky_radiance_eclipse",
