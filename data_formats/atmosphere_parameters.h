@@ -40,6 +40,13 @@ enum class ChannelKind {
   // the CIE 1931 colour-matching functions over nm, so radiance in
   // W m^-2 sr^-1 and 683 * Y is luminance in cd m^-2.
   CieXyz,
+  // One channel per wavelength, 1 to kMaxSpectralWavelengths, stored in lane
+  // groups of at most kMaxChannels (BakeConfig::colour_groups,
+  // BakeContents::lane_groups): each group an ordinary atmosphere of those
+  // wavelengths, baked as one pass. The file's channels are wavelengths
+  // (FORMAT.md, "Spectral bakes"); a file of at most kMaxChannels of them
+  // reads back as Wavelengths.
+  Spectral,
 };
 
 // The most wavelengths a colour bake integrates: 64 covers 360 to 830 nm
@@ -47,6 +54,10 @@ enum class ChannelKind {
 // CalcMySky 16), while the bake's time (one pass per 4 wavelengths) stays
 // bounded: 16 passes of a 3-wavelength bake.
 inline constexpr int kMaxColourWavelengths = 64;
+
+// The most wavelengths a spectral bake (channels.store = "spectral") stores:
+// the colour bake's limit, since both run one pass per 4 wavelengths.
+inline constexpr int kMaxSpectralWavelengths = kMaxColourWavelengths;
 
 // The XYZ channels of a colour bake.
 inline constexpr int kCieXyzChannels = 3;
@@ -56,6 +67,9 @@ struct AtmosphereParameters {
   // order. CieXyz: the wavelengths integrated into X, Y, Z (1 to
   // kMaxColourWavelengths); the per-channel quantities below then hold
   // effective X, Y, Z values (runtime/colour/colour_bake_atmosphere.h).
+  // Spectral: every channel's wavelength (1 to kMaxSpectralWavelengths); the
+  // per-channel quantities below are 0 (laneCount() is 0), each wavelength's
+  // values live in its lane group.
   std::vector<double> wavelengths_nm;
   ChannelKind channel_kind = ChannelKind::Wavelengths;
 
@@ -81,7 +95,12 @@ struct AtmosphereParameters {
   int channelCount() const {
     return channel_kind == ChannelKind::CieXyz ? kCieXyzChannels : static_cast<int>(wavelengths_nm.size());
   }
+  // The lanes of the Spectrum quantities below that hold values: the
+  // channels, except for a spectral atmosphere, whose values are its lane
+  // groups' (none here).
+  int laneCount() const { return channel_kind == ChannelKind::Spectral ? 0 : channelCount(); }
   bool storesCieXyz() const { return channel_kind == ChannelKind::CieXyz; }
+  bool storesLaneGroups() const { return channel_kind == ChannelKind::Spectral; }
   // Cosine of sun_max_zenith_deg: the mu_s at the low end of the scattering domain.
   double sunMuSMin() const { return std::cos(radiansFromDegrees(sun_max_zenith_deg)); }
   bool operator==(const AtmosphereParameters&) const = default;
@@ -167,9 +186,9 @@ struct BakeConfig {
   // shape of the atmosphere as parsed; its X, Y, Z quantities are filled by
   // settledBakeConfig from the groups below (baker/bake/bake_policy.h).
   AtmosphereParameters atmosphere;
-  // A colour bake's wavelengths in groups of at most kMaxChannels, in the
-  // order of atmosphere.wavelengths_nm, each an ordinary per-wavelength
-  // atmosphere that the bake runs as one pass; empty otherwise.
+  // A colour or spectral bake's wavelengths in groups of at most
+  // kMaxChannels, in the order of atmosphere.wavelengths_nm, each an ordinary
+  // per-wavelength atmosphere that the bake runs as one pass; empty otherwise.
   std::vector<AtmosphereParameters> colour_groups;
   TextureSizes sizes;
   BakeSettings bake;

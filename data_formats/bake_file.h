@@ -62,6 +62,11 @@ struct BakeContents {
   SceneOutputs outputs;     // which optional parts the bake holds
   StoragePrecision precision = StoragePrecision::Float;
   bool combined_single_mie = false;  // bake.combined_single_mie as the bake applied it
+  // A spectral bake of more than kMaxChannels wavelengths (atmosphere
+  // Spectral, FORMAT.md "Spectral bakes"): its wavelengths in groups of at
+  // most kMaxChannels, in channel order, each an ordinary atmosphere of
+  // those wavelengths. Empty otherwise.
+  std::vector<AtmosphereParameters> lane_groups;
   bool operator==(const BakeContents&) const = default;
 };
 
@@ -85,11 +90,14 @@ void forEachTable(Tables& t, Fn&& fn) {
 // scattering, where it would hold nothing but zeros (a quarter of the file).
 // Readers then leave BakeTables::single_mie without texels.
 inline bool bakeStoresSingleMie(const AtmosphereParameters& a) {
-  for (int c = 0; c < a.channelCount(); ++c) {
+  for (int c = 0; c < a.laneCount(); ++c) {
     if (a.mie_scattering[c] > 0.0f) return true;
   }
   return false;
 }
+// The same for a file: a spectral bake stores the part when any of its lane
+// groups has Mie scattering (the others' channels hold zeros there).
+bool bakeStoresSingleMie(const BakeContents& contents);
 
 // That channel's name: "mie_" and the first wavelength's channel name.
 std::string combinedSingleMieChannelName(const AtmosphereParameters& a);
@@ -130,8 +138,24 @@ struct BakeFile {
   // written at kBakeFormatVersion.
   int format_version = kBakeFormatVersion;
   std::string report_json;  // the bake report, JSON text (opaque here)
+  // Every table, lanes in channel order. Empty for a spectral bake of more
+  // than kMaxChannels wavelengths, whose tables are lane_group_tables.
   BakeTables tables;
+  // A spectral bake's tables per lane group (contents.lane_groups), each
+  // what an ordinary bake of that group's wavelengths holds: multiple
+  // scattering divided by the group's own shape. Empty otherwise.
+  std::vector<BakeTables> lane_group_tables;
 };
+
+// The number of lane groups of a bake: 1, or a spectral bake's groups.
+inline size_t laneGroupCount(const BakeContents& contents) {
+  return contents.lane_groups.empty() ? 1 : contents.lane_groups.size();
+}
+// Lane group g of a spectral bake (0 of any other) as the ordinary bake of
+// its wavelengths: the contents an ordinary bake of that atmosphere states,
+// the group's tables, and the file's config, orders and report. `spectral`
+// is left without that group's tables.
+BakeFile takeLaneGroup(BakeFile& spectral, size_t g);
 
 // Writes atomically: a temporary file beside `path`, renamed into place once
 // complete. On failure no file is left behind and an existing `path` is intact.

@@ -1,5 +1,6 @@
 #include "bake_file_contents.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -64,11 +65,31 @@ std::vector<double> profileNumbers(const DensityProfile& profile) {
   return numbers;
 }
 
-std::vector<float> spectrumValues(const Spectrum& s, int channels) {
-  std::vector<float> values(static_cast<size_t>(channels));
-  for (int c = 0; c < channels; ++c) values[c] = s[c];
+// A per-channel quantity's values in channel order: the atmosphere's lanes,
+// or a spectral bake's groups' lanes one after the other.
+std::vector<float> spectrumValues(const BakeContents& contents, Spectrum AtmosphereParameters::*quantity) {
+  std::vector<float> values;
+  auto add = [&](const AtmosphereParameters& a) {
+    for (int c = 0; c < a.laneCount(); ++c) values.push_back((a.*quantity)[c]);
+  };
+  if (contents.lane_groups.empty()) add(contents.atmosphere);
+  for (const AtmosphereParameters& g : contents.lane_groups) add(g);
   return values;
 }
+
+// The per-channel quantities a file states, each one attribute.
+struct SpectrumAttribute {
+  const char* name;
+  Spectrum AtmosphereParameters::*quantity;
+};
+constexpr SpectrumAttribute kSpectrumAttributes[] = {
+    {kAttrGroundAlbedo, &AtmosphereParameters::ground_albedo},
+    {kAttrSunIrradiance, &AtmosphereParameters::sun_irradiance},
+    {kAttrRayleighScattering, &AtmosphereParameters::rayleigh_scattering},
+    {kAttrMieScattering, &AtmosphereParameters::mie_scattering},
+    {kAttrMieExtinction, &AtmosphereParameters::mie_extinction},
+    {kAttrAbsorptionExtinction, &AtmosphereParameters::absorption_extinction},
+};
 
 std::string outputsText(const SceneOutputs& outputs) {
   std::string text = "sky_radiance";
@@ -102,13 +123,15 @@ class AttributeReader {
     }
     return out;
   }
-  Spectrum spectrum(const char* name, int channels) const {
+  // Channels first .. first + count - 1 of a per-channel attribute of `channels` values.
+  Spectrum spectrum(const char* name, int channels, int first = 0, int count = -1) const {
     const std::vector<float>& values = value<Imf::FloatVectorAttribute>(name);
     if (static_cast<int>(values.size()) != channels) {
       failWith(fmt::format("attribute {} has {} values for {} channels", name, values.size(), channels));
     }
+    if (count < 0) count = channels;
     Spectrum s(0.0f);
-    for (int c = 0; c < channels; ++c) s[c] = values[c];
+    for (int c = 0; c < count; ++c) s[c] = values[first + c];
     return s;
   }
   DensityProfile profile(const char* name) const {
@@ -137,22 +160,19 @@ class AttributeReader {
 
 void insertContentsAttributes(const BakeContents& contents, Imf::Header& header) {
   const AtmosphereParameters& a = contents.atmosphere;
-  const int n = a.channelCount();
   header.insert(kAttrWavelengths, Imf::StringAttribute(numberListText(a.wavelengths_nm)));
+  // A spectral bake's channels are wavelengths like any other's (FORMAT.md).
   header.insert(kAttrChannels, Imf::StringAttribute(a.storesCieXyz() ? "cie_xyz" : "wavelengths"));
   header.insert(kAttrBottomRadius, Imf::DoubleAttribute(a.bottom_radius_m));
   header.insert(kAttrTopRadius, Imf::DoubleAttribute(a.top_radius_m));
-  header.insert(kAttrGroundAlbedo, Imf::FloatVectorAttribute(spectrumValues(a.ground_albedo, n)));
-  header.insert(kAttrSunIrradiance, Imf::FloatVectorAttribute(spectrumValues(a.sun_irradiance, n)));
+  for (const SpectrumAttribute& attribute : kSpectrumAttributes) {
+    header.insert(attribute.name, Imf::FloatVectorAttribute(spectrumValues(contents, attribute.quantity)));
+  }
   header.insert(kAttrSunAngularRadius, Imf::DoubleAttribute(a.sun_angular_radius_rad));
   header.insert(kAttrSunMaxZenith, Imf::DoubleAttribute(a.sun_max_zenith_deg));
-  header.insert(kAttrRayleighScattering, Imf::FloatVectorAttribute(spectrumValues(a.rayleigh_scattering, n)));
   header.insert(kAttrRayleighDensity, Imf::StringAttribute(numberListText(profileNumbers(a.rayleigh_density))));
-  header.insert(kAttrMieScattering, Imf::FloatVectorAttribute(spectrumValues(a.mie_scattering, n)));
-  header.insert(kAttrMieExtinction, Imf::FloatVectorAttribute(spectrumValues(a.mie_extinction, n)));
   header.insert(kAttrMiePhaseG, Imf::DoubleAttribute(a.mie_phase_g));
   header.insert(kAttrMieDensity, Imf::StringAttribute(numberListText(profileNumbers(a.mie_density))));
-  header.insert(kAttrAbsorptionExtinction, Imf::FloatVectorAttribute(spectrumValues(a.absorption_extinction, n)));
   header.insert(kAttrAbsorptionDensity, Imf::StringAttribute(numberListText(profileNumbers(a.absorption_density))));
 
   const TextureSizes& s = contents.sizes;
@@ -191,26 +211,37 @@ BakeContents readContentsAttributes(const Imf::Header& header, int format_versio
     }
   }
   const int wavelengths = static_cast<int>(a.wavelengths_nm.size());
-  const int max_wavelengths = a.storesCieXyz() ? kMaxColourWavelengths : kMaxChannels;
+  // Wavelength channels beyond one Spectrum's lanes are a spectral bake's.
+  const int max_wavelengths = a.storesCieXyz() ? kMaxColourWavelengths : kMaxSpectralWavelengths;
   if (wavelengths < 1 || wavelengths > max_wavelengths) {
     in.failWith(fmt::format("attribute {} lists {} wavelengths; a {} bake has 1 to {}", kAttrWavelengths, wavelengths,
                             a.storesCieXyz() ? "colour" : "wavelength", max_wavelengths));
   }
+  if (!a.storesCieXyz() && wavelengths > kMaxChannels) a.channel_kind = ChannelKind::Spectral;
   const int n = a.channelCount();
   a.bottom_radius_m = in.real(kAttrBottomRadius);
   a.top_radius_m = in.real(kAttrTopRadius);
-  a.ground_albedo = in.spectrum(kAttrGroundAlbedo, n);
-  a.sun_irradiance = in.spectrum(kAttrSunIrradiance, n);
   a.sun_angular_radius_rad = in.real(kAttrSunAngularRadius);
   a.sun_max_zenith_deg = in.real(kAttrSunMaxZenith);
-  a.rayleigh_scattering = in.spectrum(kAttrRayleighScattering, n);
   a.rayleigh_density = in.profile(kAttrRayleighDensity);
-  a.mie_scattering = in.spectrum(kAttrMieScattering, n);
-  a.mie_extinction = in.spectrum(kAttrMieExtinction, n);
   a.mie_phase_g = in.real(kAttrMiePhaseG);
   a.mie_density = in.profile(kAttrMieDensity);
-  a.absorption_extinction = in.spectrum(kAttrAbsorptionExtinction, n);
   a.absorption_density = in.profile(kAttrAbsorptionDensity);
+  if (a.storesLaneGroups()) {
+    for (int first = 0; first < n; first += kMaxChannels) {
+      const int count = std::min(kMaxChannels, n - first);
+      AtmosphereParameters g = a;
+      g.channel_kind = ChannelKind::Wavelengths;
+      g.wavelengths_nm.assign(a.wavelengths_nm.begin() + first, a.wavelengths_nm.begin() + first + count);
+      for (const SpectrumAttribute& attribute : kSpectrumAttributes) {
+        g.*attribute.quantity = in.spectrum(attribute.name, n, first, count);
+      }
+      c.lane_groups.push_back(std::move(g));
+    }
+  } else {
+    for (const SpectrumAttribute& attribute : kSpectrumAttributes)
+      a.*attribute.quantity = in.spectrum(attribute.name, n);
+  }
 
   TextureSizes& s = c.sizes;
   const Imath::V2i optical_depth = in.size(kAttrOpticalDepthSize);
@@ -268,8 +299,9 @@ void validateContents(const BakeContents& contents, const std::string& source) {
   config.bake.precision = contents.precision;
   config.bake.combined_single_mie = contents.combined_single_mie;
   config.scene_ranges.views_below_horizon = contents.domain.scattering_ground_views;
+  config.colour_groups = contents.lane_groups;
   validateConfig(config, source);
-  if (contents.combined_single_mie && !bakeStoresSingleMie(contents.atmosphere)) {
+  if (contents.combined_single_mie && !bakeStoresSingleMie(contents)) {
     throwBadInput(fmt::format("{}: {} = 1 but no channel has Mie scattering", source, kAttrCombinedSingleMie));
   }
   const AtmosphereDomain& d = contents.domain;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <new>
 #include <span>
@@ -125,29 +126,37 @@ class Reader {
     return layout;
   }
 
-  // Reads a checked part into `texels` (width * height texels, channels in
-  // the config's wavelength order, unused lanes 0).
+  // Reads a checked part into each lane group's `texels` (width * height
+  // texels, the group's channels in its wavelength order, unused lanes 0):
+  // one group for an ordinary bake, each of a spectral one's.
   // The extra channel, if the part has one, goes to the first lane of
   // `extra_texels` (the others 0).
-  void readPart(const PartLayout& part, const AtmosphereParameters& a, std::vector<Spectrum>& texels,
+  struct LaneGroupTexels {
+    const AtmosphereParameters* atmosphere;
+    std::vector<Spectrum>* texels;
+  };
+  void readPart(const PartLayout& part, const std::vector<LaneGroupTexels>& groups,
                 std::vector<Spectrum>* extra_texels = nullptr) {
-    texels.assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
     Imf::FrameBuffer frame;
-    char* base = reinterpret_cast<char*>(texels.data());
-    const std::vector<std::string> channel_names = channelNames(a);
-    for (int c = 0; c < a.channelCount(); ++c) {
-      frame.insert(channel_names[c],
-                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum), sizeof(Spectrum) * part.width));
+    for (const LaneGroupTexels& g : groups) {
+      g.texels->assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
+      char* base = reinterpret_cast<char*>(g.texels->data());
+      const std::vector<std::string> channel_names = channelNames(*g.atmosphere);
+      for (size_t c = 0; c < channel_names.size(); ++c) {
+        frame.insert(channel_names[c],
+                     Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(Spectrum), sizeof(Spectrum) * part.width));
+      }
     }
     if (!part.extra_channel.empty()) {
-      extra_texels->assign(texels.size(), Spectrum(0.0f));
+      extra_texels->assign(groups.front().texels->size(), Spectrum(0.0f));
       frame.insert(part.extra_channel, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(extra_texels->data()),
                                                   sizeof(Spectrum), sizeof(Spectrum) * part.width));
     }
     Imf::InputPart in(file_, part.index);
     in.setFrameBuffer(frame);
     in.readPixels(0, part.height - 1);
-    checkTableValues(source_, part.name, texels, a.channelCount());
+    for (const LaneGroupTexels& g : groups)
+      checkTableValues(source_, part.name, *g.texels, g.atmosphere->channelCount());
     if (!part.extra_channel.empty()) checkTableValues(source_, part.name, *extra_texels, 1);
   }
 
@@ -258,36 +267,56 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
 
   const TextureSizes& s = bake.contents.sizes;
   const AtmosphereParameters& a = bake.contents.atmosphere;
-  BakeTables& t = bake.tables;
-  t.optical_depth = emptyTexture2D(s.transmittance_mu, s.transmittance_r);
-  t.irradiance = emptyTexture2D(s.irradiance_mu_s, s.irradiance_r);
-  t.single_rayleigh = emptyTexture4D(s);
-  t.single_mie = emptyTexture4D(s);
-  t.multiple_scattering = emptyTexture4D(s);
-  t.multiple_density = emptyTexture4D(s);
-  struct Table {
+  // The lane groups' tables: the bake's own, or each of a spectral bake's groups'.
+  std::vector<const AtmosphereParameters*> group_atmospheres;
+  std::vector<BakeTables*> group_tables;
+  if (bake.contents.lane_groups.empty()) {
+    group_atmospheres.push_back(&a);
+    group_tables.push_back(&bake.tables);
+  } else {
+    bake.lane_group_tables.resize(bake.contents.lane_groups.size());
+    for (size_t g = 0; g < bake.contents.lane_groups.size(); ++g) {
+      group_atmospheres.push_back(&bake.contents.lane_groups[g]);
+      group_tables.push_back(&bake.lane_group_tables[g]);
+    }
+  }
+  for (BakeTables* t : group_tables) {
+    t->optical_depth = emptyTexture2D(s.transmittance_mu, s.transmittance_r);
+    t->irradiance = emptyTexture2D(s.irradiance_mu_s, s.irradiance_r);
+    t->single_rayleigh = emptyTexture4D(s);
+    t->single_mie = emptyTexture4D(s);
+    t->multiple_scattering = emptyTexture4D(s);
+    t->multiple_density = emptyTexture4D(s);
+  }
+  const BakeTables& t = *group_tables.front();
+  // A table's texels in any group's tables.
+  auto texelsOf = [&](auto table) {
+    return [table](BakeTables& tables) -> std::vector<Spectrum>& { return (tables.*table).texels; };
+  };
+  struct TableTexels {
     const char* part;
     int width;
     int height;
-    std::vector<Spectrum>* texels;
+    std::function<std::vector<Spectrum>&(BakeTables&)> texels;
   };
-  std::vector<Table> tables = {
-      {optical_depth_part, t.optical_depth.width, t.optical_depth.height, &t.optical_depth.texels},
-      {kPartIrradiance, t.irradiance.width, t.irradiance.height, &t.irradiance.texels},
-      {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(), &t.single_rayleigh.texels},
-      {kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), &t.single_mie.texels},
+  std::vector<TableTexels> tables = {
+      {optical_depth_part, t.optical_depth.width, t.optical_depth.height, texelsOf(&BakeTables::optical_depth)},
+      {kPartIrradiance, t.irradiance.width, t.irradiance.height, texelsOf(&BakeTables::irradiance)},
+      {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(),
+       texelsOf(&BakeTables::single_rayleigh)},
+      {kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), texelsOf(&BakeTables::single_mie)},
       {kPartMultipleScattering, t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(),
-       &t.multiple_scattering.texels},
+       texelsOf(&BakeTables::multiple_scattering)},
       {kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(),
-       &t.multiple_density.texels},
+       texelsOf(&BakeTables::multiple_density)},
   };
-  std::erase_if(tables, [&](const Table& table) { return leavesOut(bake.contents, table.part); });
+  std::erase_if(tables, [&](const TableTexels& table) { return leavesOut(bake.contents, table.part); });
   // Single Mie scattering combined into single_rayleigh: its first channel
   // is read from there and the others rebuilt.
   const bool combined_mie = bake.contents.combined_single_mie;
   std::vector<PartLayout> layouts;
   uint64_t stored_bytes = 0;
-  for (const Table& table : tables) {
+  for (const TableTexels& table : tables) {
     const bool with_mie = combined_mie && std::string_view(table.part) == kPartSingleRayleigh;
     layouts.push_back(in.checkPart(table.part, table.width, table.height, a,
                                    with_mie ? combinedSingleMieChannelName(a) : std::string()));
@@ -299,8 +328,19 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
                     "bytes can hold: the header is corrupt",
                     stored_bytes, file_bytes));
   }
-  for (size_t i = 0; i < layouts.size(); ++i) in.readPart(layouts[i], a, *tables[i].texels, &t.single_mie.texels);
-  if (combined_mie) approximateSingleMie(a, t.single_rayleigh, t.single_mie);
+  for (size_t i = 0; i < layouts.size(); ++i) {
+    std::vector<Reader::LaneGroupTexels> groups;
+    for (size_t g = 0; g < group_tables.size(); ++g) {
+      groups.push_back({group_atmospheres[g], &tables[i].texels(*group_tables[g])});
+    }
+    in.readPart(layouts[i], groups, &bake.tables.single_mie.texels);
+  }
+  if (combined_mie) approximateSingleMie(a, bake.tables.single_rayleigh, bake.tables.single_mie);
+  // A spectral bake's group without Mie scattering holds zeros in the part
+  // its others need; an ordinary bake of its wavelengths has no such table.
+  for (size_t g = 0; g < group_tables.size() && group_tables.size() > 1; ++g) {
+    if (!bakeStoresSingleMie(*group_atmospheres[g])) group_tables[g]->single_mie.texels = {};
+  }
   return bake;
 }
 

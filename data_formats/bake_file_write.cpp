@@ -43,11 +43,32 @@ namespace {
 
 using namespace bake_file;
 
+// The lanes of a bake's tables, in channel order: the tables of an ordinary
+// bake, or each lane group's of a spectral one.
+struct LaneGroup {
+  const AtmosphereParameters* atmosphere;  // its channels
+  const BakeTables* tables;
+};
+
+std::vector<LaneGroup> laneGroupsOf(const BakeFile& bake) {
+  if (bake.contents.lane_groups.empty()) return {{&bake.contents.atmosphere, &bake.tables}};
+  if (bake.lane_group_tables.size() != bake.contents.lane_groups.size()) {
+    throw Error(ErrorKind::Internal, "a spectral bake whose lane groups and their tables differ in number");
+  }
+  std::vector<LaneGroup> groups;
+  for (size_t g = 0; g < bake.lane_group_tables.size(); ++g) {
+    groups.push_back({&bake.contents.lane_groups[g], &bake.lane_group_tables[g]});
+  }
+  return groups;
+}
+
 struct PartToWrite {
   const char* name;
   const char* content;
   const char* units;
-  const std::vector<Spectrum>* texels;
+  // One per lane group; a group that lacks the table (a group without Mie
+  // scattering in a spectral bake whose others have it) writes zeros.
+  std::vector<const std::vector<Spectrum>*> texels;
   int width;
   int height;
   std::string size_text;
@@ -102,8 +123,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
   std::vector<Imf::Header> headers;
   for (const PartToWrite& part : parts) headers.push_back(makeHeader(bake, part, display_window));
   Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
-  const int channels = bake.contents.atmosphere.channelCount();
-  const std::vector<std::string> channel_names = channelNames(bake.contents.atmosphere);
+  const std::vector<LaneGroup> groups = laneGroupsOf(bake);
   for (size_t i = 0; i < parts.size(); ++i) {
     const PartToWrite& part = parts[i];
     const bool half = storedAsHalf(bake, part);
@@ -117,19 +137,29 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
       }
       return halves;
     };
-    std::vector<Imath::half> halves, extra_halves;
-    if (half) halves = toHalves(*part.texels);
-    if (half && part.extra_texels != nullptr) extra_halves = toHalves(*part.extra_texels);
-    auto baseOf = [&](const std::vector<Spectrum>& texels, std::vector<Imath::half>& as_halves) {
-      return half ? reinterpret_cast<char*>(as_halves.data())
-                  : const_cast<char*>(reinterpret_cast<const char*>(texels.data()));
-    };
-    char* base = baseOf(*part.texels, halves);
+    // Kept alive until the part is written: the slices point into them.
+    std::vector<std::vector<Imath::half>> halves(groups.size() + 1);
+    std::vector<Imath::half> extra_halves;
     const size_t value_bytes = half ? sizeof(Imath::half) : sizeof(float);
     const size_t texel_bytes = value_bytes * kMaxChannels;
     const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
-    for (int c = 0; c < channels; ++c) {
-      frame.insert(channel_names[c], Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
+    auto baseOf = [&](const std::vector<Spectrum>& texels, std::vector<Imath::half>& as_halves) {
+      if (half) as_halves = toHalves(texels);
+      return half ? reinterpret_cast<char*>(as_halves.data())
+                  : const_cast<char*>(reinterpret_cast<const char*>(texels.data()));
+    };
+    // Allocated only for a group that lacks the table.
+    std::vector<Spectrum> zeros;
+    for (size_t g = 0; g < groups.size(); ++g) {
+      if (part.texels[g]->empty() && zeros.empty()) {
+        zeros.assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
+      }
+      const std::vector<Spectrum>& texels = part.texels[g]->empty() ? zeros : *part.texels[g];
+      char* base = baseOf(texels, halves[g]);
+      const std::vector<std::string> channel_names = channelNames(*groups[g].atmosphere);
+      for (size_t c = 0; c < channel_names.size(); ++c) {
+        frame.insert(channel_names[c], Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
+      }
     }
     if (part.extra_texels != nullptr) {
       frame.insert(part.extra_channel,
@@ -148,28 +178,35 @@ std::string table4DSizeText(const Texture4D& t) {
 
 void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
                    const std::function<void(const std::filesystem::path& temp)>& before_rename) {
-  const BakeTables& t = bake.tables;
+  const std::vector<LaneGroup> groups = laneGroupsOf(bake);
+  // Sizes are the first group's: every group's tables have the same.
+  const BakeTables& t = *groups.front().tables;
+  auto texels = [&](auto table) {
+    std::vector<const std::vector<Spectrum>*> out;
+    for (const LaneGroup& g : groups) out.push_back(&(g.tables->*table).texels);
+    return out;
+  };
   std::vector<PartToWrite> parts = {
       {kPartOpticalDepth, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
-       "dimensionless", &t.optical_depth.texels, t.optical_depth.width, t.optical_depth.height,
+       "dimensionless", texels(&BakeTables::optical_depth), t.optical_depth.width, t.optical_depth.height,
        fmt::format("mu={} r={}", t.optical_depth.width, t.optical_depth.height)},
       {kPartSingleRayleigh, "single Rayleigh scattering radiance divided by the Rayleigh phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_rayleigh.texels,
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", texels(&BakeTables::single_rayleigh),
        t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(), table4DSizeText(t.single_rayleigh)},
       {kPartSingleMie, "single Mie scattering radiance divided by the Mie phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &t.single_mie.texels, t.single_mie.atlasWidth(),
-       t.single_mie.atlasHeight(), table4DSizeText(t.single_mie)},
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", texels(&BakeTables::single_mie),
+       t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), table4DSizeText(t.single_mie)},
       {kPartMultipleScattering,
        "scattering orders 2 and up, radiance divided by the multiple-scattering shape at the texel's r and nu",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_scattering.texels,
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)", texels(&BakeTables::multiple_scattering),
        t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(), table4DSizeText(t.multiple_scattering)},
       {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded", "W m^-2 nm^-1",
-       &t.irradiance.texels, t.irradiance.width, t.irradiance.height,
+       texels(&BakeTables::irradiance), t.irradiance.width, t.irradiance.height,
        fmt::format("mu_s={} r={}", t.irradiance.width, t.irradiance.height)},
       {kPartMultipleDensity,
        "scattering density of orders 2 and up: light scattered per unit length toward the viewer, "
        "divided by the multiple-scattering shape at the texel's r and nu",
-       "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &t.multiple_density.texels,
+       "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", texels(&BakeTables::multiple_density),
        t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
   };
   auto is_density = [](const PartToWrite& p) { return p.name == std::string_view(kPartMultipleDensity); };
@@ -182,16 +219,24 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
   }
   std::erase_if(parts, [&](const PartToWrite& p) { return leavesOut(bake.contents, p.name); });
   for (const PartToWrite& part : parts) {
-    if (part.texels->size() != static_cast<size_t>(part.width) * part.height || part.width <= 0 ||
-        (part.extra_texels != nullptr && part.extra_texels->size() != part.texels->size())) {
-      throw Error(ErrorKind::Internal, fmt::format("{}: part {} has no data of its size", path.string(), part.name));
+    const size_t size = static_cast<size_t>(part.width) * part.height;
+    // Only a spectral bake's group without Mie scattering may lack a written table.
+    for (size_t g = 0; g < groups.size(); ++g) {
+      const bool may_lack = groups.size() > 1 && part.name == std::string_view(kPartSingleMie) &&
+                            !bakeStoresSingleMie(*groups[g].atmosphere);
+      if ((part.texels[g]->size() != size && !(may_lack && part.texels[g]->empty())) || part.width <= 0 ||
+          (part.extra_texels != nullptr && part.extra_texels->size() != size)) {
+        throw Error(ErrorKind::Internal, fmt::format("{}: part {} has no data of its size", path.string(), part.name));
+      }
     }
   }
 
   // A table outside its range (a config whose numbers overflow float) is
   // refused before anything is written: the existing file stays.
   for (const PartToWrite& part : parts) {
-    checkTableValues(path.string(), part.name, *part.texels, bake.contents.atmosphere.channelCount());
+    for (size_t g = 0; g < groups.size(); ++g) {
+      checkTableValues(path.string(), part.name, *part.texels[g], groups[g].atmosphere->channelCount());
+    }
     if (part.extra_texels != nullptr) checkTableValues(path.string(), part.name, *part.extra_texels, 1);
   }
 

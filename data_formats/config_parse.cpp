@@ -53,7 +53,7 @@ void setLanes(AtmosphereParameters& a, const SpectralQuantities& q, size_t first
   a.absorption_extinction = lanes(q.absorption_extinction);
 }
 
-// A colour bake's passes: its wavelengths in order, kMaxChannels at a time
+// A colour or spectral bake's passes: its wavelengths in order, kMaxChannels at a time
 // (the last group holds the rest), each an ordinary per-wavelength
 // atmosphere of the same shape.
 std::vector<AtmosphereParameters> colourGroups(const AtmosphereParameters& colour, const SpectralQuantities& q) {
@@ -152,21 +152,29 @@ class ConfigReader {
   }
 
   // The bake's wavelengths: a list of numbers, or { min_nm, max_nm, count }
-  // evenly spaced with both ends included. Refuses more than one bake file
-  // holds as channels, or, for a colour bake, more than it integrates.
-  std::vector<double> wavelengths(const toml::node& node, const std::string& name, bool colour) const {
+  // evenly spaced with both ends included. Refuses more than a wavelength
+  // bake holds as channels, or, for a colour or spectral bake, more than it
+  // bakes.
+  std::vector<double> wavelengths(const toml::node& node, const std::string& name, ChannelKind kind) const {
     auto refuseTooMany = [&](size_t count) {
-      if (colour) {
+      if (kind == ChannelKind::CieXyz) {
         if (count <= static_cast<size_t>(kMaxColourWavelengths)) return;
         fail(&node, name, describe(node),
              fmt::format("{} wavelengths, but a colour bake (channels.store = \"cie_xyz\") integrates at most {}",
                          count, kMaxColourWavelengths));
       }
+      if (kind == ChannelKind::Spectral) {
+        if (count <= static_cast<size_t>(kMaxSpectralWavelengths)) return;
+        fail(&node, name, describe(node),
+             fmt::format("{} wavelengths, but a spectral bake (channels.store = \"spectral\") stores at most {}", count,
+                         kMaxSpectralWavelengths));
+      }
       if (count <= static_cast<size_t>(kMaxChannels)) return;
       fail(&node, name, describe(node),
-           fmt::format("{} wavelengths, but one bake file holds at most {}: bake several files of at most {} "
-                       "wavelengths each",
-                       count, kMaxChannels, kMaxChannels));
+           fmt::format("{} wavelengths, but a wavelength bake holds at most {}: store them all with "
+                       "channels.store = \"spectral\" (up to {}, baked {} at a time), or integrate them into "
+                       "X, Y, Z with channels.store = \"cie_xyz\"",
+                       count, kMaxChannels, kMaxSpectralWavelengths, kMaxChannels));
     };
     std::vector<double> out;
     if (const toml::table* range = node.as_table()) {
@@ -391,17 +399,21 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
   in.rejectUnknownKeys(*channels, "channels.", {"wavelengths_nm", "store"});
   if (const toml::node* store = channels->get("store")) {
     const auto text = store->as_string();
-    const char* kExpected = "must be \"wavelengths\" (one channel per wavelength) or \"cie_xyz\" (X, Y, Z)";
+    const char* kExpected =
+        "must be \"wavelengths\" (one channel per wavelength, at most 4), \"spectral\" (one channel per "
+        "wavelength, up to 64, baked 4 at a time) or \"cie_xyz\" (X, Y, Z)";
     if (!text) in.fail(store, "channels.store", ConfigReader::describe(*store), kExpected);
     if (text->get() == "cie_xyz") {
       a.channel_kind = ChannelKind::CieXyz;
+    } else if (text->get() == "spectral") {
+      a.channel_kind = ChannelKind::Spectral;
     } else if (text->get() != "wavelengths") {
       in.fail(store, "channels.store", ConfigReader::describe(*store), kExpected);
     }
   }
   const toml::node* wl = channels->get("wavelengths_nm");
   if (wl == nullptr) in.fail(nullptr, "channels.wavelengths_nm", "", "missing required key");
-  a.wavelengths_nm = in.wavelengths(*wl, "channels.wavelengths_nm", a.storesCieXyz());
+  a.wavelengths_nm = in.wavelengths(*wl, "channels.wavelengths_nm", a.channel_kind);
   const std::vector<double>& n = a.wavelengths_nm;
   const std::vector<double> zeros(n.size(), 0.0);
   SpectralQuantities q;
@@ -438,7 +450,7 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
     q.absorption_extinction = in.spectrum(*t, "absorption.", "extinction", true, n, zeros, PowerLawForm::None, true);
     a.absorption_density = in.density(*t, "absorption.");
   }
-  if (a.storesCieXyz()) {
+  if (a.storesCieXyz() || a.storesLaneGroups()) {
     config.colour_groups = colourGroups(a, q);
   } else {
     setLanes(a, q, 0, n.size());

@@ -89,7 +89,7 @@ class Checker {
 // Products of the parameters that the bake stores in float must fit it.
 // Densities are clamped to [0, 1], so a coefficient bounds its constituent.
 void checkFloatRange(const Checker& check, const AtmosphereParameters& a) {
-  const int n = a.channelCount();
+  const int n = a.laneCount();
   const double chord_m = 2.0 * std::sqrt(a.top_radius_m * a.top_radius_m - a.bottom_radius_m * a.bottom_radius_m);
   for (int c = 0; c < n; ++c) {
     const struct {
@@ -128,9 +128,9 @@ void checkFloatRange(const Checker& check, const AtmosphereParameters& a) {
   }
 }
 
-// A colour bake's passes (BakeConfig::colour_groups), when the config has
-// them (a config read back from a file's header has only its X, Y, Z
-// atmosphere): each an ordinary atmosphere of the colour bake's shape,
+// A colour or spectral bake's passes (BakeConfig::colour_groups), when the
+// config has them (a config read back from a colour file's header has only
+// its X, Y, Z atmosphere): each an ordinary atmosphere of the bake's shape,
 // together its wavelengths in order.
 void validateColourGroups(const BakeConfig& config, const Checker& check, const std::string& source) {
   const AtmosphereParameters& a = config.atmosphere;
@@ -138,7 +138,7 @@ void validateColourGroups(const BakeConfig& config, const Checker& check, const 
   std::vector<double> grouped_nm;
   for (const AtmosphereParameters& g : config.colour_groups) {
     AtmosphereParameters shape = g;
-    shape.channel_kind = ChannelKind::CieXyz;
+    shape.channel_kind = a.channel_kind;
     shape.wavelengths_nm = a.wavelengths_nm;
     shape.ground_albedo = a.ground_albedo;
     shape.sun_irradiance = a.sun_irradiance;
@@ -146,8 +146,8 @@ void validateColourGroups(const BakeConfig& config, const Checker& check, const 
     shape.mie_scattering = a.mie_scattering;
     shape.mie_extinction = a.mie_extinction;
     shape.absorption_extinction = a.absorption_extinction;
-    if (g.storesCieXyz() || !(shape == a)) {
-      throw Error(ErrorKind::Internal, fmt::format("{}: a colour bake's wavelength group differs from its "
+    if (g.channel_kind != ChannelKind::Wavelengths || !(shape == a)) {
+      throw Error(ErrorKind::Internal, fmt::format("{}: a wavelength group differs from its bake's "
                                                    "atmosphere in more than its per-wavelength quantities",
                                                    source));
     }
@@ -159,7 +159,7 @@ void validateColourGroups(const BakeConfig& config, const Checker& check, const 
   }
   if (grouped_nm != a.wavelengths_nm) {
     check.fail("channels.wavelengths_nm", fmt::format("{} values", a.wavelengths_nm.size()),
-               "differs from the wavelengths of the colour bake's passes");
+               "differs from the wavelengths of the bake's passes");
   }
 }
 
@@ -168,13 +168,19 @@ void validateColourGroups(const BakeConfig& config, const Checker& check, const 
 void validateConfig(const BakeConfig& config, const std::string& source) {
   const Checker check(source);
   const AtmosphereParameters& a = config.atmosphere;
-  const int n = a.channelCount();
+  // Per-channel values held in the atmosphere's own lanes (a spectral
+  // atmosphere's are in its groups, checked with them below).
+  const int n = a.laneCount();
   const int wavelengths = static_cast<int>(a.wavelengths_nm.size());
-  const int max_wavelengths = a.storesCieXyz() ? kMaxColourWavelengths : kMaxChannels;
+  const int max_wavelengths = a.storesCieXyz()       ? kMaxColourWavelengths
+                              : a.storesLaneGroups() ? kMaxSpectralWavelengths
+                                                     : kMaxChannels;
   if (wavelengths < 1 || wavelengths > max_wavelengths) {
     check.fail("channels.wavelengths_nm", fmt::format("{} values", wavelengths),
                fmt::format("needs 1 to {} wavelengths{}", max_wavelengths,
-                           a.storesCieXyz() ? " in a colour bake (channels.store = \"cie_xyz\")" : ""));
+                           a.storesCieXyz()       ? " in a colour bake (channels.store = \"cie_xyz\")"
+                           : a.storesLaneGroups() ? " in a spectral bake (channels.store = \"spectral\")"
+                                                  : ""));
   }
   for (int c = 0; c < wavelengths; ++c) {
     const std::string key = fmt::format("channels.wavelengths_nm[{}]", c);
@@ -271,8 +277,6 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
     }
   }
 
-  if (a.storesCieXyz()) validateColourGroups(config, check, source);
-
   bool has_mie = false;
   for (int c = 0; c < n; ++c) has_mie = has_mie || a.mie_scattering[c] > 0.0f;
   if (config.bake.combined_single_mie && a.storesCieXyz()) {
@@ -280,6 +284,16 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
                "needs wavelength channels: it rebuilds single Mie scattering from Rayleigh's spectral shape "
                "across the channels, which X, Y and Z (each a band over the whole visible range) do not have; "
                "leave it out of a colour bake (channels.store = \"cie_xyz\")");
+  }
+  if (config.bake.combined_single_mie && a.storesLaneGroups()) {
+    check.fail("bake.combined_single_mie", "true",
+               "needs a channel free beside the wavelengths for single Mie scattering, which a spectral bake "
+               "(channels.store = \"spectral\") does not keep: every part holds one channel per wavelength; "
+               "leave it out, or bake at most 3 wavelengths with channels.store = \"wavelengths\"");
+  }
+  if (a.storesCieXyz() || a.storesLaneGroups()) validateColourGroups(config, check, source);
+  if (a.storesLaneGroups() && config.colour_groups.empty()) {
+    throw Error(ErrorKind::Internal, fmt::format("{}: a spectral bake's config without its wavelength groups", source));
   }
   if (config.bake.combined_single_mie && has_mie) {
     if (n >= kMaxChannels) {

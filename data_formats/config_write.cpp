@@ -27,10 +27,10 @@ std::string spectrumList(const Spectrum& s, int n) {
 }
 
 // A per-wavelength quantity of every wavelength: the channels' lanes, or a
-// colour bake's groups' lanes one after the other.
+// colour or spectral bake's groups' lanes one after the other.
 template <typename Quantity>
 std::string perWavelengthList(const BakeConfig& config, Quantity quantity) {
-  if (!config.atmosphere.storesCieXyz()) {
+  if (!config.atmosphere.storesCieXyz() && !config.atmosphere.storesLaneGroups()) {
     return spectrumList(quantity(config.atmosphere), config.atmosphere.channelCount());
   }
   std::string out = "[";
@@ -81,9 +81,10 @@ std::string configToToml(const BakeConfig& config) {
     wavelengths += fmt::format("{}{}", c ? ", " : "", numberText(a.wavelengths_nm[c]));
   }
   wavelengths += "]";
-  // Written only for colour bakes, so that wavelength bakes keep their
-  // canonical text (and the reference cache keys hashed from it).
+  // Written only for colour and spectral bakes, so that wavelength bakes
+  // keep their canonical text (and the reference cache keys hashed from it).
   if (a.storesCieXyz()) wavelengths += "\nstore = \"cie_xyz\"";
+  if (a.storesLaneGroups()) wavelengths += "\nstore = \"spectral\"";
   auto list = [&](Spectrum AtmosphereParameters::*quantity) {
     return perWavelengthList(config, [&](const AtmosphereParameters& p) { return p.*quantity; });
   };

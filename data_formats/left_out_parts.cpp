@@ -16,7 +16,23 @@ BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& do
   c.outputs = config.scene;
   c.precision = config.bake.precision;
   c.combined_single_mie = config.bake.combined_single_mie && bakeStoresSingleMie(config.atmosphere);
+  if (config.atmosphere.storesLaneGroups()) {
+    // One group is an ordinary bake of its wavelengths, as the file reads back.
+    if (config.colour_groups.size() == 1) {
+      c.atmosphere = config.colour_groups[0];
+    } else {
+      c.lane_groups = config.colour_groups;
+    }
+  }
   return c;
+}
+
+bool bakeStoresSingleMie(const BakeContents& contents) {
+  if (contents.lane_groups.empty()) return bakeStoresSingleMie(contents.atmosphere);
+  for (const AtmosphereParameters& g : contents.lane_groups) {
+    if (bakeStoresSingleMie(g)) return true;
+  }
+  return false;
 }
 
 std::vector<LeftOutPart> leftOutParts(const BakeContents& c) {
@@ -25,7 +41,7 @@ std::vector<LeftOutPart> leftOutParts(const BakeContents& c) {
   const uint64_t table_4d =
       static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu * value_bytes;
   std::vector<LeftOutPart> out;
-  if (!bakeStoresSingleMie(c.atmosphere)) {
+  if (!bakeStoresSingleMie(c)) {
     out.push_back({bake_file::kPartSingleMie, "no Mie scattering", table_4d});
   } else if (c.combined_single_mie) {
     // One channel of it moves into single_rayleigh.

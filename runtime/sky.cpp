@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "runtime/colour/channel_luminance.h"
 
@@ -35,6 +36,30 @@ BakedRanges bakedRangesOf(const AtmosphereDomain& d) {
       thickness_m};
 }
 
+// A spectral bake's lane groups as ordinary Skies, their tables moved out
+// of `bake`, which keeps the file's contents and, for the night
+// continuation its sampler needs, the first group's (small) irradiance
+// table. Empty for any other bake.
+std::vector<std::shared_ptr<const Sky>> laneGroupSkies(BakeFile& bake) {
+  std::vector<std::shared_ptr<const Sky>> groups;
+  if (bake.contents.lane_groups.empty()) return groups;
+  for (size_t g = 0; g < bake.contents.lane_groups.size(); ++g) {
+    groups.push_back(std::make_shared<const Sky>(takeLaneGroup(bake, g)));
+  }
+  bake.lane_group_tables.clear();
+  bake.tables = {};
+  bake.tables.irradiance = groups.front()->tables().irradiance;
+  return groups;
+}
+
+// Sky::channelLuminanceWeights: every channel's, a spectral atmosphere's
+// from all its wavelengths together.
+std::vector<float> channelLuminanceWeightsOf(const AtmosphereParameters& a) {
+  if (a.storesLaneGroups()) return colour::wavelengthLuminanceWeights(a.wavelengths_nm);
+  const Spectrum lanes = colour::luminanceWeights(a);
+  return std::vector<float>(&lanes[0], &lanes[0] + a.channelCount());
+}
+
 }  // namespace
 
 bool BakedRanges::containsAltitude(double altitude_m) const {
@@ -51,19 +76,25 @@ bool BakedRanges::containsSunZenith(double sun_zenith_deg) const {
 Sky Sky::load(const std::filesystem::path& path) { return Sky(readBakeFile(path)); }
 
 Sky::Sky(BakeFile bake)
-    : bake_(std::move(bake)),
-      channels_{bake_.contents.atmosphere.channel_kind, channelNames(bake_.contents.atmosphere),
-                bake_.contents.atmosphere.wavelengths_nm},
+    : lane_groups_(laneGroupSkies(bake)),
+      bake_(std::move(bake)),
+      // A spectral bake's channels are wavelengths, as its file says.
+      channels_{bake_.contents.atmosphere.storesLaneGroups() ? ChannelKind::Wavelengths
+                                                             : bake_.contents.atmosphere.channel_kind,
+                channelNames(bake_.contents.atmosphere), bake_.contents.atmosphere.wavelengths_nm},
+      channel_luminance_weights_(channelLuminanceWeightsOf(bake_.contents.atmosphere)),
       luminance_weights_(colour::luminanceWeights(bake_.contents.atmosphere)),
       sampler_(bake_.contents.domain, bake_.contents.sizes,
                nightContinuationOf(bake_.contents.domain, bake_.tables.irradiance)),
-      multiple_shape_(bake_.contents.atmosphere),
+      // A spectral Sky's lookups are its groups': its own shape is never used.
+      multiple_shape_(lane_groups_.empty() ? bake_.contents.atmosphere : lane_groups_.front()->atmosphere()),
       mie_phase_(bake_.contents.atmosphere.mie_phase_g),
       ranges_(bakedRangesOf(sampler_.domain())),
       baked_mu_s_min_(std::cos(radiansFromDegrees(ranges_.sun_zenith_max_deg))),
       baked_mu_s_max_(std::cos(radiansFromDegrees(ranges_.sun_zenith_min_deg))) {}
 
 double Sky::luminance(const Spectrum& value) const {
+  requireOneLaneGroup("luminance(Spectrum)");
   double sum = 0.0;
   for (int c = 0; c < channelCount(); ++c) sum += static_cast<double>(luminance_weights_[c]) * value[c];
   return sum;

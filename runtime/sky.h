@@ -36,6 +36,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -97,8 +99,21 @@ struct SpectrumBatch {
   float* channel[kMaxChannels];
 };
 
+// N-channel results of a spectral bake's lookups (and of any bake's: an
+// ordinary bake has channelCount() entries), one float per channel in the
+// file's channel order.
+struct ChannelRadianceAndTransmittance {
+  std::vector<float> radiance;       // W m^-2 sr^-1 nm^-1
+  std::vector<float> transmittance;  // dimensionless
+};
+struct ChannelSunAndSkyIrradiance {
+  std::vector<float> sun;  // W m^-2 nm^-1
+  std::vector<float> sky;  // W m^-2 nm^-1
+};
+
 // What a bake's channels hold (skybake:channels in FORMAT.md).
 struct BakeChannels {
+  // Wavelengths (a spectral bake's too) or CieXyz.
   ChannelKind kind = ChannelKind::Wavelengths;
   // The channels' names in the file, in channel order: "440nm", ... or
   // "X", "Y", "Z".
@@ -116,9 +131,45 @@ class Sky {
   explicit Sky(BakeFile bake);
 
   // What the bake's file states: the atmosphere, table sizes, domain, outputs.
+  // A spectral bake's atmosphere (more than 4 wavelengths) holds its
+  // wavelengths and shape; each wavelength's values are its lane group's
+  // (contents().lane_groups, laneGroup(g).atmosphere()).
   const BakeContents& contents() const { return bake_.contents; }
   const AtmosphereParameters& atmosphere() const { return bake_.contents.atmosphere; }
   int channelCount() const { return atmosphere().channelCount(); }
+
+  // ---- every channel of any bake, a spectral one of up to 64 included ----
+  // A bake's channels come in lane groups of at most 4 (kMaxChannels): one
+  // for an ordinary or colour bake, ceil(N / 4) for a spectral bake of N
+  // wavelengths (FORMAT.md, "Spectral bakes"). Group g is an ordinary Sky of
+  // its wavelengths (channels 4 g to 4 g + 3), whose every lookup works as
+  // on a bake of those wavelengths alone; an ordinary bake's only group is
+  // the Sky itself. The lookups above that return a Spectrum serve one
+  // group: on a spectral Sky they throw Error(BadInput) (use laneGroup(g) or
+  // the channel lookups below).
+  int laneGroupCount() const { return lane_groups_.empty() ? 1 : static_cast<int>(lane_groups_.size()); }
+  const Sky& laneGroup(int g) const;
+  // The file channel of lane 0 of group g.
+  int laneGroupFirstChannel(int g) const { return g * kMaxChannels; }
+  // The lookups of the same names, on every group, their lanes joined into
+  // channelCount() values (entries past a group's channels left out).
+  ChannelRadianceAndTransmittance channelSkyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                                     const glm::dvec3& sun_dir, double shadow_length_m = 0.0) const;
+  ChannelRadianceAndTransmittance channelReceivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                                          const glm::dvec3& sun_dir) const;
+  ChannelRadianceAndTransmittance channelRadianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                                         const glm::dvec3& sun_dir, double shadow_length_m = 0.0) const;
+  ChannelSunAndSkyIrradiance channelIrradiance(const glm::dvec3& point, const glm::dvec3& normal,
+                                               const glm::dvec3& sun_dir) const;
+  std::vector<float> channelTransmittance(const glm::dvec3& a, const glm::dvec3& b) const;
+  std::vector<float> channelSolarRadiance() const;
+  // Luminance (cd m^-2) of channelCount() values this bake returns
+  // (illuminance in lx of an irradiance): with channelLuminanceWeights(),
+  // the CIE ybar weights of all N wavelengths together, as luminance() for
+  // an ordinary bake.
+  double luminance(std::span<const float> channel_values) const;
+  const std::vector<float>& channelLuminanceWeights() const { return channel_luminance_weights_; }
+
   // What the channels hold: wavelengths (spectral radiance, W m^-2 sr^-1
   // nm^-1) or CIE X, Y, Z (W m^-2 sr^-1; 683 Y is luminance).
   const BakeChannels& channels() const { return channels_; }
@@ -126,9 +177,11 @@ class Sky {
   // an irradiance. XYZ: 683 Y; wavelengths: through the CIE 1931
   // colour-matching functions as `skybake render` converts them
   // (runtime/colour/channel_luminance.h).
+  // One lane group's value: a spectral Sky refuses it (use the span form).
   double luminance(const Spectrum& value) const;
   // The weights behind luminance(): cd m^-2 per unit of each channel (0 past
   // channelCount()), for callers (and shaders) that weight lanes themselves.
+  // A spectral Sky's are 0 (see channelLuminanceWeights()).
   const Spectrum& luminanceWeights() const { return luminance_weights_; }
   int orders() const { return bake_.orders_computed; }
   // The bake report the file carries (JSON text, opaque to lookups).
@@ -279,8 +332,23 @@ class Sky {
   void blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, double weight,
                                          SingleScattering& s) const;
 
+  // Throws Error(BadInput) naming `lookup` on a spectral Sky: its Spectrum
+  // lookups would hold only one lane group's channels.
+  void requireOneLaneGroup(const char* lookup) const {
+    if (!lane_groups_.empty()) refuseSpectrumLookup(lookup);
+  }
+  [[noreturn]] void refuseSpectrumLookup(const char* lookup) const;
+  // Group g's lanes of every group's `lookup(group)` (a Spectrum) into channelCount() values.
+  template <typename Lookup>
+  std::vector<float> joinedChannels(Lookup&& lookup) const;
+
+  // A spectral bake's lane groups, each an ordinary Sky (empty otherwise).
+  // Before bake_: built from the file's groups, which the constructor moves
+  // out of it.
+  std::vector<std::shared_ptr<const Sky>> lane_groups_;
   BakeFile bake_;
   BakeChannels channels_;
+  std::vector<float> channel_luminance_weights_;
   Spectrum luminance_weights_;
   TableSampler sampler_;
   MultipleScatteringPhase multiple_shape_;  // what multiple scattering is stored divided by

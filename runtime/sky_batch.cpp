@@ -35,6 +35,7 @@ Spectrum sampleSlice(const Texture4D& slice, const AxisLerp& mu, const AxisLerp&
 
 void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
                            SpectrumBatch radiance, SpectrumBatch transmittance) const {
+  requireOneLaneGroup("skyRadianceBatch");
   auto store = [&](size_t i, const Spectrum& l, const Spectrum& t) {
     for (int c = 0; c < channelCount(); ++c) {
       if (radiance.channel[c] != nullptr) radiance.channel[c][i] = l[c];

@@ -57,6 +57,7 @@ bool Sky::moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, c
 }
 
 Spectrum Sky::eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+  requireOneLaneGroup("eclipseSkylight");
   // The kernel's points lie within the atmosphere's reach of `point`: a moon
   // that hides the sun from none of them leaves F exactly 1.
   if (!moonHidesSunNear(point, sun_dir, moon)) return Spectrum(1.0f);

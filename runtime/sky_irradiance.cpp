@@ -25,6 +25,7 @@ SurfacePoint surfacePoint(const AtmosphereDomain& domain, const glm::dvec3& poin
 }  // namespace
 
 Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const {
+  requireOneLaneGroup("sunIrradiance");
   const SurfacePoint p = surfacePoint(sampler_.domain(), point);
   const double mu_s = clampCosine(glm::dot(p.up, sun_dir));
   return atmosphere().sun_irradiance *
@@ -34,6 +35,7 @@ Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, c
 
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
                                     const glm::dvec3& sun_dir) const {
+  requireOneLaneGroup("irradiance");
   if (!outputs().ground_irradiance) {
     throw Error(ErrorKind::BadInput,
                 "irradiance: this bake leaves it out (its scene.outputs lacks \"ground_irradiance\")");

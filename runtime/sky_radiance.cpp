@@ -22,6 +22,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
 
 Sky::SkyRadianceParts Sky::skyRadianceParts(const glm::dvec3& camera, const glm::dvec3& view_dir,
                                             const glm::dvec3& sun_dir, double shadow_length_m) const {
+  requireOneLaneGroup("skyRadiance");
   const AtmosphereDomain& domain = sampler_.domain();
   SkyRadianceParts parts;
   parts.start = enterAtmosphere(domain, camera, view_dir);
@@ -96,6 +97,7 @@ RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const g
 }
 
 Spectrum Sky::solarRadiance() const {
+  requireOneLaneGroup("solarRadiance");
   const double alpha = atmosphere().sun_angular_radius_rad;
   if (alpha <= 0.0) return Spectrum(0.0f);
   const double solid_angle_sr = 2.0 * kPi * (1.0 - std::cos(alpha));

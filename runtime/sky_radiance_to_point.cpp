@@ -47,6 +47,7 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
 
 RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
                                               const glm::dvec3& sun_dir, double shadow_length_m) const {
+  requireOneLaneGroup("radianceToPoint");
   if (!outputs().radiance_to_points) {
     throw Error(ErrorKind::BadInput,
                 "radiance to a point: this bake leaves it out (its scene.outputs lacks \"radiance_to_points\")");

@@ -18,6 +18,7 @@ bool grazesGround(const AtmosphereDomain& domain, const AtmosphereRay& ray) {
 }  // namespace
 
 Spectrum Sky::transmittance(const glm::dvec3& a, const glm::dvec3& b) const {
+  requireOneLaneGroup("transmittance");
   const AtmosphereDomain& domain = sampler_.domain();
   const glm::dvec3 offset = b - a;
   const double distance = glm::length(offset);

@@ -21,6 +21,7 @@
 #include "baker/bake/colour_bake.h"
 #include "baker/bake/order_convergence.h"
 #include "baker/bake/process_usage.h"
+#include "baker/bake/spectral_bake.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 
@@ -167,12 +168,14 @@ class StageRunner {
 BakeOutput bakeAtmosphere(const BakeConfig& requested, int threads, ProgressSink& progress) {
   const BakeConfig config = settledBakeConfig(requested);
   if (config.atmosphere.storesCieXyz()) return bakeCieXyz(config, threads, progress);
+  if (config.atmosphere.storesLaneGroups()) return bakeSpectral(config, threads, progress);
   return bakeWavelengthPass(config, threads, progress);
 }
 
 BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSink& progress) {
-  if (config.atmosphere.storesCieXyz()) {
-    throw Error(ErrorKind::Internal, "bakeWavelengthPass: a colour bake's config (bake each wavelength group)");
+  if (config.atmosphere.storesCieXyz() || config.atmosphere.storesLaneGroups()) {
+    throw Error(ErrorKind::Internal,
+                "bakeWavelengthPass: a colour or spectral bake's config (bake each wavelength group)");
   }
   const ScopedOpenMpThreads thread_count(threads);
   BakeOutput out;

@@ -17,7 +17,9 @@ struct BakeOutput {
 // the config as settled (settledBakeConfig, baker/bake/bake_policy.h).
 // A colour bake (channels.store = "cie_xyz") runs bakeWavelengthPass once per
 // group of at most 4 wavelengths and sums the tables into X, Y, Z
-// (baker/bake/colour_bake.h).
+// (baker/bake/colour_bake.h); a spectral bake (channels.store = "spectral")
+// runs it once per group and keeps every group's tables
+// (baker/bake/spectral_bake.h).
 BakeOutput bakeAtmosphere(const BakeConfig& config, int threads, ProgressSink& progress);
 
 // One pass of the order loop over a settled config of 1 to 4 wavelength

@@ -36,8 +36,14 @@ std::string BakeReport::toJson(bool with_run_facts) const {
          {"mean_irradiance",
           {o.mean_irradiance[0], o.mean_irradiance[1], o.mean_irradiance[2], o.mean_irradiance[3]}}});
   }
+  for (const WavelengthOrderContribution& o : wavelength_orders) {
+    orders_json.push_back(
+        {{"order", o.order}, {"mean_radiance", o.mean_radiance}, {"mean_irradiance", o.mean_irradiance}});
+  }
+  if (passes > 0) j["passes"] = passes;
   j["orders"] = orders_json;
-  nlohmann::ordered_json decision = {{"orders_used", static_cast<int>(orders.size())},
+  const size_t orders_used = wavelength_orders.empty() ? orders.size() : wavelength_orders.size();
+  nlohmann::ordered_json decision = {{"orders_used", static_cast<int>(orders_used)},
                                      {"mode", orders_decision.automatic ? "auto" : "fixed"},
                                      {"last_order_share", orders_decision.last_order_share},
                                      {"worst_slice_altitude_m", orders_decision.worst_altitude_m},
@@ -49,9 +55,10 @@ std::string BakeReport::toJson(bool with_run_facts) const {
     decision["converged"] = orders_decision.converged;
   }
   j["orders_decision"] = decision;
-  j["tail_estimate"] = {{"applied", tail.applied},
-                        {"ratio", {tail.ratio[0], tail.ratio[1], tail.ratio[2], tail.ratio[3]}},
-                        {"reason", tail.reason}};
+  const nlohmann::ordered_json ratio =
+      wavelength_tail_ratio.empty() ? nlohmann::ordered_json{tail.ratio[0], tail.ratio[1], tail.ratio[2], tail.ratio[3]}
+                                    : nlohmann::ordered_json(wavelength_tail_ratio);
+  j["tail_estimate"] = {{"applied", tail.applied}, {"ratio", ratio}, {"reason", tail.reason}};
   return j.dump(2);
 }
 

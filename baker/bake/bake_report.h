@@ -53,8 +53,24 @@ struct OrdersDecision {
   float mean_last_order_share = 0;
 };
 
+// What one order added at each wavelength of a spectral bake, in channel
+// order (OrderContribution, wider than a Spectrum).
+struct WavelengthOrderContribution {
+  int order;
+  std::vector<float> mean_radiance;
+  std::vector<float> mean_irradiance;
+};
+
 struct BakeReport {
   int threads = 1;
+  // Colour and spectral bakes: the passes of the order loop (one per group
+  // of at most 4 wavelengths); 0 for an ordinary bake, which runs it once.
+  int passes = 0;
+  // A spectral bake of several passes: what each order added per
+  // wavelength, and the tail ratio per wavelength (`orders` and
+  // tail.ratio, 4 lanes wide, are then empty and 0).
+  std::vector<WavelengthOrderContribution> wavelength_orders;
+  std::vector<float> wavelength_tail_ratio;
   OrdersDecision orders_decision;
   TailEstimate tail;
   double wall_seconds = 0.0;

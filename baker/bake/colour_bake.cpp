@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "baker/bake/bake_passes.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/process_usage.h"
 #include "baker/stages/order_shapes.h"
@@ -59,58 +60,14 @@ Texture zeroedLike(const Texture& t) {
   return z;
 }
 
-// The report of the whole colour bake from its passes'.
-void addPassReport(const BakeReport& pass, const std::array<Spectrum, kMaxChannels>& mix, size_t index,
-                   const std::vector<double>& pass_wavelengths_nm, BakeReport& report) {
-  // One entry per stage and order, its seconds summed over the passes: the
-  // report (in the file header) stays the size of one pass's.
-  for (const StageTiming& t : pass.stages) {
-    auto same = [&](const StageTiming& r) { return r.stage == t.stage && r.order == t.order; };
-    const auto found = std::find_if(report.stages.begin(), report.stages.end(), same);
-    if (found == report.stages.end()) {
-      report.stages.push_back(t);
-    } else {
-      found->seconds += t.seconds;
-    }
-  }
+// What the passes' orders added, in X, Y, Z.
+void addPassOrders(const BakeReport& pass, const std::array<Spectrum, kMaxChannels>& mix, BakeReport& report) {
   for (size_t k = 0; k < pass.orders.size(); ++k) {
     if (k == report.orders.size()) report.orders.push_back({pass.orders[k].order, Spectrum(0.0f), Spectrum(0.0f)});
     report.orders[k].mean_radiance += mixed(mix, pass.orders[k].mean_radiance);
     report.orders[k].mean_irradiance += mixed(mix, pass.orders[k].mean_irradiance);
   }
-  OrdersDecision& d = report.orders_decision;
-  d.automatic = pass.orders_decision.automatic;
-  d.tolerance = pass.orders_decision.tolerance;
-  d.cap = pass.orders_decision.cap;
-  d.converged = (index == 0 || d.converged) && pass.orders_decision.converged;
-  if (index == 0 || pass.orders_decision.last_order_share > d.last_order_share) {
-    d.last_order_share = pass.orders_decision.last_order_share;
-    d.worst_altitude_m = pass.orders_decision.worst_altitude_m;
-    d.worst_sun_zenith_deg = pass.orders_decision.worst_sun_zenith_deg;
-  }
-  d.mean_last_order_share = std::max(d.mean_last_order_share, pass.orders_decision.mean_last_order_share);
-  report.tail.applied = (index == 0 || report.tail.applied) && pass.tail.applied;
-  std::string wavelengths;
-  for (double nm : pass_wavelengths_nm) wavelengths += fmt::format("{}{}", wavelengths.empty() ? "" : " ", nm);
-  report.tail.reason +=
-      fmt::format("{}pass {} ({} nm): {}", index == 0 ? "" : "; ", index + 1, wavelengths, pass.tail.reason);
 }
-
-// The caller's progress with each stage named after its pass ("pass 2/4:
-// single_scattering"), so that a user sees which of the repeated stages runs.
-class PassProgress final : public ProgressSink {
- public:
-  PassProgress(ProgressSink& inner, size_t pass, size_t passes) : inner_(inner), pass_(pass), passes_(passes) {}
-  void beginStage(const std::string& name, size_t work_units) override {
-    inner_.beginStage(fmt::format("pass {}/{}: {}", pass_ + 1, passes_, name), work_units);
-  }
-  void advance(size_t units) override { inner_.advance(units); }
-  void endStage(double seconds) override { inner_.endStage(seconds); }
-
- private:
-  ProgressSink& inner_;
-  size_t pass_, passes_;
-};
 
 }  // namespace
 
@@ -135,9 +92,7 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
   int first_wavelength = 0;
   int orders_computed = 0;
   for (size_t g = 0; g < settled.colour_groups.size(); ++g) {
-    BakeConfig pass_config = settled;
-    pass_config.atmosphere = settled.colour_groups[g];
-    pass_config.colour_groups.clear();
+    const BakeConfig pass_config = passConfig(settled, g);
     const int lanes = pass_config.atmosphere.channelCount();
     PassProgress pass_progress(progress, g, settled.colour_groups.size());
     BakeOutput pass = bakeWavelengthPass(pass_config, threads, pass_progress);
@@ -172,8 +127,8 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
     }
     pass.report.stages.push_back(
         {"colour_sum", 0, std::chrono::duration<double>(std::chrono::steady_clock::now() - conversion_start).count()});
-    addPassReport(pass.report, mix, g, pass_config.atmosphere.wavelengths_nm, out.report);
-    out.report.threads = pass.report.threads;
+    addPassRun(pass.report, g, pass_config.atmosphere.wavelengths_nm, out.report);
+    addPassOrders(pass.report, mix, out.report);
     orders_computed = std::max(orders_computed, pass.file.orders_computed);
     first_wavelength += lanes;
   }
@@ -187,9 +142,7 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
   clearLeftOutTables(contents, xyz);
 
   BakeReport& report = out.report;
-  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  report.cpu_seconds = processCpuSeconds() - cpu_start;
-  report.peak_memory_mib = peakMemoryMiB();
+  finishPassesReport(start, cpu_start, report);
   out.file.config_toml = configToToml(settled);
   out.file.orders_computed = orders_computed;
   out.file.report_json = report.toJson();

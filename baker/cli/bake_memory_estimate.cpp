@@ -92,6 +92,14 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
                                      static_cast<uint64_t>(config.atmosphere.wavelengths_nm.size()), sizeof(double)});
     e.peak_bytes = sum({e.peak_bytes, e.kept_bytes, depths});
   }
+  if (config.atmosphere.storesLaneGroups() && config.colour_groups.size() > 1) {
+    // A spectral bake keeps every pass's tables for the file
+    // (baker/bake/spectral_bake.cpp): the earlier passes' beside the one
+    // running.
+    const uint64_t earlier_passes = config.colour_groups.size() - 1;
+    e.peak_bytes = sum({e.peak_bytes, product({earlier_passes, e.kept_bytes})});
+    e.kept_bytes = product({static_cast<uint64_t>(config.colour_groups.size()), e.kept_bytes});
+  }
   return e;
 }
 
@@ -110,8 +118,9 @@ double estimateBakeCoreSeconds(const BakeConfig& config) {
   const double texels = double(std::max(iteration.scattering_r, 0)) * std::max(iteration.scattering_mu, 0) *
                         std::max(iteration.scattering_mu_s, 0) * std::max(iteration.scattering_nu, 0);
   const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
-  // A colour bake runs the order loop once per pass of kMaxChannels wavelengths.
-  const double passes = config.atmosphere.storesCieXyz()
+  // A colour or spectral bake runs the order loop once per pass of
+  // kMaxChannels wavelengths.
+  const double passes = config.atmosphere.storesCieXyz() || config.atmosphere.storesLaneGroups()
                             ? std::ceil(static_cast<double>(config.atmosphere.wavelengths_nm.size()) / kMaxChannels)
                             : 1.0;
   // Rounded up to a tenth of a second: a time limit, not a measurement.

@@ -22,6 +22,9 @@ struct BakeMemoryEstimate {
 // Spectrum (kMaxChannels floats) whatever the channel count. Products that
 // would overflow 64 bits saturate at UINT64_MAX instead of wrapping round to
 // a small number. The process's own code and libraries are not included.
+// A colour bake adds its X, Y, Z sums beside one pass; a spectral bake keeps
+// every pass's tables, so its kept_bytes is the passes' and its peak holds
+// the earlier passes' tables beside the running one's.
 BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config);
 
 // Core-seconds a bake of `config` takes, estimated from its 4D table's texels

@@ -68,6 +68,17 @@ void runInfo(const std::string& path) {
   } else {
     fmt::print("channels:      {}\n", wavelengths);
   }
+  if (!c.lane_groups.empty()) {
+    // A spectral bake: its lane groups, one pass of the order loop each.
+    std::string groups;
+    for (const AtmosphereParameters& g : c.lane_groups) {
+      std::string nm;
+      for (double w : g.wavelengths_nm) nm += fmt::format("{}{}", nm.empty() ? "" : " ", w);
+      groups += fmt::format("{}{} nm", groups.empty() ? "" : "; ", nm);
+    }
+    fmt::print("lane groups:   {} of at most 4 wavelengths, each baked as one pass: {}\n", c.lane_groups.size(),
+               groups);
+  }
   fmt::print("radii:         bottom {} m, top {} m\n", c.atmosphere.bottom_radius_m, c.atmosphere.top_radius_m);
   fmt::print("sun domain:    zenith 0 to {} deg\n", c.atmosphere.sun_max_zenith_deg);
   fmt::print("orders:        {}\n", bake.orders_computed);

@@ -50,10 +50,15 @@ void appendInputCells(std::string& line, const CsvRow& row) {
 void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
   for (int c = 0; c < channels; ++c) fmt::format_to(std::back_inserter(line), ",{:.9g}", s[c]);
 }
+// A spectral bake's channels, all of them.
+void appendSpectrum(std::string& line, const std::vector<float>& s, int channels) {
+  for (int c = 0; c < channels; ++c) fmt::format_to(std::back_inserter(line), ",{:.9g}", s[c]);
+}
 
 // One output row in `line` (reused across rows): the query's own cells, then
-// the two looked-up spectra.
-const std::string& outputRow(std::string& line, const CsvRow& row, const Spectrum& first, const Spectrum& second,
+// the two looked-up spectra (Spectrum, or every channel of a spectral bake).
+template <typename Values>
+const std::string& outputRow(std::string& line, const CsvRow& row, const Values& first, const Values& second,
                              int channels) {
   line.clear();
   appendInputCells(line, row);
@@ -135,6 +140,13 @@ void runRadiance(const LookupOptions& o) {
       const double d = columns.distance_m ? v[*columns.distance_m] : 0.0;
       if (d > 0.0) requireOutput(o.bake_path, sky.outputs().radiance_to_points, "radiance_to_points");
       requireInsideRanges(q, row, columns, sky, o.bake_path);
+      if (sky.laneGroupCount() > 1) {
+        // A spectral bake: every lane group's channels.
+        const ChannelRadianceAndTransmittance r = d > 0.0 ? sky.channelRadianceToPoint(camera, camera + view * d, sun)
+                                                          : sky.channelSkyRadiance(camera, view, sun);
+        emit(outputRow(line, row, r.radiance, r.transmittance, n));
+        continue;
+      }
       const RadianceAndTransmittance r =
           d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
       emit(outputRow(line, row, r.radiance, r.transmittance, n));
@@ -158,6 +170,11 @@ void runIrradiance(const LookupOptions& o) {
       q.requireRange(row, sun_zenith, 0.0, kMaxZenithAngle_deg);
       const glm::dvec3 point = cameraAtAltitude(sky.atmosphere().bottom_radius_m, row.values[altitude]);
       const glm::dvec3 sun = directionFromZenithAzimuthDeg(row.values[sun_zenith], 0.0);
+      if (sky.laneGroupCount() > 1) {
+        const ChannelSunAndSkyIrradiance e = sky.channelIrradiance(point, {0.0, 0.0, 1.0}, sun);
+        emit(outputRow(line, row, e.sky, e.sun, n));
+        continue;
+      }
       const SunAndSkyIrradiance e = sky.irradiance(point, {0.0, 0.0, 1.0}, sun);
       emit(outputRow(line, row, e.sky, e.sun, n));
     }

@@ -165,14 +165,19 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
   spec.attribute("skybake:sun_azimuth_deg", static_cast<float>(view.sun_azimuth_deg));
   spec.attribute("skybake:sun_angular_radius_rad", static_cast<float>(sky.atmosphere().sun_angular_radius_rad));
   spec.attribute("skybake:sun_in_image", view.sun_disk ? 1 : 0);
-  // The sun at the camera, on a surface facing it (the part the moon leaves).
-  const Spectrum sun_irradiance = sky.sunIrradiance(cameraPosition(sky, view), sun, sun, view.moon);
+  // The sun at the camera, on a surface facing it (the part the moon leaves),
+  // every lane group's channels.
+  std::vector<float> irradiance;
+  for (int g = 0; g < sky.laneGroupCount(); ++g) {
+    const Sky& group = sky.laneGroup(g);
+    const Spectrum lanes = group.sunIrradiance(cameraPosition(group, view), sun, sun, view.moon);
+    irradiance.insert(irradiance.end(), &lanes[0], &lanes[0] + group.channelCount());
+  }
   if (view.moon.present()) {
     const glm::dvec3 m = view.moon.centre_m;
     spec.attribute("skybake:moon_centre_m", fmt::format("{} {} {}", m.x, m.y, m.z));
     spec.attribute("skybake:moon_radius_m", static_cast<float>(view.moon.radius_m));
   }
-  std::vector<float> irradiance(&sun_irradiance[0], &sun_irradiance[0] + sky.channelCount());
   // Text, as the wavelengths: OpenImageIO would store a float array as a
   // v2f, a v3f or a floatvector depending on the number of channels.
   // W m^-2 nm^-1 per wavelength; a colour bake's X, Y, Z in W m^-2.
@@ -220,6 +225,33 @@ void writeImage(const std::string& path, const Sky& sky, const SkyView& view, co
   }
   if (!ok || !out->close()) throw Error(ErrorKind::Internal, fmt::format("{}: {}", path, out->geterror()));
   writeFileContentsAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
+}
+
+// Every channel's image: each lane group's from the backend, the sun disk
+// added, its channels put in their place among the bake's (one group for
+// any bake but a spectral one).
+template <typename Backend>
+SpectralImage renderChannels(const Backend& backend, const Sky& sky, const SkyView& view) {
+  if (sky.laneGroupCount() == 1) {
+    SpectralImage image = backend.render(sky, view);
+    addSunDisk(sky, view, image);
+    return image;
+  }
+  const size_t pixels = static_cast<size_t>(view.width) * view.height;
+  const size_t channels = static_cast<size_t>(sky.channelCount());
+  SpectralImage joined{view.width, view.height, sky.channelCount(), std::vector<float>(pixels * channels, 0.0f)};
+  for (int g = 0; g < sky.laneGroupCount(); ++g) {
+    const Sky& group = sky.laneGroup(g);
+    SpectralImage part = backend.render(group, view);
+    addSunDisk(group, view, part);
+    const size_t first = static_cast<size_t>(sky.laneGroupFirstChannel(g));
+    for (size_t p = 0; p < pixels; ++p) {
+      for (int c = 0; c < part.channels; ++c) {
+        joined.radiance[p * channels + first + c] = part.radiance[p * part.channels + c];
+      }
+    }
+  }
+  return joined;
 }
 
 // The image from the chosen backend. The GL context is made before the
@@ -294,8 +326,7 @@ void runRender(RenderOptions o) {
   requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
                          static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) *
                              (kImageBytesPerPixel + kImageBytesPerPixelChannel * sky.channelCount()));
-  SpectralImage image = backend.render(sky, v);
-  addSunDisk(sky, v, image);
+  const SpectralImage image = renderChannels(backend, sky, v);
   writeImage(o.output_path, sky, v, image, o.channels == "spectral", o.exposure, tone_map);
 }
 

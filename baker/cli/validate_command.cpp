@@ -11,6 +11,7 @@
 #include "baker/cli/reference_options.h"
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/terminal_progress.h"
+#include "baker/cli/wavelength_channels.h"
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/colour_error.h"
 #include "baker/validation/colour_reference.h"
@@ -97,6 +98,7 @@ void runValidate(const ValidateOptions& o) {
   const Sky sky = Sky::load(o.bake_path);
   requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
+  requireOneLaneGroup(a, o.bake_path, "validate");
   // A colour bake's X, Y, Z are compared with the colour reference only:
   // its atmosphere's X, Y, Z coefficients are means no wavelength has.
   const bool colour_bake = a.storesCieXyz();

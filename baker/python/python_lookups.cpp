@@ -72,8 +72,11 @@ Spectra spectra(size_t n, int channels) {
   return Spectra({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(channels)});
 }
 
-void store(float* out, size_t i, int channels, const Spectrum& s) {
-  for (int c = 0; c < channels; ++c) out[i * channels + c] = s[c];
+// Row i's lanes of lane group g (a spectral bake's channels 4 g.., or the
+// whole row of any other bake) from `s`, the group's lookup.
+void storeGroup(float* out, size_t i, int channels, const Sky& sky, int g, const Spectrum& s) {
+  const int first = sky.laneGroupFirstChannel(g);
+  for (int c = 0; c < sky.laneGroup(g).channelCount(); ++c) out[i * channels + first + c] = s[c];
 }
 
 py::tuple radianceRows(const Sky& sky, const Rows& from, const Rows& to, const Rows& sun, const Rows& shadow_m,
@@ -89,10 +92,15 @@ py::tuple radianceRows(const Sky& sky, const Rows& from, const Rows& to, const R
   float *r = radiance.mutable_data(), *t = transmittance.mutable_data();
   forRows(n, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
-      const RadianceAndTransmittance v = to_point ? sky.radianceToPoint(row3(a, i), row3(b, i), row3(s, i), shadow[i])
-                                                  : sky.skyRadiance(row3(a, i), row3(b, i), row3(s, i), shadow[i]);
-      store(r, i, channels, v.radiance);
-      store(t, i, channels, v.transmittance);
+      // Every lane group's channels: one group but for a spectral bake.
+      for (int g = 0; g < sky.laneGroupCount(); ++g) {
+        const Sky& group = sky.laneGroup(g);
+        const RadianceAndTransmittance v = to_point
+                                               ? group.radianceToPoint(row3(a, i), row3(b, i), row3(s, i), shadow[i])
+                                               : group.skyRadiance(row3(a, i), row3(b, i), row3(s, i), shadow[i]);
+        storeGroup(r, i, channels, sky, g, v.radiance);
+        storeGroup(t, i, channels, sky, g, v.transmittance);
+      }
     }
   });
   return py::make_tuple(radiance, transmittance);
@@ -115,24 +123,33 @@ py::tuple eclipseRows(const Sky& sky, const Rows& camera, const Rows& view, cons
   forRows(n, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const Moon moon{row3(m, i), radius[i]};
-      if (irradiance) {
-        const SunAndSkyIrradiance e = sky.irradiance(row3(a, i), row3(b, i), row3(s, i), moon);
-        store(f, i, channels, e.sun);
-        store(g, i, channels, e.sky);
-      } else {
-        const RadianceAndTransmittance v = sky.skyRadiance(row3(a, i), row3(b, i), row3(s, i), moon);
-        store(f, i, channels, v.radiance);
-        store(g, i, channels, v.transmittance);
+      for (int lg = 0; lg < sky.laneGroupCount(); ++lg) {
+        const Sky& group = sky.laneGroup(lg);
+        if (irradiance) {
+          const SunAndSkyIrradiance e = group.irradiance(row3(a, i), row3(b, i), row3(s, i), moon);
+          storeGroup(f, i, channels, sky, lg, e.sun);
+          storeGroup(g, i, channels, sky, lg, e.sky);
+        } else {
+          const RadianceAndTransmittance v = group.skyRadiance(row3(a, i), row3(b, i), row3(s, i), moon);
+          storeGroup(f, i, channels, sky, lg, v.radiance);
+          storeGroup(g, i, channels, sky, lg, v.transmittance);
+        }
       }
     }
   });
   return py::make_tuple(first, second);
 }
 
-py::dict atmosphereDict(const AtmosphereParameters& a) {
-  auto spectrum = [&](const Spectrum& s) {
+// The atmosphere the file states, every per-channel value in channel order
+// (a spectral bake's from its lane groups).
+py::dict atmosphereDict(const Sky& sky) {
+  const AtmosphereParameters& a = sky.atmosphere();
+  auto spectrum = [&](Spectrum AtmosphereParameters::*quantity) {
     std::vector<double> v;
-    for (int c = 0; c < a.channelCount(); ++c) v.push_back(s[c]);
+    for (int g = 0; g < sky.laneGroupCount(); ++g) {
+      const Sky& group = sky.laneGroup(g);
+      for (int c = 0; c < group.channelCount(); ++c) v.push_back((group.atmosphere().*quantity)[c]);
+    }
     return v;
   };
   py::dict d;
@@ -140,15 +157,15 @@ py::dict atmosphereDict(const AtmosphereParameters& a) {
   d["channel_kind"] = a.storesCieXyz() ? "cie_xyz" : "wavelengths";
   d["bottom_radius_m"] = a.bottom_radius_m;
   d["top_radius_m"] = a.top_radius_m;
-  d["ground_albedo"] = spectrum(a.ground_albedo);
-  d["sun_irradiance"] = spectrum(a.sun_irradiance);
+  d["ground_albedo"] = spectrum(&AtmosphereParameters::ground_albedo);
+  d["sun_irradiance"] = spectrum(&AtmosphereParameters::sun_irradiance);
   d["sun_angular_radius_rad"] = a.sun_angular_radius_rad;
   d["sun_max_zenith_deg"] = a.sun_max_zenith_deg;
-  d["rayleigh_scattering"] = spectrum(a.rayleigh_scattering);
-  d["mie_scattering"] = spectrum(a.mie_scattering);
-  d["mie_extinction"] = spectrum(a.mie_extinction);
+  d["rayleigh_scattering"] = spectrum(&AtmosphereParameters::rayleigh_scattering);
+  d["mie_scattering"] = spectrum(&AtmosphereParameters::mie_scattering);
+  d["mie_extinction"] = spectrum(&AtmosphereParameters::mie_extinction);
   d["mie_phase_g"] = a.mie_phase_g;
-  d["absorption_extinction"] = spectrum(a.absorption_extinction);
+  d["absorption_extinction"] = spectrum(&AtmosphereParameters::absorption_extinction);
   return d;
 }
 
@@ -189,9 +206,11 @@ void registerLookups(py::module_& m) {
              float *d = direct.mutable_data(), *f = diffuse.mutable_data();
              forRows(n, [&](size_t first, size_t last) {
                for (size_t i = first; i < last; ++i) {
-                 const SunAndSkyIrradiance e = sky.irradiance(row3(p, i), row3(q, i), row3(s, i));
-                 store(d, i, channels, e.sun);
-                 store(f, i, channels, e.sky);
+                 for (int g = 0; g < sky.laneGroupCount(); ++g) {
+                   const SunAndSkyIrradiance e = sky.laneGroup(g).irradiance(row3(p, i), row3(q, i), row3(s, i));
+                   storeGroup(d, i, channels, sky, g, e.sun);
+                   storeGroup(f, i, channels, sky, g, e.sky);
+                 }
                }
              });
              return py::make_tuple(direct, diffuse);
@@ -205,7 +224,11 @@ void registerLookups(py::module_& m) {
              const double *pa = a.data(), *pb = b.data();
              float* o = out.mutable_data();
              forRows(n, [&](size_t first, size_t last) {
-               for (size_t i = first; i < last; ++i) store(o, i, channels, sky.transmittance(row3(pa, i), row3(pb, i)));
+               for (size_t i = first; i < last; ++i) {
+                 for (int g = 0; g < sky.laneGroupCount(); ++g) {
+                   storeGroup(o, i, channels, sky, g, sky.laneGroup(g).transmittance(row3(pa, i), row3(pb, i)));
+                 }
+               }
              });
              return out;
            })
@@ -213,7 +236,9 @@ void registerLookups(py::module_& m) {
           "solar_radiance",
           [](const Sky& sky) {
             Spectra out = spectra(1, sky.channelCount());
-            store(out.mutable_data(), 0, sky.channelCount(), sky.solarRadiance());
+            for (int g = 0; g < sky.laneGroupCount(); ++g) {
+              storeGroup(out.mutable_data(), 0, sky.channelCount(), sky, g, sky.laneGroup(g).solarRadiance());
+            }
             return out.reshape({sky.channelCount()});
           },
           "Radiance of the sun disk above the atmosphere, W m^-2 sr^-1 nm^-1, one value per channel.")
@@ -226,11 +251,10 @@ void registerLookups(py::module_& m) {
       .def_property_readonly("channel_names", [](const Sky& sky) { return sky.channels().names; })
       .def_property_readonly("luminance_weights",
                              [](const Sky& sky) {
-                               std::vector<double> w;
-                               for (int c = 0; c < sky.channelCount(); ++c) w.push_back(sky.luminanceWeights()[c]);
-                               return w;
+                               const std::vector<float>& weights = sky.channelLuminanceWeights();
+                               return std::vector<double>(weights.begin(), weights.end());
                              })
-      .def_property_readonly("atmosphere", [](const Sky& sky) { return atmosphereDict(sky.atmosphere()); })
+      .def_property_readonly("atmosphere", [](const Sky& sky) { return atmosphereDict(sky); })
       .def_property_readonly("bake_report_json", &Sky::bakeReportJson)
       .def_property_readonly("baked_ranges",
                              [](const Sky& sky) {

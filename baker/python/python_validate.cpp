@@ -16,6 +16,7 @@
 #include "baker/validation/colour_reference.h"
 #include "baker/validation/validation.h"
 #include "baker/validation/validation_queries.h"
+#include "data_formats/error.h"
 #include "runtime/sky.h"
 
 namespace py = pybind11;
@@ -31,6 +32,11 @@ py::object validate(const std::string& bake_path, const std::string& queries_nam
     const ScopedOpenMpThreads thread_count(threads);
     const Sky sky = Sky::load(bake_path);
     const AtmosphereParameters& a = sky.atmosphere();
+    if (a.storesLaneGroups()) {
+      throw Error(ErrorKind::BadInput, bake_path +
+                                           ": a spectral bake of more than 4 wavelengths: validate compares at "
+                                           "most 4 wavelength channels with the reference solver");
+    }
     std::optional<ColourReferenceAtmospheres> colour;
     if (!colour_config.empty()) {
       requireConfigOfBake(colour_config, a);

@@ -1,6 +1,8 @@
 // Luminance of a bake's channel values, as one weight per channel.
 #pragma once
 
+#include <vector>
+
 #include "data_formats/atmosphere_parameters.h"
 #include "data_formats/spectrum.h"
 
@@ -15,6 +17,12 @@ namespace skybake::colour {
 //    (a one-wavelength bake is flat: 683 times the integral of ybar).
 // Lanes past the bake's channels are 0, so the luminance of a Spectrum is
 // glm::dot(weights, value).
+// A spectral atmosphere (more than 4 wavelengths) has no lanes for them:
+// its weights are 0 here, wavelengthLuminanceWeights gives them.
 Spectrum luminanceWeights(const AtmosphereParameters& a);
+
+// The wavelength channels' weights above for any number of wavelengths, in
+// their order: 683 lm/W times each one's ybar weight in SpectralToXyz.
+std::vector<float> wavelengthLuminanceWeights(const std::vector<double>& wavelengths_nm);
 
 }  // namespace skybake::colour

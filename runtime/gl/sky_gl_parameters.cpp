@@ -66,6 +66,14 @@ Spectrum columnMieSharePower(const Sky& sky, const MultipleScatteringPhase& shap
 }  // namespace
 
 SkyUniformBlock skyUniformBlock(const Sky& sky) {
+  // The shaders hold 4 lanes: a spectral bake goes to them one lane group
+  // (sky.laneGroup(g)) at a time, as skybake render --backend gl does.
+  if (sky.laneGroupCount() > 1) {
+    throw Error(ErrorKind::BadInput,
+                fmt::format("the GLSL runtime takes at most 4 channels: this spectral bake has {} (upload each "
+                            "Sky::laneGroup(g) of it instead)",
+                            sky.channelCount()));
+  }
   SkyUniformBlock b{};
   const AtmosphereParameters& a = sky.atmosphere();
   const AtmosphereDomain& d = sky.sampler().domain();

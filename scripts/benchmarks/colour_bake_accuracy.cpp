@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/bake/bake.h"
+#include "baker/bake/bake_passes.h"
 #include "baker/bake/bake_policy.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
@@ -67,11 +68,8 @@ class Comparison {
     SilentProgress quiet;
     colour_.emplace_back(bakeAtmosphere(config, threads, quiet).file);
     const BakeConfig settled = settledBakeConfig(config);
-    for (const AtmosphereParameters& g : settled.colour_groups) {
-      BakeConfig pass = settled;
-      pass.atmosphere = g;
-      pass.colour_groups.clear();
-      passes_.emplace_back(bakeAtmosphere(pass, threads, quiet).file);
+    for (size_t g = 0; g < settled.colour_groups.size(); ++g) {
+      passes_.emplace_back(bakeAtmosphere(passConfig(settled, g), threads, quiet).file);
     }
   }
   const Sky& colour() const { return colour_[0]; }

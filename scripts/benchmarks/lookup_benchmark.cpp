@@ -2,7 +2,8 @@
 // entry point, over view directions spread over the whole sphere from a
 // camera 1 km up, with the sun 30 deg from the zenith (day: table lookups
 // only) and 95 deg (twilight: single scattering integrated along each ray).
-// The bake comes from $SKYBAKE_BAKE (scripts/bench_lookup.sh).
+// The bake comes from $SKYBAKE_BAKE (scripts/bench_lookup.sh); on a
+// spectral bake only BM_ChannelSkyRadiance runs (the others take 4 lanes).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -62,6 +63,24 @@ void BM_SkyRadianceScalar(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_SkyRadianceScalar)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95);
+
+// Every channel of any bake, a spectral one's lane groups included
+// (Sky::channelSkyRadiance): one skyRadiance per lane group and the joining.
+void BM_ChannelSkyRadiance(benchmark::State& state) {
+  const skybake::Sky& sky = benchSky();
+  const Directions d = randomDirections(kRays);
+  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 1000.0);
+  const glm::dvec3 sun = sunAt(state);
+  size_t i = 0;
+  for (auto _ : state) {
+    const auto v = sky.channelSkyRadiance(camera, glm::dvec3(d.x[i], d.y[i], d.z[i]), sun);
+    benchmark::DoNotOptimize(v);
+    i = (i + 1) % kRays;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["channels"] = sky.channelCount();
+}
+BENCHMARK(BM_ChannelSkyRadiance)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95);
 
 void BM_SkyRadianceBatch(benchmark::State& state) {
   const skybake::Sky& sky = benchSky();

@@ -22,6 +22,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/bake/bake.h"
+#include "baker/bake/bake_passes.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/render/image_colour.h"
 #include "data_formats/bake_file_attributes.h"
@@ -82,11 +83,8 @@ class ColourBakeTest : public ::testing::Test {
     colour_ = new BakeOutput(bakeAtmosphere(*config_, 2, quiet));
     const BakeConfig settled = settledBakeConfig(*config_);
     passes_ = new std::vector<BakeOutput>();
-    for (const AtmosphereParameters& g : settled.colour_groups) {
-      BakeConfig pass = settled;
-      pass.atmosphere = g;
-      pass.colour_groups.clear();
-      passes_->push_back(bakeAtmosphere(pass, 2, quiet));
+    for (size_t g = 0; g < settled.colour_groups.size(); ++g) {
+      passes_->push_back(bakeAtmosphere(passConfig(settled, g), 2, quiet));
     }
   }
   static void TearDownTestSuite() {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "baker/render/image_colour.h"
 #include "data_formats/angles.h"
 #include "runtime/colour/luminance.h"
 #include "runtime/sky.h"
@@ -30,12 +31,15 @@ std::filesystem::path workDir() {
   return dir;
 }
 
-// Runs skybake render with `arguments`; its exit status.
-int render(const std::string& arguments) {
-  const std::string command = std::string(SKYBAKE_BINARY) + " render " + kBake + " " + arguments + " 2>/dev/null";
+// Runs skybake with `arguments`; its exit status.
+int runSkybake(const std::string& arguments) {
+  const std::string command = std::string(SKYBAKE_BINARY) + " " + arguments + " 2>/dev/null";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
+
+// Runs skybake render of the test bake with `arguments`; its exit status.
+int render(const std::string& arguments) { return runSkybake(std::string("render ") + kBake + " " + arguments); }
 
 struct ExrImage {
   OIIO::ImageSpec spec;
@@ -136,6 +140,37 @@ TEST(RenderExr, StatesColourSpaceUnitsAndSun) {
   // transmittance averaged over the disk instead of at its centre (1e-4 at
   // 40 deg), plus float rounding of the sun's 1e9 cd m^-2 pixels.
   EXPECT_NEAR(sun_lx, illuminance_lx, 0.005 * illuminance_lx);
+}
+
+// A spectral bake of 6 wavelengths (two lane groups) renders every channel,
+// and its sRGB image is the colour of those 6 channels.
+TEST(RenderExr, SpectralBakeWritesEveryChannelAndConvertsThemAll) {
+  const std::filesystem::path bake = workDir() / "many.exr";
+  ASSERT_EQ(runSkybake(std::string("bake ") + SKYBAKE_SOURCE_DIR + "/tests/cli/small_earth_many.toml -o " +
+                       bake.string() + " --threads 2"),
+            0);
+  const std::filesystem::path spectral = workDir() / "many_spectral.exr", rgb = workDir() / "many_rgb.exr";
+  const std::string view = "render " + bake.string() + " " + kView;
+  ASSERT_EQ(runSkybake(view + " --channels spectral -o " + spectral.string()), 0);
+  ASSERT_EQ(runSkybake(view + " -o " + rgb.string()), 0);
+  const ExrImage s = readExr(spectral), c = readExr(rgb);
+  ASSERT_EQ(s.spec.nchannels, 6);
+  std::vector<std::string> names = s.spec.channelnames;
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"400nm", "460nm", "520nm", "580nm", "640nm", "700nm"}));
+  EXPECT_EQ(s.spec.get_string_attribute("skybake:wavelengths_nm"), "400 460 520 580 640 700");
+  // OpenImageIO gives the channels in the file's (alphabetical) order,
+  // which for these names is the wavelengths' order.
+  const std::vector<double> wavelengths = {400, 460, 520, 580, 640, 700};
+  const SpectralImage image{s.spec.width, s.spec.height, 6, s.pixels};
+  const std::vector<float> expected = linearSrgbImage(image, wavelengths, colour::kMaxLuminousEfficacy_lm_per_W);
+  ASSERT_EQ(c.pixels.size(), expected.size());
+  // The same float conversion of the same float radiances: equal but for
+  // rounding of the summation order, far below 1e-5 of a pixel's value.
+  for (size_t i = 0; i < expected.size(); ++i) {
+    ASSERT_NEAR(c.pixels[i], expected[i], 1e-5 * std::abs(expected[i]) + 1e-30) << "value " << i;
+  }
+  std::filesystem::remove_all(workDir());
 }
 
 TEST(RenderExr, SpectralChannelsAreTheBakesWavelengths) {

@@ -147,7 +147,7 @@ kept "$work/kept.exr" "twice_680.toml: channels.wavelengths_nm[1] = 680: repeats
 # More wavelengths than one file holds are refused, not truncated; a spectrum
 # file's bad line is named with the key that reads it.
 sed '5s/.*/wavelengths_nm = { min_nm = 380, max_nm = 780, count = 16 }/' "$small" >"$work/wide.toml"
-kept "$work/kept.exr" "wide.toml:5: channels.wavelengths_nm = { count = 16, max_nm = 780, min_nm = 380 }: 16 wavelengths, but one bake file holds at most 4: bake several files" -- bake "$work/wide.toml" -o "$work/kept.exr"
+kept "$work/kept.exr" "wide.toml:5: channels.wavelengths_nm = { count = 16, max_nm = 780, min_nm = 380 }: 16 wavelengths, but a wavelength bake holds at most 4: store them all with channels.store = \"spectral\"" -- bake "$work/wide.toml" -o "$work/kept.exr"
 printf 'wavelength_nm,irradiance\n400,1\n500,2\n450,3\n' >"$work/unsorted.csv"
 sed '13s/.*/irradiance = { spectrum_csv = "unsorted.csv" }/' "$small" >"$work/unsorted_sun.toml"
 kept "$work/kept.exr" "unsorted_sun.toml:13: sun.irradiance.spectrum_csv: $work/unsorted.csv:4: wavelength 450 nm: is below line 3's 500 nm" -- bake "$work/unsorted_sun.toml" -o "$work/kept.exr"

@@ -38,7 +38,8 @@ density = [{ exp_term = 1.0, exp_scale = -8.333e-4 }]
 
 TEST(ColourConfig, MoreThanFourWavelengthsNeedColourStorage) {
   test::expectConfigRejected(earthWith("wavelengths_nm = { min_nm = 380, max_nm = 780, count = 5 }"),
-                             {"channels.wavelengths_nm", "5 wavelengths, but one bake file holds at most 4"});
+                             {"channels.wavelengths_nm", "5 wavelengths, but a wavelength bake holds at most 4",
+                              "\"spectral\"", "\"cie_xyz\""});
 }
 
 TEST(ColourConfig, ColourStorageTakesAtMostSixtyFour) {

@@ -67,7 +67,8 @@ TEST_F(SpectralConfig, RangeIsEvenlySpacedWithBothEnds) {
 
 TEST_F(SpectralConfig, MoreWavelengthsThanOneFileHoldsAreRefused) {
   expectRejected(config("{ min_nm = 380, max_nm = 780, count = 16 }", "[1]"),
-                 {"channels.wavelengths_nm", "16 wavelengths", "at most 4", "several files"});
+                 {"channels.wavelengths_nm", "16 wavelengths", "at most 4", "channels.store = \"spectral\"",
+                  "channels.store = \"cie_xyz\""});
   expectRejected(config("[400, 450, 500, 550, 600]", "[1, 1, 1, 1, 1]"),
                  {"channels.wavelengths_nm", "5 wavelengths", "at most 4"});
   expectRejected(config("{ min_nm = 380, max_nm = 780, count = 1 }", "[1]"), {"channels.wavelengths_nm.count"});

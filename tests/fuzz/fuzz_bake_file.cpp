@@ -18,18 +18,27 @@ namespace {
 // The name error messages must start with.
 constexpr const char* kSource = "fuzz.exr";
 
-void expectTableSizes(const skybake::BakeFile& bake) {
-  const skybake::TextureSizes& s = bake.contents.sizes;
-  const skybake::BakeTables& t = bake.tables;
+// One lane group's tables (the bake's own, or a spectral bake's group g).
+bool tableSizesMatch(const skybake::BakeContents& contents, const skybake::AtmosphereParameters& group,
+                     const skybake::BakeTables& t) {
+  const skybake::TextureSizes& s = contents.sizes;
   const size_t texels_4d = static_cast<size_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu;
-  const bool ok =
-      t.optical_depth.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
-      t.irradiance.texels.size() ==
-          (bake.contents.outputs.ground_irradiance ? static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r : 0) &&
-      t.single_rayleigh.texels.size() == texels_4d &&
-      t.single_mie.texels.size() == (skybake::bakeStoresSingleMie(bake.contents.atmosphere) ? texels_4d : 0) &&
-      t.multiple_scattering.texels.size() == texels_4d &&
-      t.multiple_density.texels.size() == (bake.contents.outputs.radiance_to_points ? texels_4d : 0);
+  return t.optical_depth.texels.size() == static_cast<size_t>(s.transmittance_mu) * s.transmittance_r &&
+         t.irradiance.texels.size() ==
+             (contents.outputs.ground_irradiance ? static_cast<size_t>(s.irradiance_mu_s) * s.irradiance_r : 0) &&
+         t.single_rayleigh.texels.size() == texels_4d &&
+         t.single_mie.texels.size() == (skybake::bakeStoresSingleMie(group) ? texels_4d : 0) &&
+         t.multiple_scattering.texels.size() == texels_4d &&
+         t.multiple_density.texels.size() == (contents.outputs.radiance_to_points ? texels_4d : 0);
+}
+
+void expectTableSizes(const skybake::BakeFile& bake) {
+  const skybake::BakeContents& c = bake.contents;
+  bool ok = c.lane_groups.empty() ? tableSizesMatch(c, c.atmosphere, bake.tables)
+                                  : bake.lane_group_tables.size() == c.lane_groups.size();
+  for (size_t g = 0; ok && g < bake.lane_group_tables.size(); ++g) {
+    ok = tableSizesMatch(c, c.lane_groups[g], bake.lane_group_tables[g]);
+  }
   if (!ok) skybake::fuzz::finding("accepted bake's tables do not match its attributes", "fuzz.exr");
 }
 

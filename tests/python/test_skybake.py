@@ -147,6 +147,35 @@ def test_bad_input_raises_badinput_with_the_command_lines_message(sky, tmp_path)
     assert not (tmp_path / "x.exr").exists()
 
 
+def test_a_spectral_bakes_lookups_give_every_channel_as_the_command_line(tmp_path):
+    many = os.path.join(SOURCE, "tests", "cli", "small_earth_many.toml")
+    bake = tmp_path / "many.exr"
+    subprocess.run([BINARY, "bake", many, "-o", str(bake), "--threads", "1"], check=True, capture_output=True)
+    sky = skybake.Sky(bake)
+    assert sky.channel_count == 6 and len(sky.wavelengths_nm) == 6
+    assert len(sky.atmosphere["sun_irradiance"]) == 6
+    assert sky.luminance(np.ones(6)) > 0  # the ybar weights of all 6 wavelengths
+    queries = [(0, 30, 0, 0, 0), (1000, 85, 89, 10, 0), (50, 95, 80, 0, 0), (10, 45, 80, 30, 20000)]
+    text = "altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m\n"
+    text += "".join(",".join(str(v) for v in q) + "\n" for q in queries)
+    out = subprocess.run([BINARY, "lookup", "radiance", str(bake), "--queries", "/dev/stdin"], input=text,
+                         capture_output=True, text=True, check=True).stdout
+    rows = list(csv.DictReader(io.StringIO(out)))
+    expected = np.array([[float(r[k]) for k in r if k.startswith("radiance_")] for r in rows], dtype=np.float32)
+    assert expected.shape == (4, 6)
+    bottom = sky.atmosphere["bottom_radius_m"]
+    for q, want in zip(queries, expected):
+        camera = np.array([0.0, 0.0, bottom + q[0]])
+        view, sun = direction(q[2], q[3]), direction(q[1], 0.0)
+        if q[4] > 0:
+            got = sky.radiance_to_point(camera, camera + view * q[4], sun)[0]
+        else:
+            got = sky.sky_radiance(camera, view, sun)[0]
+        # %.9g round-trips a float32: the same values bit for bit.
+        np.testing.assert_array_equal(got, want)
+    assert sky.solar_radiance().shape == (6,)
+
+
 def test_bake_from_a_dict_gives_the_same_file_as_the_command_line(tmp_path):
     config = tomllib.load(open(SMALL_EARTH, "rb"))
     calls = []
