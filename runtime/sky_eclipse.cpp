@@ -17,24 +17,10 @@
 namespace skybake {
 namespace {
 
-// Below this share of the uneclipsed integral, the ratio of the two
-// integrals is taken as the eclipsed integral alone: a sun already set
-// along the whole ray leaves both at rounding level, whose ratio is noise.
-constexpr float kSmallestUneclipsedSingle = 1e-30f;
-
-// The sky irradiance's directions under an eclipse: cosine-weighted over
-// the hemisphere, kIrradianceBands bands of equal weight in the zenith
-// angle's sine squared times kIrradianceAzimuths azimuths. The plain and the
-// eclipsed sky are summed over the same directions and only their ratio is
-// used, so the rule's error (the sky near the sun, the horizon's glow)
-// largely cancels; 48 directions put one about every 30 deg.
-constexpr int kIrradianceBands = 6;
-constexpr int kIrradianceAzimuths = 8;
-
 Spectrum eclipsedShare(const Spectrum& eclipsed, const Spectrum& plain) {
   Spectrum share(0.0f);
   for (int c = 0; c < kMaxChannels; ++c) {
-    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
+    share[c] = plain[c] > kEclipseSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
   }
   return share;
 }
@@ -137,21 +123,17 @@ Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dve
   const glm::dvec3 east = glm::normalize(glm::cross(helper, up)), north = glm::cross(up, east);
   const Spectrum skylight = eclipseSkylight(from, sun_dir, moon);
   Spectrum eclipsed(0.0f), plain(0.0f);
-  for (int b = 0; b < kIrradianceBands; ++b) {
-    const double sin_squared = (b + 0.5) / kIrradianceBands;
+  for (int b = 0; b < kEclipseIrradianceBands; ++b) {
+    const double sin_squared = (b + 0.5) / kEclipseIrradianceBands;
     const double sin_theta = std::sqrt(sin_squared), cos_theta = std::sqrt(1.0 - sin_squared);
-    for (int j = 0; j < kIrradianceAzimuths; ++j) {
-      const double phi = 2.0 * kPi * (j + 0.5 * (b % 2)) / kIrradianceAzimuths;
+    for (int j = 0; j < kEclipseIrradianceAzimuths; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5 * (b % 2)) / kEclipseIrradianceAzimuths;
       const glm::dvec3 dir = up * cos_theta + (east * std::cos(phi) + north * std::sin(phi)) * sin_theta;
       eclipsed += skyRadiance(from, dir, sun_dir, moon, skylight).radiance;
       plain += skyRadiance(from, dir, sun_dir).radiance;
     }
   }
-  Spectrum share(0.0f);
-  for (int c = 0; c < kMaxChannels; ++c) {
-    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
-  }
-  return share;
+  return eclipsedShare(eclipsed, plain);
 }
 
 }  // namespace skybake
