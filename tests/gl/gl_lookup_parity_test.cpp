@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -664,6 +665,37 @@ TEST_F(GlParity, EclipseSunDiskPastMoon) {
   // Both kinds of direction are there: the test sees the moon's limb.
   EXPECT_GT(inside, 10);
   EXPECT_LT(inside, static_cast<int>(queries.size()) - 10);
+}
+
+// Hostile moons, as the C++ eclipse tests take them: a camera inside the
+// moon, a moon bigger than its distance, a small near one, a centre that is
+// not a number: every GL output finite and not negative.
+TEST_F(GlParity, EclipseHostileMoonsAreFinite) {
+  const Sky& sky = eclipseSky();
+  const GlLookups& gl = eclipseLookups();
+  const glm::vec3 camera(0.0f, 0.0f, static_cast<float>(sky.atmosphere().bottom_radius_m + 1000.0));
+  const glm::vec3 sun = sunAt(50.0);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const glm::vec4 moons[] = {glm::vec4(camera, 5000.0f), glm::vec4(camera + sun * 1e9f, 1e9f),
+                             glm::vec4(camera + sun * 20e3f, 3e3f), glm::vec4(nan, 0.0f, 0.0f, 1.7e6f)};
+  std::vector<Query> queries;
+  for (const glm::vec4& moon : moons) {
+    for (const glm::vec3& d : {sunAt(0.0), sunAt(50.0), sunAt(89.0, 90.0), sunAt(120.0)}) {
+      queries.push_back({Kind::EclipseReceived, camera, d, sun, 0.0f, moon});
+      queries.push_back({Kind::EclipseSun, camera, d, sun, 0.0f, moon});
+    }
+    queries.push_back({Kind::EclipseIrradiance, camera, glm::vec3(0.0f, 0.0f, 1.0f), sun, 0.0f, moon});
+    queries.push_back({Kind::EclipseSkylightAndSun, camera, sun, sun, 0.0f, moon});
+  }
+  const Outputs out = gl.evaluate(queries);
+  for (size_t i = 0; i < queries.size(); ++i) {
+    for (int c = 0; c < 4; ++c) {
+      EXPECT_TRUE(std::isfinite(out.first[i][c]) && out.first[i][c] >= 0.0f)
+          << "query " << i << ": " << out.first[i][c];
+      EXPECT_TRUE(std::isfinite(out.second[i][c]) && out.second[i][c] >= 0.0f)
+          << "query " << i << ": " << out.second[i][c];
+    }
+  }
 }
 
 // Hostile geometry: cameras below the ground, at the centre, far in space,
