@@ -113,6 +113,47 @@ SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& n
   return e;
 }
 
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                              const glm::dvec3& sun_dir, const Moon& moon) const {
+  const glm::dvec3 offset = point - camera;
+  const double distance = glm::length(offset);
+  const AtmosphereRay start =
+      distance > 0.0 ? enterAtmosphere(sampler_.domain(), camera, offset / distance) : AtmosphereRay{};
+  if (!(distance > 0.0) || !start.inside) return radianceToPoint(camera, point, sun_dir);
+  return radianceToPoint(camera, point, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
+}
+
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                              const glm::dvec3& sun_dir, const Moon& moon,
+                                              const Spectrum& camera_skylight) const {
+  RadianceAndTransmittance v = radianceToPoint(camera, point, sun_dir);
+  const glm::dvec3 offset = point - camera;
+  const double distance = glm::length(offset);
+  if (!(distance > 0.0)) return v;
+  const glm::dvec3 view_dir = offset / distance;
+  const AtmosphereRay s = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  const double d = std::min(distance - s.moved, s.length);
+  if (!s.inside || d <= 0.0 || !moonHidesSunNear(s.origin, sun_dir, moon)) return v;
+  const double mu_s = clampCosine(glm::dot(s.origin, sun_dir) / s.r);
+  const double nu = clampCosine(glm::dot(view_dir, sun_dir));
+  const SunlitRay ray{s.r, s.mu, mu_s, nu, s.ends_on_ground};
+  const MoonAlongRay along{moon, s.origin, s.dir, sun_dir, atmosphere().sun_angular_radius_rad};
+  const Texture2D& depth = bake_.tables.optical_depth;
+  const SingleScattering with_moon =
+      integrateSingleScattering(sampler_, depth, atmosphere(), ray, 0.0, d, kEclipseSingleScatteringSegments, &along);
+  const SingleScattering without =
+      integrateSingleScattering(sampler_, depth, atmosphere(), ray, 0.0, d, kEclipseSingleScatteringSegments);
+  auto withPhases = [&](const SingleScattering& x) {
+    return x.rayleigh * static_cast<float>(rayleighPhase(nu)) + x.mie * static_cast<float>(mie_phase_(nu));
+  };
+  // The plain radiance less its single scattering (the integral's, which
+  // the segment's own lookup matches to its accuracy) is what the tables
+  // scattered more than once.
+  const Spectrum multiple = glm::max(v.radiance - withPhases(without), Spectrum(0.0f));
+  v.radiance = multiple * camera_skylight + withPhases(with_moon);
+  return v;
+}
+
 Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
   const AtmosphereDomain& domain = sampler_.domain();
   const double length = glm::length(point);
