@@ -4,8 +4,10 @@
 // because the moon is near (its direction and angular radius change across
 // the planet by a degree and a few percent), which is what confines totality
 // to a narrow umbra. Every user (the runtime's eclipse lookups, the
-// reference solver, skybake render) asks moonVisibleSunFraction, the one
-// place the occlusion is computed; the GLSL library has none yet.
+// reference solver, skybake render) asks Moon::visibleSunFraction, the one
+// place the occlusion is computed in C++; the GLSL library's
+// skybakeMoonVisibleSunFraction (runtime/glsl/skybake_geometry.glsl) is the
+// same formula in float, tied to this one by tests/gl's GlParity.Eclipse*.
 #pragma once
 
 #include <algorithm>

@@ -260,6 +260,15 @@ class Sky {
                                  const Moon& moon) const;
   Spectrum sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
                          const Moon& moon) const;
+  // Radiance to a point under an eclipse (aerial perspective; no light
+  // shafts): single scattering along the segment integrated with the moon's
+  // shadow, the rest of the plain radiance to the point (its multiple
+  // scattering) scaled by the skylight share at the segment's start, as
+  // skyRadiance scales it. The second form takes that share given.
+  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point, const glm::dvec3& sun_dir,
+                                           const Moon& moon) const;
+  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point, const glm::dvec3& sun_dir,
+                                           const Moon& moon, const Spectrum& camera_skylight) const;
 
   // skyRadiance for many view directions at once; same results.
   void skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,

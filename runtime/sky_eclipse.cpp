@@ -17,24 +17,10 @@
 namespace skybake {
 namespace {
 
-// Below this share of the uneclipsed integral, the ratio of the two
-// integrals is taken as the eclipsed integral alone: a sun already set
-// along the whole ray leaves both at rounding level, whose ratio is noise.
-constexpr float kSmallestUneclipsedSingle = 1e-30f;
-
-// The sky irradiance's directions under an eclipse: cosine-weighted over
-// the hemisphere, kIrradianceBands bands of equal weight in the zenith
-// angle's sine squared times kIrradianceAzimuths azimuths. The plain and the
-// eclipsed sky are summed over the same directions and only their ratio is
-// used, so the rule's error (the sky near the sun, the horizon's glow)
-// largely cancels; 48 directions put one about every 30 deg.
-constexpr int kIrradianceBands = 6;
-constexpr int kIrradianceAzimuths = 8;
-
 Spectrum eclipsedShare(const Spectrum& eclipsed, const Spectrum& plain) {
   Spectrum share(0.0f);
   for (int c = 0; c < kMaxChannels; ++c) {
-    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
+    share[c] = plain[c] > kEclipseSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
   }
   return share;
 }
@@ -128,6 +114,47 @@ SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& n
   return e;
 }
 
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                              const glm::dvec3& sun_dir, const Moon& moon) const {
+  const glm::dvec3 offset = point - camera;
+  const double distance = glm::length(offset);
+  const AtmosphereRay start =
+      distance > 0.0 ? enterAtmosphere(sampler_.domain(), camera, offset / distance) : AtmosphereRay{};
+  if (!(distance > 0.0) || !start.inside) return radianceToPoint(camera, point, sun_dir);
+  return radianceToPoint(camera, point, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
+}
+
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                              const glm::dvec3& sun_dir, const Moon& moon,
+                                              const Spectrum& camera_skylight) const {
+  RadianceAndTransmittance v = radianceToPoint(camera, point, sun_dir);
+  const glm::dvec3 offset = point - camera;
+  const double distance = glm::length(offset);
+  if (!(distance > 0.0)) return v;
+  const glm::dvec3 view_dir = offset / distance;
+  const AtmosphereRay s = enterAtmosphere(sampler_.domain(), camera, view_dir);
+  const double d = std::min(distance - s.moved, s.length);
+  if (!s.inside || d <= 0.0 || !moonHidesSunNear(s.origin, sun_dir, moon)) return v;
+  const double mu_s = clampCosine(glm::dot(s.origin, sun_dir) / s.r);
+  const double nu = clampCosine(glm::dot(view_dir, sun_dir));
+  const SunlitRay ray{s.r, s.mu, mu_s, nu, s.ends_on_ground};
+  const MoonAlongRay along{moon, s.origin, s.dir, sun_dir, atmosphere().sun_angular_radius_rad};
+  const Texture2D& depth = bake_.tables.optical_depth;
+  const SingleScattering with_moon =
+      integrateSingleScattering(sampler_, depth, atmosphere(), ray, 0.0, d, kEclipseSingleScatteringSegments, &along);
+  const SingleScattering without =
+      integrateSingleScattering(sampler_, depth, atmosphere(), ray, 0.0, d, kEclipseSingleScatteringSegments);
+  auto withPhases = [&](const SingleScattering& x) {
+    return x.rayleigh * static_cast<float>(rayleighPhase(nu)) + x.mie * static_cast<float>(mie_phase_(nu));
+  };
+  // The plain radiance less its single scattering (the integral's, which
+  // the segment's own lookup matches to its accuracy) is what the tables
+  // scattered more than once.
+  const Spectrum multiple = glm::max(v.radiance - withPhases(without), Spectrum(0.0f));
+  v.radiance = multiple * camera_skylight + withPhases(with_moon);
+  return v;
+}
+
 Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
   const AtmosphereDomain& domain = sampler_.domain();
   const double length = glm::length(point);
@@ -138,21 +165,17 @@ Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dve
   const glm::dvec3 east = glm::normalize(glm::cross(helper, up)), north = glm::cross(up, east);
   const Spectrum skylight = eclipseSkylight(from, sun_dir, moon);
   Spectrum eclipsed(0.0f), plain(0.0f);
-  for (int b = 0; b < kIrradianceBands; ++b) {
-    const double sin_squared = (b + 0.5) / kIrradianceBands;
+  for (int b = 0; b < kEclipseIrradianceBands; ++b) {
+    const double sin_squared = (b + 0.5) / kEclipseIrradianceBands;
     const double sin_theta = std::sqrt(sin_squared), cos_theta = std::sqrt(1.0 - sin_squared);
-    for (int j = 0; j < kIrradianceAzimuths; ++j) {
-      const double phi = 2.0 * kPi * (j + 0.5 * (b % 2)) / kIrradianceAzimuths;
+    for (int j = 0; j < kEclipseIrradianceAzimuths; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5 * (b % 2)) / kEclipseIrradianceAzimuths;
       const glm::dvec3 dir = up * cos_theta + (east * std::cos(phi) + north * std::sin(phi)) * sin_theta;
       eclipsed += skyRadiance(from, dir, sun_dir, moon, skylight).radiance;
       plain += skyRadiance(from, dir, sun_dir).radiance;
     }
   }
-  Spectrum share(0.0f);
-  for (int c = 0; c < kMaxChannels; ++c) {
-    share[c] = plain[c] > kSmallestUneclipsedSingle ? std::clamp(eclipsed[c] / plain[c], 0.0f, 1.0f) : 0.0f;
-  }
-  return share;
+  return eclipsedShare(eclipsed, plain);
 }
 
 }  // namespace skybake

@@ -27,6 +27,21 @@ inline constexpr int kLookupSingleScatteringSegments = 4;
 // across the umbra of a ray crossing it near the ground.
 inline constexpr int kEclipseSingleScatteringSegments = 16;
 
+// Below this share of the uneclipsed single scattering, the ratio of the
+// eclipsed to the plain integral is taken as the eclipsed integral alone: a
+// sun already set along the whole ray leaves both at rounding level, whose
+// ratio is noise. Float keeps 1e-30 normal, so the GLSL uses it too.
+inline constexpr float kEclipseSmallestUneclipsedSingle = 1e-30f;
+
+// The sky irradiance's directions under an eclipse: cosine-weighted over
+// the hemisphere, kEclipseIrradianceBands bands of equal weight in the
+// zenith angle's sine squared times kEclipseIrradianceAzimuths azimuths. The
+// plain and the eclipsed sky are summed over the same directions and only
+// their ratio is used, so the rule's error (the sky near the sun, the
+// horizon's glow) largely cancels; 48 directions put one about every 30 deg.
+inline constexpr int kEclipseIrradianceBands = 6;
+inline constexpr int kEclipseIrradianceAzimuths = 8;
+
 // ---- rays toward the ground of a bake without such views (sky_radiance.cpp) ----
 
 // A bake whose tables hold no rays toward the ground ([scene]

@@ -291,9 +291,6 @@ void runRender(RenderOptions o) {
   }
   const bool has_moon = !o.moon.empty();
   const std::array<double, 3> moon = has_moon ? parseMoon(o.moon) : std::array<double, 3>{};
-  if (has_moon && o.backend == "gl") {
-    refuseOptionValue("--moon", o.moon, "the gl backend has no eclipses yet: use --backend cpu");
-  }
   const ImageBackend backend(o.backend);
   requireWritableOutput(o.output_path, {o.bake_path});
   SkyView& v = o.view;
@@ -388,7 +385,7 @@ Command addRenderCommand(CLI::App& app) {
                   "A solar eclipse: the moon at AZIMUTH,ELEVATION,ANGULAR_RADIUS degrees (azimuth as "
                   "--sun-azimuth-deg's, elevation above the horizontal, seen from the camera at the mean lunar "
                   "distance), e.g. 0,40,0.28 before a sun at --sun-zenith-deg 50 for totality. It hides the sun "
-                  "disk and shadows the sky (docs/ECLIPSES.md). CPU backend only.");
+                  "disk and shadows the sky (docs/ECLIPSES.md), with either backend.");
   return {cmd, [o] { runRender(*o); }};
 }
 

@@ -108,10 +108,14 @@ py::tuple radianceRows(const Sky& sky, const Rows& from, const Rows& to, const R
 
 // The eclipse lookups: a moon per row (its centre, m from the planet's
 // centre, and its radius, m).
+enum class EclipseLookup { SkyRadiance, Irradiance, RadianceToPoint };
+
 py::tuple eclipseRows(const Sky& sky, const Rows& camera, const Rows& view, const Rows& sun, const Rows& moon_centre,
-                      const Rows& moon_radius, bool irradiance) {
+                      const Rows& moon_radius, EclipseLookup lookup) {
+  const bool irradiance = lookup == EclipseLookup::Irradiance;
   const size_t n = rowCount(camera, 3, irradiance ? "point_m" : "camera_m");
-  if (rowCount(view, 3, irradiance ? "normal" : "view_dir") != n || rowCount(sun, 3, "sun_dir") != n ||
+  const char* second_name = irradiance ? "normal" : lookup == EclipseLookup::RadianceToPoint ? "point_m" : "view_dir";
+  if (rowCount(view, 3, second_name) != n || rowCount(sun, 3, "sun_dir") != n ||
       rowCount(moon_centre, 3, "moon centre_m") != n || static_cast<size_t>(moon_radius.size()) != n) {
     throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
   }
@@ -130,7 +134,9 @@ py::tuple eclipseRows(const Sky& sky, const Rows& camera, const Rows& view, cons
           storeGroup(f, i, channels, sky, lg, e.sun);
           storeGroup(g, i, channels, sky, lg, e.sky);
         } else {
-          const RadianceAndTransmittance v = group.skyRadiance(row3(a, i), row3(b, i), row3(s, i), moon);
+          const RadianceAndTransmittance v = lookup == EclipseLookup::RadianceToPoint
+                                                 ? group.radianceToPoint(row3(a, i), row3(b, i), row3(s, i), moon)
+                                                 : group.skyRadiance(row3(a, i), row3(b, i), row3(s, i), moon);
           storeGroup(f, i, channels, sky, lg, v.radiance);
           storeGroup(g, i, channels, sky, lg, v.transmittance);
         }
@@ -188,10 +194,19 @@ void registerLookups(py::module_& m) {
                                const Rows& shadow) { return radianceRows(sky, camera, view, sun, shadow, false); })
       .def("_sky_radiance_eclipse",
            [](const Sky& sky, const Rows& camera, const Rows& view, const Rows& sun, const Rows& moon_centre,
-              const Rows& moon_radius) { return eclipseRows(sky, camera, view, sun, moon_centre, moon_radius, false); })
+              const Rows& moon_radius) {
+             return eclipseRows(sky, camera, view, sun, moon_centre, moon_radius, EclipseLookup::SkyRadiance);
+           })
       .def("_irradiance_eclipse",
            [](const Sky& sky, const Rows& point, const Rows& normal, const Rows& sun, const Rows& moon_centre,
-              const Rows& moon_radius) { return eclipseRows(sky, point, normal, sun, moon_centre, moon_radius, true); })
+              const Rows& moon_radius) {
+             return eclipseRows(sky, point, normal, sun, moon_centre, moon_radius, EclipseLookup::Irradiance);
+           })
+      .def("_radiance_to_point_eclipse",
+           [](const Sky& sky, const Rows& camera, const Rows& point, const Rows& sun, const Rows& moon_centre,
+              const Rows& moon_radius) {
+             return eclipseRows(sky, camera, point, sun, moon_centre, moon_radius, EclipseLookup::RadianceToPoint);
+           })
       .def("_radiance_to_point", [](const Sky& sky, const Rows& camera, const Rows& point, const Rows& sun,
                                     const Rows& shadow) { return radianceRows(sky, camera, point, sun, shadow, true); })
       .def("_irradiance",

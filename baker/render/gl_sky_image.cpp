@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -21,7 +22,11 @@ constexpr int kStripRows = 256;
 // directionAtImagePoint and radianceAlong of sky_image.cpp, per pixel
 // centre: every channel of the bake (lanes past its channel count are 0).
 // The sun disk is added afterwards on the CPU (sun_disk_pixels.h), the same
-// for both backends.
+// for both backends. Under an eclipse (SKYBAKE_RENDER_ECLIPSE defined: the
+// eclipse lookups compile only for the images that need them) a first
+// one-pixel draw (skylight_pass) gives the camera's skylight share, the
+// same for every ray from a camera in the atmosphere, and the image's
+// draws use it, as the CPU backend computes it once per image.
 const char* const kFragmentMain = R"(
 uniform vec2 image_size;          // pixels
 uniform float strip_top_row;      // the first image row (from the top) of this draw
@@ -34,6 +39,12 @@ uniform vec2 half_size;           // perspective: tan(fov / 2) across, times hei
 uniform vec3 camera_m;
 uniform vec3 sun_dir;
 uniform int ground_lit;           // 1: the lit ground is added (the bake has ground irradiance)
+#ifdef SKYBAKE_RENDER_ECLIPSE
+uniform vec4 moon;                // centre (m from the planet's centre), radius (m)
+uniform int skylight_pass;        // 1: this draw writes the camera's skylight share
+uniform int camera_inside;        // 1: every ray starts at the camera, camera_skylight is its share
+uniform vec4 camera_skylight;
+#endif
 layout(location = 0) out vec4 pixel;
 
 vec3 fromZenithAzimuth(float zenith, float azimuth) {
@@ -62,6 +73,13 @@ bool pixelDirection(vec2 centre, out vec3 dir) {
 }
 
 void main() {
+#ifdef SKYBAKE_RENDER_ECLIPSE
+  SkybakeMoon eclipse_moon = SkybakeMoon(moon.xyz, moon.w);
+  if (skylight_pass != 0) {
+    pixel = skybakeEclipseSkylight(camera_m, sun_dir, eclipse_moon);
+    return;
+  }
+#endif
   // Pixel centre in image coordinates, rows from the top.
   vec2 centre = vec2(gl_FragCoord.x, strip_top_row + (strip_rows - gl_FragCoord.y));
   vec3 dir;
@@ -69,13 +87,44 @@ void main() {
     pixel = vec4(0.0);
     return;
   }
+#ifdef SKYBAKE_RENDER_ECLIPSE
+  SkybakeRadianceAndTransmittance received;
+  if (camera_inside != 0) {
+    received = ground_lit != 0 ? skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight)
+                               : skybakeSkyRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight);
+  } else {
+    received = ground_lit != 0 ? skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon)
+                               : skybakeSkyRadiance(camera_m, dir, sun_dir, eclipse_moon);
+  }
+#else
   SkybakeRadianceAndTransmittance received =
       ground_lit != 0 ? skybakeReceivedRadiance(camera_m, dir, sun_dir) : skybakeSkyRadiance(camera_m, dir, sun_dir);
+#endif
   pixel = received.radiance;
 }
 )";
 
 GLint at(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+// The moon, and for a camera in the atmosphere its skylight share, drawn
+// into the framebuffer's first pixel by the program's skylight pass.
+void setEclipseUniforms(GLuint p, const Sky& sky, const SkyView& v, const glm::dvec3& camera, bool complete) {
+  const glm::dvec3& centre = v.moon.centre_m;
+  glUniform4f(at(p, "moon"), static_cast<float>(centre.x), static_cast<float>(centre.y), static_cast<float>(centre.z),
+              static_cast<float>(v.moon.radius_m));
+  const bool inside = glm::length(camera) <= sky.atmosphere().top_radius_m;
+  glUniform1i(at(p, "camera_inside"), inside ? 1 : 0);
+  glm::vec4 skylight(1.0f);
+  if (inside && complete) {
+    glViewport(0, 0, 1, 1);
+    glUniform1i(at(p, "skylight_pass"), 1);
+    gl::drawFullScreenTriangle();
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, &skylight[0]);
+  }
+  glUniform1i(at(p, "skylight_pass"), 0);
+  glUniform4f(at(p, "camera_skylight"), skylight.x, skylight.y, skylight.z, skylight.w);
+}
 
 }  // namespace
 
@@ -83,8 +132,10 @@ GlSkyImageRenderer::GlSkyImageRenderer() : context_(std::make_unique<gl::Headles
 
 SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const {
   const gl::SkyGlResources resources(sky);
-  const gl::GlProgram program(gl::kFullScreenVertexShader,
-                              "#version 330 core\n" + gl::skyGlslLibrary() + kFragmentMain);
+  const bool eclipse = v.moon.present();
+  const gl::GlProgram program(gl::kFullScreenVertexShader, std::string("#version 330 core\n") +
+                                                               (eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
+                                                               gl::skyGlslLibrary() + kFragmentMain);
   const GLuint p = program.id();
   glUseProgram(p);
 
@@ -122,6 +173,7 @@ SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const
   const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   // Last: creating the colour texture above rebinds the active unit.
   resources.bind(p);
+  if (eclipse) setEclipseUniforms(p, sky, v, camera, complete);
 
   SpectralImage image{v.width, v.height, sky.channelCount(), {}};
   image.radiance.assign(static_cast<size_t>(v.width) * v.height * image.channels, 0.0f);

@@ -6,6 +6,7 @@
 
 #include "data_formats/error.h"
 #include "runtime/atmosphere_media.h"
+#include "runtime/eclipse_skylight.h"
 #include "runtime/ray_quadrature.h"
 #include "runtime/sky_lookup_constants.h"
 
@@ -177,6 +178,16 @@ std::string skyGlslDefines() {
   define("SKYBAKE_DIFFERENCE_SEGMENT_MIN_LENGTH_M", glslFloat(kDifferenceSegmentMinLength_m));
   define("SKYBAKE_DIRECT_SEGMENT_SUBINTERVALS", std::to_string(kDirectSegmentSubintervals));
   define("SKYBAKE_GROUND_GRAZE_TOLERANCE_M", glslFloat(kGroundGrazeTolerance_m));
+  // Solar eclipses (runtime/eclipse_skylight.h, sky_lookup_constants.h).
+  define("SKYBAKE_ECLIPSE_SINGLE_SCATTERING_SEGMENTS", std::to_string(kEclipseSingleScatteringSegments));
+  define("SKYBAKE_ECLIPSE_SMALLEST_UNECLIPSED_SINGLE", glslFloat(kEclipseSmallestUneclipsedSingle));
+  define("SKYBAKE_ECLIPSE_IRRADIANCE_BANDS", std::to_string(kEclipseIrradianceBands));
+  define("SKYBAKE_ECLIPSE_IRRADIANCE_AZIMUTHS", std::to_string(kEclipseIrradianceAzimuths));
+  define("SKYBAKE_ECLIPSE_KERNEL_ELEVATIONS", std::to_string(kEclipseKernelElevations));
+  define("SKYBAKE_ECLIPSE_KERNEL_AZIMUTHS", std::to_string(kEclipseKernelAzimuths));
+  define("SKYBAKE_ECLIPSE_KERNEL_DISTANCES", std::to_string(kEclipseKernelDistances));
+  define("SKYBAKE_ECLIPSE_FIRST_DISTANCE_M", glslFloat(kEclipseFirstDistance_m));
+  define("SKYBAKE_ECLIPSE_REDIRECTED_SCATTERING_SHARE", glslFloat(kEclipseRedirectedScatteringShare));
   return out;
 }
 

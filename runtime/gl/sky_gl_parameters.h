@@ -51,7 +51,8 @@ SkyUniformBlock skyUniformBlock(const Sky& sky);
 
 // "#define SKYBAKE_... value" lines for every constant the library shares
 // with the C++ lookups (Gauss-Legendre nodes, blend ratios, blend bands,
-// segment lengths, sub-interval counts, phase normalisations, the layer limit).
+// segment lengths, sub-interval counts, phase normalisations, the layer limit,
+// the eclipse lookups' quadrature counts and kernel constants).
 std::string skyGlslDefines();
 
 // The library's GLSL as concatenated from runtime/glsl/ (without the defines).

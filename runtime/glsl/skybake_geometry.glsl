@@ -1,7 +1,7 @@
-// skybake GLSL library, part 2 of 5: rays in the atmosphere's shell, the
+// skybake GLSL library, part 2 of 6: rays in the atmosphere's shell, the
 // planet's shadow, the sun disk, phase functions and the media. Mirrors
 // runtime/atmosphere_ray.h, data_formats/ray_sphere.h, planet_shadow.h,
-// sun_disk.h, phase_functions.h and atmosphere_media.h.
+// sun_disk.h, moon_occluder.h, phase_functions.h and atmosphere_media.h.
 //
 // The C++ computes in double, this in float, whose resolution at a planet's
 // radius is about half a metre. The formulas are therefore rearranged so
@@ -177,6 +177,81 @@ bool skybakeInSunDisk(vec3 view_dir, vec3 sun_dir) {
   return dot(chord, chord) < skybake_phase.z;
 }
 
+// ---- a moon before the sun (runtime/moon_occluder.h) ----
+
+// A sphere: centre in metres from the planet's centre (the frame of
+// cameras), radius in metres; radius 0: no moon, nothing hidden.
+struct SkybakeMoon {
+  vec3 centre_m;
+  float radius_m;
+};
+
+SkybakeMoon skybakeNoMoon() { return SkybakeMoon(vec3(0.0), 0.0); }
+
+// Area of the intersection of two discs of radii a and b whose centres are
+// `separation` apart (discOverlapArea: the exact circle-circle lens; the
+// inverse cosines' arguments clamped against rounding near tangency).
+float skybakeDiscOverlapArea(float a, float b, float separation) {
+  if (!(a > 0.0) || !(b > 0.0) || separation >= a + b) return 0.0;
+  float small = min(a, b);
+  if (separation <= abs(a - b)) return SKYBAKE_PI * small * small;
+  float d = separation;
+  float angle_a = acos(clamp((d * d + a * a - b * b) / (2.0 * d * a), -1.0, 1.0));
+  float angle_b = acos(clamp((d * d + b * b - a * a) / (2.0 * d * b), -1.0, 1.0));
+  float kite = max((-d + a + b) * (d + a - b) * (d - a + b) * (d + a + b), 0.0);
+  return max(a * a * angle_a + b * b * angle_b - 0.5 * sqrt(kite), 0.0);
+}
+
+// Fraction of a sun disk of angular radius sun_radius_rad not covered by a
+// moon disk of angular radius moon_radius_rad whose centre is separation_rad
+// from the sun's (sunFractionPastMoonDisc; both discs flat).
+float skybakeSunFractionPastMoonDisc(float sun_radius_rad, float moon_radius_rad, float separation_rad) {
+  if (!(moon_radius_rad > 0.0)) return 1.0;
+  if (!(sun_radius_rad > 0.0)) return separation_rad < moon_radius_rad ? 0.0 : 1.0;
+  float covered = skybakeDiscOverlapArea(sun_radius_rad, moon_radius_rad, separation_rad) /
+                  (SKYBAKE_PI * sun_radius_rad * sun_radius_rad);
+  return clamp(1.0 - covered, 0.0, 1.0);
+}
+
+// Fraction of the sun disk (unit sun_dir, angular radius sun_radius_rad)
+// that `point_m` sees past the moon (Moon::visibleSunFraction): the moon's
+// direction and angular radius seen from the point, so with its parallax;
+// the separation from atan of the cross and dot products, precise at the
+// small angles of an umbra's edge. A point inside the moon sees nothing.
+float skybakeMoonVisibleSunFraction(SkybakeMoon moon, vec3 point_m, vec3 sun_dir, float sun_radius_rad) {
+  if (!(moon.radius_m > 0.0)) return 1.0;
+  vec3 to_moon = moon.centre_m - point_m;
+  float distance_m = length(to_moon);
+  if (!(distance_m > moon.radius_m)) return 0.0;
+  float moon_radius_rad = asin(moon.radius_m / distance_m);
+  float separation_rad = atan(length(cross(to_moon, sun_dir)), dot(to_moon, sun_dir));
+  return skybakeSunFractionPastMoonDisc(sun_radius_rad, moon_radius_rad, separation_rad);
+}
+
+// Whether the unit view direction from `camera_m` lies within the sun disk
+// and outside the moon's disk seen from there.
+bool skybakeInSunDiskPastMoon(vec3 camera_m, vec3 view_dir, vec3 sun_dir, SkybakeMoon moon) {
+  if (!skybakeInSunDisk(view_dir, sun_dir)) return false;
+  if (!(moon.radius_m > 0.0)) return true;
+  vec3 to_moon = moon.centre_m - camera_m;
+  float distance_m = length(to_moon);
+  if (!(distance_m > moon.radius_m)) return false;
+  return atan(length(cross(to_moon, view_dir)), dot(to_moon, view_dir)) >= asin(moon.radius_m / distance_m);
+}
+
+// A moon seen along a view ray origin_m + t dir (MoonAlongRay), for the
+// integrals that walk the ray by distance.
+struct SkybakeMoonAlongRay {
+  SkybakeMoon moon;
+  vec3 origin_m;
+  vec3 dir;
+  vec3 sun_dir;
+};
+
+float skybakeMoonVisibleSunFractionAt(SkybakeMoonAlongRay along, float t) {
+  return skybakeMoonVisibleSunFraction(along.moon, along.origin_m + along.dir * t, along.sun_dir, skybake_radii_m.w);
+}
+
 // Phase functions, sr^-1 (runtime/phase_functions.h).
 float skybakeRayleighPhase(float nu) { return SKYBAKE_RAYLEIGH_PHASE_NORMALISATION * (1.0 + nu * nu); }
 float skybakeCornetteShanksPhase(float g, float normalisation, float nu) {
@@ -210,10 +285,14 @@ float skybakeRayleighDensity(float altitude_m) { return skybakeProfileDensity(0,
 float skybakeMieDensity(float altitude_m) { return skybakeProfileDensity(1, altitude_m); }
 
 // Extinction coefficient per channel, m^-1.
+vec4 skybakeExtinctionOfDensities(float rayleigh_density, float mie_density, float absorption_density) {
+  return skybake_rayleigh_scattering * rayleigh_density + skybake_mie_extinction * mie_density +
+         skybake_absorption_extinction * absorption_density;
+}
+
 vec4 skybakeExtinction(float altitude_m) {
-  return skybake_rayleigh_scattering * skybakeRayleighDensity(altitude_m) +
-         skybake_mie_extinction * skybakeMieDensity(altitude_m) +
-         skybake_absorption_extinction * skybakeProfileDensity(2, altitude_m);
+  return skybakeExtinctionOfDensities(skybakeRayleighDensity(altitude_m), skybakeMieDensity(altitude_m),
+                                      skybakeProfileDensity(2, altitude_m));
 }
 
 float skybakeLargestChannel(vec4 s) { return max(max(s.x, s.y), max(s.z, s.w)); }

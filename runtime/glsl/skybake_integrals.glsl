@@ -1,4 +1,4 @@
-// skybake GLSL library, part 4 of 5: integrals along a ray
+// skybake GLSL library, part 4 of 6: integrals along a ray
 // (runtime/ray_quadrature.h, single_scattering_ray.cpp, segment_radiance.cpp):
 // composite 4-point Gauss-Legendre rules whose optically thick sub-intervals
 // are split into pieces, single scattering with the ray cut at the edges of
@@ -84,10 +84,13 @@ bool skybakeNextPiece(inout SkybakePieces p, out float piece_start, out float pi
 
 // Single scattering at the 4-point rule's nodes over [a, b] of the ray
 // (r, mu) with the sun at (mu_s, nu), added to rayleigh and mie (without
-// the factors common to every node).
+// the factors common to every node); with a moon (an eclipse) also to
+// rayleigh_past_moon and mie_past_moon with the sunlight at each node
+// dimmed by the part of the disk the moon hides there.
 void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, bool ray_intersects_ground,
                                     vec4 start_to_top_up, vec4 start_to_top_down, float a, float b,
-                                    inout vec4 rayleigh, inout vec4 mie) {
+                                    SkybakeMoonAlongRay moon, inout vec4 rayleigh, inout vec4 mie,
+                                    inout vec4 rayleigh_past_moon, inout vec4 mie_past_moon) {
   float bottom = skybake_radii_m.x;
   float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
   float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
@@ -108,22 +111,44 @@ void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, boo
     vec4 along = reversed ? max(skybakeOpticalDepthToTop(r_t, -mu_t) - start_to_top_down, vec4(0.0))
                           : max(start_to_top_up - skybakeOpticalDepthToTop(r_t, mu_t), vec4(0.0));
     vec4 light = exp(-(skybakeOpticalDepthToTop(r_t, mu_s_t) + along)) * visible;
-    rayleigh += light * (w * skybakeRayleighDensity(altitude_m));
-    mie += light * (w * skybakeMieDensity(altitude_m));
+    vec4 rayleigh_term = light * (w * skybakeRayleighDensity(altitude_m));
+    vec4 mie_term = light * (w * skybakeMieDensity(altitude_m));
+    rayleigh += rayleigh_term;
+    mie += mie_term;
+    if (moon.moon.radius_m > 0.0) {
+      float past_moon = skybakeMoonVisibleSunFractionAt(moon, t);
+      rayleigh_past_moon += rayleigh_term * past_moon;
+      mie_past_moon += mie_term * past_moon;
+    }
   }
 }
+
+// Single scattering of one ray without the moon (`plain`) and with it
+// (`past_moon`), integrated at the same nodes.
+struct SkybakeSingleScatteringPastMoon {
+  SkybakeSingleScattering plain;
+  SkybakeSingleScattering past_moon;
+};
 
 // Single scattering over [t_start, t_end] of the ray (r, mu) with the sun at
 // (mu_s, nu), seen from the ray's start; `segments` sub-intervals over the
 // whole of it, each cut where the ray crosses the edge of the planet's
-// shadow (integrateSingleScattering, forEachOpticallyThinNodeCutAt).
-SkybakeSingleScattering skybakeIntegrateSingleScattering(float r, float mu, float mu_s, float nu,
-                                                         bool ray_intersects_ground, float t_start, float t_end,
-                                                         int segments) {
+// shadow (integrateSingleScattering, forEachOpticallyThinNodeCutAt). With a
+// moon (an eclipse; its origin, dir and sun_dir the 3D form of the ray) the
+// same integral with the moon's shadow too, at the same nodes: one pass for
+// what the C++ integrates twice, since llvmpipe ends a shader's loops after
+// 65535 iterations in all.
+SkybakeSingleScatteringPastMoon skybakeIntegrateSingleScattering(float r, float mu, float mu_s, float nu,
+                                                                 bool ray_intersects_ground, float t_start,
+                                                                 float t_end, int segments,
+                                                                 SkybakeMoonAlongRay moon) {
   vec4 rayleigh = vec4(0.0);
   vec4 mie = vec4(0.0);
+  vec4 rayleigh_past_moon = vec4(0.0);
+  vec4 mie_past_moon = vec4(0.0);
+  SkybakeSingleScattering none = SkybakeSingleScattering(rayleigh, mie);
   // A light shaft's shadow can reach past the ray's end: nothing is lit.
-  if (!(t_end > t_start)) return SkybakeSingleScattering(rayleigh, mie);
+  if (!(t_end > t_start)) return SkybakeSingleScatteringPastMoon(none, none);
   // The ray's own legs to the top, the same at every node.
   vec4 start_to_top_up = skybakeOpticalDepthToTop(r, mu);
   vec4 start_to_top_down = skybakeOpticalDepthToTop(r, -mu);
@@ -131,20 +156,34 @@ SkybakeSingleScattering skybakeIntegrateSingleScattering(float r, float mu, floa
   SkybakePieces pieces = skybakePieces(r, mu, t_start, t_end, segments);
   float a, b;
   while (skybakeNextPiece(pieces, a, b)) {
+    // The piece's parts between the crossings inside it, then the last
+    // part; one call site, so that shader compilers inline the rule once.
     float part_start = a;
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < 3; ++i) {
       float cut = i == 0 ? crossings.distance_m.x : crossings.distance_m.y;
-      if (i < crossings.count && cut > part_start && cut < b) {
+      bool last = i == 2;
+      if (last || (i < crossings.count && cut > part_start && cut < b)) {
+        float part_end = last ? b : cut;
         skybakeAddSingleScatteringPart(r, mu, mu_s, nu, ray_intersects_ground, start_to_top_up, start_to_top_down,
-                                       part_start, cut, rayleigh, mie);
-        part_start = cut;
+                                       part_start, part_end, moon, rayleigh, mie, rayleigh_past_moon, mie_past_moon);
+        part_start = part_end;
       }
     }
-    skybakeAddSingleScatteringPart(r, mu, mu_s, nu, ray_intersects_ground, start_to_top_up, start_to_top_down,
-                                   part_start, b, rayleigh, mie);
   }
-  return SkybakeSingleScattering(rayleigh * skybake_sun_irradiance * skybake_rayleigh_scattering,
-                                 mie * skybake_sun_irradiance * skybake_mie_scattering);
+  vec4 rayleigh_factor = skybake_sun_irradiance * skybake_rayleigh_scattering;
+  vec4 mie_factor = skybake_sun_irradiance * skybake_mie_scattering;
+  return SkybakeSingleScatteringPastMoon(
+      SkybakeSingleScattering(rayleigh * rayleigh_factor, mie * mie_factor),
+      SkybakeSingleScattering(rayleigh_past_moon * rayleigh_factor, mie_past_moon * mie_factor));
+}
+
+// The same without a moon.
+SkybakeSingleScattering skybakeIntegrateSingleScattering(float r, float mu, float mu_s, float nu,
+                                                         bool ray_intersects_ground, float t_start, float t_end,
+                                                         int segments) {
+  SkybakeMoonAlongRay none = SkybakeMoonAlongRay(skybakeNoMoon(), vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0));
+  return skybakeIntegrateSingleScattering(r, mu, mu_s, nu, ray_intersects_ground, t_start, t_end, segments, none)
+      .plain;
 }
 
 // In-scattered radiance over [0, length_m] of the ray (r, mu) with the sun

@@ -1,4 +1,4 @@
-// skybake GLSL library, part 5 of 5: the lookups of skybake::Sky
+// skybake GLSL library, part 5 of 6: the lookups of skybake::Sky
 // (runtime/sky.h), same geometry rules, same results up to float
 // arithmetic. Positions in metres from the planet's centre, unit directions.
 //
@@ -34,35 +34,54 @@ vec4 skybakeSingleScatteringRadiance(SkybakeSingleScattering s, float nu) {
   return s.rayleigh * skybakeRayleighPhase(nu) + s.mie * skybakeMiePhase(nu);
 }
 
+// skybakeSkyRadiance before its parts are summed (Sky::skyRadianceParts):
+// single scattering without its phase functions, and multiple scattering,
+// for the lookups that weigh them apart (the eclipse lookups).
+struct SkybakeSkyRadianceParts {
+  bool inside;            // false: the ray misses the atmosphere
+  SkybakeRay start;       // the ray from where it is inside the atmosphere
+  float mu_s, nu;
+  float lit_from_m;       // where scattering starts along start (past a light shaft's shadow)
+  SkybakeSingleScattering single;
+  vec4 multiple;
+  vec4 transmittance;
+};
+
 // A ray that ends on the ground in a bake whose tables hold no such rays,
 // over [t_start, t_end], integrated along it (Sky::groundRayRadiance);
 // (r_p, mu_p, mu_s_p) the same ray from t_start, to_start the transmittance
 // over [0, t_start].
-vec4 skybakeGroundRayRadiance(float r, float mu, float mu_s, float nu, float t_start, float t_end, float r_p,
-                              float mu_p, float mu_s_p, vec4 to_start) {
-  SkybakeSingleScattering single = skybakeIntegrateSingleScattering(
-      r, mu, skybakeBakedMuS(mu_s), nu, true, t_start, t_end, SKYBAKE_GROUND_RAY_SUBINTERVALS);
+void skybakeGroundRayRadiance(float r, float mu, float mu_s, float nu, float t_start, float t_end, float r_p,
+                              float mu_p, float mu_s_p, vec4 to_start, inout SkybakeSkyRadianceParts parts) {
+  parts.single = skybakeIntegrateSingleScattering(r, mu, skybakeBakedMuS(mu_s), nu, true, t_start, t_end,
+                                                  SKYBAKE_GROUND_RAY_SUBINTERVALS);
   SkybakeRadianceAndTransmittance multiple = skybakeDirectSegmentRadiance(
       r_p, mu_p, skybakeBakedMuS(mu_s_p), nu, max(t_end - t_start, 0.0), SKYBAKE_GROUND_RAY_SUBINTERVALS, false);
-  return skybakeSingleScatteringRadiance(single, nu) + multiple.radiance * to_start;
+  parts.multiple = multiple.radiance * to_start;
 }
 
-// Radiance of the sky seen from `camera_m` along `view_dir`, and the
-// transmittance to where the ray leaves the atmosphere or meets the ground;
-// the ground's own light excluded. shadow_length_m: the ray's first part in
-// the shadow of scene geometry (light shafts), 0 for none.
-SkybakeRadianceAndTransmittance skybakeSkyRadiance(vec3 camera_m, vec3 view_dir, vec3 sun_dir, float shadow_length_m) {
-  SkybakeRay start = skybakeEnterAtmosphere(camera_m, view_dir);
-  if (!start.inside) return SkybakeRadianceAndTransmittance(vec4(0.0), vec4(1.0));
+SkybakeSkyRadianceParts skybakeSkyRadianceParts(vec3 camera_m, vec3 view_dir, vec3 sun_dir, float shadow_length_m) {
+  SkybakeSkyRadianceParts parts;
+  parts.start = skybakeEnterAtmosphere(camera_m, view_dir);
+  parts.inside = parts.start.inside;
+  parts.mu_s = 1.0;
+  parts.nu = 1.0;
+  parts.lit_from_m = 0.0;
+  parts.single = SkybakeSingleScattering(vec4(0.0), vec4(0.0));
+  parts.multiple = vec4(0.0);
+  parts.transmittance = vec4(1.0);
+  if (!parts.inside) return parts;
+  SkybakeRay start = parts.start;
   float bottom = skybake_radii_m.x;
-  float top = skybake_radii_m.y;
   float r = start.r;
   float mu = start.mu;
   float mu_s = skybakeClampCosine(dot(start.origin, sun_dir) / r);
   float nu = skybakeClampCosine(dot(view_dir, sun_dir));
+  parts.mu_s = mu_s;
+  parts.nu = nu;
   bool ground = start.ends_on_ground;
-  vec4 transmittance = ground ? exp(-skybakeOpticalDepthAlongRay(r, mu, start.length_m, true))
-                              : exp(-skybakeOpticalDepthToTop(r, mu));
+  parts.transmittance = ground ? exp(-skybakeOpticalDepthAlongRay(r, mu, start.length_m, true))
+                               : exp(-skybakeOpticalDepthToTop(r, mu));
   // Only the part beyond the shadow scatters, seen through the shadowed part.
   float shadow = clamp(shadow_length_m - start.moved_m, 0.0, start.length_m);
   float r_p = r;
@@ -75,10 +94,10 @@ SkybakeRadianceAndTransmittance skybakeSkyRadiance(vec3 camera_m, vec3 view_dir,
     mu_s_p = skybakeClampCosine((r * mu_s + shadow * nu) / r_p);
     shadow_transmittance = exp(-skybakeOpticalDepthAlongRay(r, mu, shadow, ground));
   }
+  parts.lit_from_m = shadow;
   if (ground && skybake_parts.x == 0) {
-    return SkybakeRadianceAndTransmittance(
-        skybakeGroundRayRadiance(r, mu, mu_s, nu, shadow, start.length_m, r_p, mu_p, mu_s_p, shadow_transmittance),
-        transmittance);
+    skybakeGroundRayRadiance(r, mu, mu_s, nu, shadow, start.length_m, r_p, mu_p, mu_s_p, shadow_transmittance, parts);
+    return parts;
   }
   float baked_mu_s = skybakeBakedMuS(mu_s);
   float weight = skybakeIntegratedSingleScatteringWeight(baked_mu_s);
@@ -88,11 +107,22 @@ SkybakeRadianceAndTransmittance skybakeSkyRadiance(vec3 camera_m, vec3 view_dir,
     if (skybake_parts.y != 0)
       single.mie = skybakeScattering(skybake_single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
   }
-  single =
+  parts.single =
       skybakeBlendInIntegratedSingleScattering(single, r, mu, baked_mu_s, nu, ground, shadow, start.length_m, weight);
-  vec4 multiple = skybakeScattering(skybake_multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
-                  skybakeMultipleShape(r_p - bottom, nu) * shadow_transmittance;
-  return SkybakeRadianceAndTransmittance(skybakeSingleScatteringRadiance(single, nu) + multiple, transmittance);
+  parts.multiple = skybakeScattering(skybake_multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
+                   skybakeMultipleShape(r_p - bottom, nu) * shadow_transmittance;
+  return parts;
+}
+
+// Radiance of the sky seen from `camera_m` along `view_dir`, and the
+// transmittance to where the ray leaves the atmosphere or meets the ground;
+// the ground's own light excluded. shadow_length_m: the ray's first part in
+// the shadow of scene geometry (light shafts), 0 for none.
+SkybakeRadianceAndTransmittance skybakeSkyRadiance(vec3 camera_m, vec3 view_dir, vec3 sun_dir, float shadow_length_m) {
+  SkybakeSkyRadianceParts p = skybakeSkyRadianceParts(camera_m, view_dir, sun_dir, shadow_length_m);
+  if (!p.inside) return SkybakeRadianceAndTransmittance(vec4(0.0), vec4(1.0));
+  return SkybakeRadianceAndTransmittance(skybakeSingleScatteringRadiance(p.single, p.nu) + p.multiple,
+                                         p.transmittance);
 }
 
 SkybakeRadianceAndTransmittance skybakeSkyRadiance(vec3 camera_m, vec3 view_dir, vec3 sun_dir) {

@@ -1,4 +1,4 @@
-// skybake GLSL library, part 3 of 5: where a configuration lives in the
+// skybake GLSL library, part 3 of 6: where a configuration lives in the
 // tables (data_formats/texture_mapping.h) and the interpolated lookups
 // (runtime/table_sampler.h), the multiple-scattering shape
 // (runtime/multiple_scattering_phase.h) included.

@@ -22,8 +22,19 @@ void main() {
   SkybakeRadianceAndTransmittance aerial = skybakeRadianceToPoint(camera, camera + dir * 5000.0, sun, 0.0);
   SkybakeSunAndSkyIrradiance irradiance = skybakeSunAndSkyIrradiance(camera, dir, sun);
   vec4 solar = skybakeInSunDisk(dir, sun) ? skybakeSolarRadiance() * sky.transmittance : vec4(0.0);
+  // A solar eclipse: the moon 0.1 deg from the sun, seen from the camera.
+  SkybakeMoon moon = SkybakeMoon(camera + normalize(sun + vec3(1.7e-3, 0.0, 0.0)) * 3.844e8, 1.8e6);
+  vec4 skylight = skybakeEclipseSkylight(camera, sun, moon);
+  SkybakeRadianceAndTransmittance eclipsed = skybakeSkyRadiance(camera, dir, sun, moon, skylight);
+  SkybakeRadianceAndTransmittance eclipsed_received = skybakeReceivedRadiance(camera, dir, sun, moon);
+  SkybakeSunAndSkyIrradiance eclipsed_irradiance = skybakeSunAndSkyIrradiance(camera, dir, sun, moon);
+  float past_moon = skybakeMoonVisibleSunFraction(moon, camera, sun, 4.65e-3);
+  vec4 eclipsed_solar = skybakeInSunDiskPastMoon(camera, dir, sun, moon) ? skybakeSolarRadiance() : vec4(0.0);
   skybake_check_colour = sky.radiance + received.radiance + aerial.radiance + aerial.transmittance +
-                         irradiance.sun + irradiance.sky + solar + skybakeTransmittance(camera, camera + dir);
+                         irradiance.sun + irradiance.sky + solar + skybakeTransmittance(camera, camera + dir) +
+                         eclipsed.radiance + skybakeSkyRadiance(camera, dir, sun, moon).radiance +
+                         eclipsed_received.radiance + eclipsed_irradiance.sun + eclipsed_irradiance.sky +
+                         eclipsed_solar * past_moon;
 }
 )";
 

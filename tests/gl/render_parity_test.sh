@@ -46,6 +46,13 @@ case_ orbit_limb gl_earth.exr --altitude-m 400000 --sun-zenith-deg 70 --projecti
   --view-elevation-deg -19.8 --view-azimuth-deg 30 --size 128x96
 case_ scene_narrowed gl_scene.exr --altitude-m 1000 --sun-zenith-deg 60 --projection latlong --size 128x64
 case_ latlong_no_sun gl_earth.exr --altitude-m 0 --sun-zenith-deg 40 --projection latlong --size 128x64 --no-sun
+# Solar eclipses, small images (a ground pixel sums 48 eclipsed sky
+# directions): totality from the umbra's centre on the ground, where most of
+# the sky lies below the 1e-5 floor and the horizon's glow is compared; a
+# partial eclipse from 10 km with the lit ground.
+case_ eclipse_total gl_earth.exr --altitude-m 0 --sun-zenith-deg 50 --moon 0,40,0.28 --size 32x32
+case_ eclipse_partial_latlong gl_earth.exr --altitude-m 10000 --sun-zenith-deg 50 --moon 0,40.25,0.28 \
+  --projection latlong --size 32x16
 
 "$skybake" render "$bakes/gl_earth.exr" --altitude-m 0 --sun-zenith-deg 30 --backend vulkan -o "$work/x.png" \
   2>"$work/bad.log"

@@ -75,3 +75,21 @@ def test_a_far_moon_changes_nothing_and_totality_is_dark(sky):
     assert np.all(sky_e > 0.0)
     with pytest.raises(skybake.BadInput):
         sky.sky_radiance(camera, views[0], sun, shadow_length_m=100.0, moon=total)
+    with pytest.raises(skybake.BadInput):
+        sky.radiance_to_point(camera, camera + 1000.0 * views[1], sun, shadow_length_m=100.0, moon=total)
+
+
+def test_radiance_to_point_with_a_moon(sky):
+    bottom = sky.atmosphere["bottom_radius_m"]
+    camera = np.array([0.0, 0.0, bottom + 500.0])
+    sun = direction(50.0, 0.0)
+    points = camera + np.stack([d * 20e3 for d in (direction(80.0, 30.0), direction(60.0, 180.0))])
+    plain, plain_t = sky.radiance_to_point(camera, points, sun)
+    # A far moon: the plain values bit for bit; the rows one C++ call each.
+    far, far_t = sky.radiance_to_point(camera, points, sun, moon=query_moon(camera, sun, 5.0, 0.28))
+    np.testing.assert_array_equal(far, plain)
+    np.testing.assert_array_equal(far_t, plain_t)
+    # Totality: the transmittance unchanged, the air between far darker.
+    dark, dark_t = sky.radiance_to_point(camera, points, sun, moon=query_moon(camera, sun, 0.0, 0.28))
+    np.testing.assert_array_equal(dark_t, plain_t)
+    assert np.all(dark < 0.1 * plain) and np.all(dark >= 0.0)

@@ -181,7 +181,9 @@ TEST(NightSky, NoStepAtTheLowestBakedSun) {
                                               kBrightnessNames[q], c, altitude, above, step(5), below);
         EXPECT_LE(step(5), kEdgeStepRatio * std::max(above, below) + kRoundingFloor) << where;
         // The continuation goes on falling: a clamp would leave no step below.
-        if (b[5].value[q][c] > 0.0f) EXPECT_GT(below, 0.0f) << where;
+        if (b[5].value[q][c] > 0.0f) {
+          EXPECT_GT(below, 0.0f) << where;
+        }
       }
     }
   }

@@ -140,9 +140,16 @@ class Sky:
         shape, (c, v, s, d) = _rows(camera_m, view_dir, sun_dir, scalars=(shadow_length_m,))
         return self._shaped(shape, *self._sky._sky_radiance(c, v, s, d))
 
-    def radiance_to_point(self, camera_m, point_m, sun_dir, shadow_length_m=0.0):
+    def radiance_to_point(self, camera_m, point_m, sun_dir, shadow_length_m=0.0, moon=None):
         """Aerial perspective: radiance between camera and point, and the
-        transmittance between them."""
+        transmittance between them; moon as in sky_radiance, not with a
+        shadow length."""
+        if moon is not None:
+            if _np.any(_np.asarray(shadow_length_m) != 0.0):
+                raise BadInput("radiance_to_point: a moon and a shadow length together are not available")
+            centre_m, radius_m = moon
+            shape, (c, p, s, m, r) = _rows(camera_m, point_m, sun_dir, centre_m, scalars=(radius_m,))
+            return self._shaped(shape, *self._sky._radiance_to_point_eclipse(c, p, s, m, r))
         shape, (c, p, s, d) = _rows(camera_m, point_m, sun_dir, scalars=(shadow_length_m,))
         return self._shaped(shape, *self._sky._radiance_to_point(c, p, s, d))
 
