@@ -49,36 +49,34 @@ glm::dvec3 sunAt(const benchmark::State& state) {
   return {std::sin(zenith), 0.0, std::cos(zenith)};
 }
 
-void BM_SkyRadianceScalar(benchmark::State& state) {
+// One scalar lookup per iteration, cycling through the directions.
+template <typename Lookup>
+void timeScalarLookups(benchmark::State& state, const Lookup& lookup) {
   const skybake::Sky& sky = benchSky();
   const Directions d = randomDirections(kRays);
   const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 1000.0);
   const glm::dvec3 sun = sunAt(state);
   size_t i = 0;
   for (auto _ : state) {
-    const auto v = sky.skyRadiance(camera, glm::dvec3(d.x[i], d.y[i], d.z[i]), sun);
+    const auto v = lookup(sky, camera, glm::dvec3(d.x[i], d.y[i], d.z[i]), sun);
     benchmark::DoNotOptimize(v);
     i = (i + 1) % kRays;
   }
   state.SetItemsProcessed(state.iterations());
+}
+
+void BM_SkyRadianceScalar(benchmark::State& state) {
+  timeScalarLookups(state, [](const skybake::Sky& sky, const glm::dvec3& camera, const glm::dvec3& view,
+                              const glm::dvec3& sun) { return sky.skyRadiance(camera, view, sun); });
 }
 BENCHMARK(BM_SkyRadianceScalar)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95);
 
 // Every channel of any bake, a spectral one's lane groups included
 // (Sky::channelSkyRadiance): one skyRadiance per lane group and the joining.
 void BM_ChannelSkyRadiance(benchmark::State& state) {
-  const skybake::Sky& sky = benchSky();
-  const Directions d = randomDirections(kRays);
-  const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 1000.0);
-  const glm::dvec3 sun = sunAt(state);
-  size_t i = 0;
-  for (auto _ : state) {
-    const auto v = sky.channelSkyRadiance(camera, glm::dvec3(d.x[i], d.y[i], d.z[i]), sun);
-    benchmark::DoNotOptimize(v);
-    i = (i + 1) % kRays;
-  }
-  state.SetItemsProcessed(state.iterations());
-  state.counters["channels"] = sky.channelCount();
+  timeScalarLookups(state, [](const skybake::Sky& sky, const glm::dvec3& camera, const glm::dvec3& view,
+                              const glm::dvec3& sun) { return sky.channelSkyRadiance(camera, view, sun); });
+  state.counters["channels"] = benchSky().channelCount();
 }
 BENCHMARK(BM_ChannelSkyRadiance)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95);
 

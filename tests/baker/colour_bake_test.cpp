@@ -32,47 +32,20 @@
 #include "runtime/colour/luminance.h"
 #include "runtime/colour/spectral_to_xyz.h"
 #include "runtime/sky.h"
+#include "small_wide_atmosphere.h"
 
 namespace skybake {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Earth on 15 wavelengths from 380 to 780 nm at tiny sizes, its spectra from
-// laws and an inline table (no files): a sun that varies, so that the
-// sunlight weights differ from the colour-matching ones, and a coloured
-// ozone and ground.
+// The small Earth of small_wide_atmosphere.h on `count` wavelengths from
+// 380 to 780 nm, integrated into X, Y, Z.
 std::string colourConfigText(int count) {
-  return fmt::format(R"(name = "colour_test"
-[channels]
-wavelengths_nm = {{ min_nm = 380, max_nm = 780, count = {} }}
-store = "cie_xyz"
-[planet]
-bottom_radius_m = 6360000.0
-top_radius_m = 6420000.0
-ground_albedo = {{ wavelengths_nm = [380, 780], values = [0.05, 0.3] }}
-[sun]
-irradiance = {{ wavelengths_nm = [380, 450, 550, 780], values = [1.1, 2.0, 1.85, 1.2] }}
-[rayleigh]
-scattering = {{ at_nm = 550, value = 13.558e-6, exponent = 4 }}
-density = [{{ exp_term = 1.0, exp_scale = -1.25e-4 }}]
-[mie]
-scattering = {{ at_nm = 550, value = 3.996e-6, angstrom_exponent = 1.3 }}
-extinction = {{ at_nm = 550, value = 4.44e-6, angstrom_exponent = 1.3 }}
-phase_g = 0.8
-density = [{{ exp_term = 1.0, exp_scale = -8.333e-4 }}]
-[absorption]
-extinction = {{ wavelengths_nm = [380, 600, 780], values = [1e-8, 2.5e-6, 1.5e-7] }}
-density = [{{ width_m = 25000.0, linear_term = 6.667e-5, constant_term = -0.6667 }},
-           {{ linear_term = -6.667e-5, constant_term = 2.6667 }}]
-[resolution]
-transmittance = [64, 16]
-irradiance = [16, 8]
-scattering = {{ r = 8, mu = 32, mu_s = 8, nu = 4 }}
-[bake]
-orders = 3
-)",
-                     count);
+  return fmt::format(
+      "name = \"colour_test\"\n[channels]\nwavelengths_nm = {{ min_nm = 380, max_nm = 780, count = {} }}\n"
+      "store = \"cie_xyz\"\n{}",
+      count, kSmallWideAtmosphereToml);
 }
 
 class ColourBakeTest : public ::testing::Test {

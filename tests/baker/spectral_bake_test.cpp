@@ -28,46 +28,18 @@
 #include "data_formats/error.h"
 #include "runtime/colour/channel_luminance.h"
 #include "runtime/sky.h"
+#include "small_wide_atmosphere.h"
 
 namespace skybake {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Earth at tiny sizes on `wavelengths` (a TOML list), its spectra from
-// laws, so that any subset of the wavelengths is the same atmosphere there.
+// The small Earth of small_wide_atmosphere.h on `wavelengths` (a TOML
+// list): any subset of them is the same atmosphere there.
 std::string configText(const std::string& wavelengths, const std::string& store, const std::string& extra = "") {
-  return fmt::format(R"(name = "spectral_test"
-[channels]
-wavelengths_nm = {}
-{}
-[planet]
-bottom_radius_m = 6360000.0
-top_radius_m = 6420000.0
-ground_albedo = {{ wavelengths_nm = [380, 780], values = [0.05, 0.3] }}
-[sun]
-irradiance = {{ wavelengths_nm = [380, 450, 550, 780], values = [1.1, 2.0, 1.85, 1.2] }}
-[rayleigh]
-scattering = {{ at_nm = 550, value = 13.558e-6, exponent = 4 }}
-density = [{{ exp_term = 1.0, exp_scale = -1.25e-4 }}]
-[mie]
-scattering = {{ at_nm = 550, value = 3.996e-6, angstrom_exponent = 1.3 }}
-extinction = {{ at_nm = 550, value = 4.44e-6, angstrom_exponent = 1.3 }}
-phase_g = 0.8
-density = [{{ exp_term = 1.0, exp_scale = -8.333e-4 }}]
-[absorption]
-extinction = {{ wavelengths_nm = [380, 600, 780], values = [1e-8, 2.5e-6, 1.5e-7] }}
-density = [{{ width_m = 25000.0, linear_term = 6.667e-5, constant_term = -0.6667 }},
-           {{ linear_term = -6.667e-5, constant_term = 2.6667 }}]
-[resolution]
-transmittance = [64, 16]
-irradiance = [16, 8]
-scattering = {{ r = 8, mu = 32, mu_s = 8, nu = 4 }}
-[bake]
-orders = 3
-{}
-)",
-                     wavelengths, store.empty() ? "" : fmt::format("store = \"{}\"", store), extra);
+  return fmt::format("name = \"spectral_test\"\n[channels]\nwavelengths_nm = {}\n{}\n{}{}\n", wavelengths,
+                     store.empty() ? "" : fmt::format("store = \"{}\"", store), kSmallWideAtmosphereToml, extra);
 }
 
 const std::string kSixWavelengths = "[400, 450, 500, 550, 600, 650]";

@@ -8,22 +8,8 @@ source_dir=$2
 small="$source_dir/tests/cli/small_earth.toml"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expect_status STATUS MESSAGE_FRAGMENT -- ARGS...: runs skybake, checks the
-# exit status and that stderr contains the fragment.
-expect_status() {
-  local want=$1 fragment=$2; shift 3
-  local got
-  "$skybake" "$@" >"$work/stdout" 2>"$work/stderr"
-  got=$?
-  if [ "$got" -ne "$want" ]; then fail "skybake $* exited $got, expected $want: $(cat "$work/stderr")"; fi
-  if [ -n "$fragment" ] && ! grep -qF -- "$fragment" "$work/stderr" "$work/stdout"; then
-    fail "skybake $*: output lacks '$fragment': $(cat "$work/stderr")"
-  fi
-}
+# shellcheck source=expect_status.sh
+source "$(dirname "${BASH_SOURCE[0]}")/expect_status.sh"
 
 expect_status 0 "bake" -- --help
 expect_status 0 "--precision" -- bake --help

@@ -10,26 +10,8 @@ source_dir=$(cd "$2" && pwd)
 many="$source_dir/tests/cli/small_earth_many.toml"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
-passed=0
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expect_status STATUS MESSAGE_FRAGMENT -- ARGS...: runs skybake, checks the
-# exit status and that its output contains the fragment.
-expect_status() {
-  local want=$1 fragment=$2; shift 3
-  local got
-  "$skybake" "$@" >"$work/stdout" 2>"$work/stderr"
-  got=$?
-  if [ "$got" -ne "$want" ]; then
-    fail "skybake $* exited $got, expected $want: $(cat "$work/stderr")"
-  elif [ -n "$fragment" ] && ! grep -qF -- "$fragment" "$work/stderr" "$work/stdout"; then
-    fail "skybake $*: output lacks '$fragment': $(cat "$work/stderr")"
-  else
-    passed=$((passed + 1))
-  fi
-}
+# shellcheck source=expect_status.sh
+source "$(dirname "${BASH_SOURCE[0]}")/expect_status.sh"
 
 # The number of comma-separated fields of line N of a file.
 fields() { sed -n "${2}p" "$1" | awk -F, '{ print NF }'; }
