@@ -11,6 +11,7 @@
 
 #include "angles.h"
 #include "spectrum.h"
+#include "stored_float_bits.h"
 
 namespace skybake {
 
@@ -138,6 +139,9 @@ struct BakeSettings {
   double order_tolerance = 1e-3;
   int max_orders = 64;
   StoragePrecision precision = StoragePrecision::Float;
+  // The fraction bits the file keeps of every FLOAT value but the optical
+  // depths' (stored_float_bits.h): kFloatFractionBits keeps them all.
+  int stored_fraction_bits = kDefaultStoredFractionBits;
   // Add the orders after the last as a geometric series (see BakeReport).
   bool tail_estimate = true;
   // Store single Mie scattering as one channel (the first wavelength's) beside

@@ -61,6 +61,9 @@ struct BakeContents {
   AtmosphereDomain domain;  // what the 4D tables cover
   SceneOutputs outputs;     // which optional parts the bake holds
   StoragePrecision precision = StoragePrecision::Float;
+  // bake.stored_fraction_bits: the fraction bits the FLOAT values keep (all
+  // for a file written without the attribute).
+  int stored_fraction_bits = kFloatFractionBits;
   bool combined_single_mie = false;  // bake.combined_single_mie as the bake applied it
   // A spectral bake of more than kMaxChannels wavelengths (atmosphere
   // Spectral, FORMAT.md "Spectral bakes"): its wavelengths in groups of at
@@ -126,6 +129,12 @@ bool leavesOut(const BakeContents& contents, const char* part);
 // single Mie table stored combined becomes what a reader rebuilds from the
 // file (approximateSingleMie), so in-memory and read-back bakes agree.
 void clearLeftOutTables(const BakeContents& contents, BakeTables& tables);
+// The tables as the file stores them, so in-memory and read-back bakes
+// agree to the bit: every table but the optical depths rounded to
+// contents.stored_fraction_bits (FORMAT.md "Stored precision"), then the
+// left-out tables cleared (clearLeftOutTables, whose rebuilt single Mie
+// comes from the rounded values, as a reader's does).
+void settleStoredTables(const BakeContents& contents, BakeTables& tables);
 
 struct BakeFile {
   BakeContents contents;  // what the tables hold and cover; sizes equal the tables' sizes

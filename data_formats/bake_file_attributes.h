@@ -47,6 +47,9 @@ inline constexpr const char* kAttrScatteringSizeRMu = "skybake:scattering_size_r
 inline constexpr const char* kAttrScatteringSizeMuSNu = "skybake:scattering_size_mu_s_nu";
 inline constexpr const char* kAttrOutputs = "skybake:outputs";
 inline constexpr const char* kAttrCombinedSingleMie = "skybake:combined_single_mie";
+// The fraction bits every FLOAT value but the optical depths' keeps
+// (stored_float_bits.h); absent: all 23.
+inline constexpr const char* kAttrStoredFractionBits = "skybake:stored_fraction_bits";
 
 // The domain the 4D tables cover.
 inline constexpr const char* kAttrMuSMin = "skybake:mu_s_min";

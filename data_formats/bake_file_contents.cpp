@@ -182,6 +182,7 @@ void insertContentsAttributes(const BakeContents& contents, Imf::Header& header)
   header.insert(kAttrScatteringSizeMuSNu, Imf::V2iAttribute({s.scattering_mu_s, s.scattering_nu}));
   header.insert(kAttrOutputs, Imf::StringAttribute(outputsText(contents.outputs)));
   header.insert(kAttrCombinedSingleMie, Imf::IntAttribute(contents.combined_single_mie ? 1 : 0));
+  header.insert(kAttrStoredFractionBits, Imf::IntAttribute(contents.stored_fraction_bits));
 
   const AtmosphereDomain& d = contents.domain;
   const ScatteringSizes ss = ScatteringSizes::fromTextureSizes(s);
@@ -271,6 +272,10 @@ BakeContents readContentsAttributes(const Imf::Header& header, int format_versio
   }
   if (!sky_radiance) in.failWith(fmt::format("attribute {} lacks sky_radiance, which every bake holds", kAttrOutputs));
   c.combined_single_mie = in.flag(kAttrCombinedSingleMie);
+  // Files written before the attribute kept every bit.
+  c.stored_fraction_bits = header.findTypedAttribute<Imf::IntAttribute>(kAttrStoredFractionBits) != nullptr
+                               ? in.integer(kAttrStoredFractionBits)
+                               : kFloatFractionBits;
 
   AtmosphereDomain& d = c.domain;
   d = AtmosphereDomain::fromParameters(a);
@@ -297,6 +302,7 @@ void validateContents(const BakeContents& contents, const std::string& source) {
   config.sizes = contents.sizes;
   config.scene = contents.outputs;
   config.bake.precision = contents.precision;
+  config.bake.stored_fraction_bits = contents.stored_fraction_bits;
   config.bake.combined_single_mie = contents.combined_single_mie;
   config.scene_ranges.views_below_horizon = contents.domain.scattering_ground_views;
   config.colour_groups = contents.lane_groups;

@@ -500,8 +500,9 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
   }
 
   if (const toml::table* t = in.table(root, "", "bake", false)) {
-    in.rejectUnknownKeys(
-        *t, "bake.", {"orders", "order_tolerance", "max_orders", "precision", "tail_estimate", "combined_single_mie"});
+    in.rejectUnknownKeys(*t, "bake.",
+                         {"orders", "order_tolerance", "max_orders", "precision", "stored_fraction_bits",
+                          "tail_estimate", "combined_single_mie"});
     auto flag = [&](const char* key, bool& out) {
       if (const toml::node* node = t->get(key)) {
         auto b = node->as_boolean();
@@ -526,6 +527,9 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
     }
     if (const toml::node* cap = t->get("max_orders")) {
       config.bake.max_orders = in.integer(*cap, "bake.max_orders");
+    }
+    if (const toml::node* bits = t->get("stored_fraction_bits")) {
+      config.bake.stored_fraction_bits = in.integer(*bits, "bake.stored_fraction_bits");
     }
     if (const toml::node* precision = t->get("precision")) {
       auto s = precision->as_string();

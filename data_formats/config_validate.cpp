@@ -316,6 +316,13 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
     check.fail("bake.order_tolerance", fmt::format("{}", config.bake.order_tolerance),
                fmt::format("must be in [{}, {}]", kMinOrderTolerance, kMaxOrderTolerance));
   }
+  if (config.bake.stored_fraction_bits < kMinStoredFractionBits ||
+      config.bake.stored_fraction_bits > kFloatFractionBits) {
+    check.fail("bake.stored_fraction_bits", fmt::format("{}", config.bake.stored_fraction_bits),
+               fmt::format("must be in [{}, {}] ({} keeps every value exact; fewer than {} is coarser than "
+                           "bake.precision = \"half\")",
+                           kMinStoredFractionBits, kFloatFractionBits, kFloatFractionBits, kMinStoredFractionBits));
+  }
   if (config.bake.max_orders < 2 || config.bake.max_orders > kMaxOrders) {
     check.fail("bake.max_orders", fmt::format("{}", config.bake.max_orders),
                fmt::format("must be in [2, {}]", kMaxOrders));

@@ -110,7 +110,7 @@ std::string configToToml(const BakeConfig& config) {
       "[absorption]\nextinction = {}\ndensity = {}\n\n"
       "[resolution]\ntransmittance = [{}, {}]\nirradiance = [{}, {}]\n"
       "scattering = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n{}\n"
-      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}{}",
+      "[bake]\norders = {}\nprecision = \"{}\"\ntail_estimate = {}\n{}{}{}{}",
       name, wavelengths, numberText(a.bottom_radius_m), numberText(a.top_radius_m),
       list(&AtmosphereParameters::ground_albedo), list(&AtmosphereParameters::sun_irradiance),
       numberText(a.sun_angular_radius_rad), numberText(a.sun_max_zenith_deg),
@@ -124,6 +124,10 @@ std::string configToToml(const BakeConfig& config) {
                   : std::string(),
       config.bake.auto_orders ? std::string("\"auto\"") : std::to_string(config.bake.orders),
       config.bake.precision == StoragePrecision::Half ? "half" : "float", config.bake.tail_estimate,
+      // Written only when it is not the default, for the same reason as below.
+      config.bake.stored_fraction_bits == kDefaultStoredFractionBits
+          ? std::string()
+          : fmt::format("stored_fraction_bits = {}\n", config.bake.stored_fraction_bits),
       // Written only for automatic orders, so fixed-order configs keep their
       // canonical text (and the reference cache keys hashed from it).
       config.bake.auto_orders ? fmt::format("order_tolerance = {}\nmax_orders = {}\n",

@@ -15,6 +15,7 @@ BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& do
   c.domain = domain;
   c.outputs = config.scene;
   c.precision = config.bake.precision;
+  c.stored_fraction_bits = config.bake.stored_fraction_bits;
   c.combined_single_mie = config.bake.combined_single_mie && bakeStoresSingleMie(config.atmosphere);
   if (config.atmosphere.storesLaneGroups()) {
     // One group is an ordinary bake of its wavelengths, as the file reads back.

@@ -310,7 +310,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   // The parts the file leaves out (no Mie scattering, outputs the scene does
   // not use): computed where later orders needed them, not kept.
   out.file.contents = bakeContents(config);
-  clearLeftOutTables(out.file.contents, tables);
+  settleStoredTables(out.file.contents, tables);
 
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.cpu_seconds = processCpuSeconds() - cpu_start;

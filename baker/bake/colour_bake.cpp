@@ -92,7 +92,9 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
   int first_wavelength = 0;
   int orders_computed = 0;
   for (size_t g = 0; g < settled.colour_groups.size(); ++g) {
-    const BakeConfig pass_config = passConfig(settled, g);
+    BakeConfig pass_config = passConfig(settled, g);
+    // Each pass keeps every bit: X, Y, Z are rounded once, as stored.
+    pass_config.bake.stored_fraction_bits = kFloatFractionBits;
     const int lanes = pass_config.atmosphere.channelCount();
     PassProgress pass_progress(progress, g, settled.colour_groups.size());
     BakeOutput pass = bakeWavelengthPass(pass_config, threads, pass_progress);
@@ -139,7 +141,7 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
       xyz.optical_depth.texels[i][c] = static_cast<float>(weights.effectiveOpticalDepth(c, tau));
     }
   }
-  clearLeftOutTables(contents, xyz);
+  settleStoredTables(contents, xyz);
 
   BakeReport& report = out.report;
   finishPassesReport(start, cpu_start, report);

@@ -1,4 +1,6 @@
 // skybake info FILE.exr: what a bake holds, from its header.
+#include <cmath>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -82,7 +84,9 @@ void runInfo(const std::string& path) {
   fmt::print("radii:         bottom {} m, top {} m\n", c.atmosphere.bottom_radius_m, c.atmosphere.top_radius_m);
   fmt::print("sun domain:    zenith 0 to {} deg\n", c.atmosphere.sun_max_zenith_deg);
   fmt::print("orders:        {}\n", bake.orders_computed);
-  fmt::print("precision:     {}\n", c.precision == StoragePrecision::Half ? "half" : "float");
+  fmt::print("precision:     {}; FLOAT values keep {} of {} fraction bits (relative rounding at most {:.2g})\n",
+             c.precision == StoragePrecision::Half ? "half" : "float", c.stored_fraction_bits, kFloatFractionBits,
+             std::ldexp(1.0, -(c.stored_fraction_bits + 1)));
   fmt::print("optical depth: {} mu x {} r\n", s.transmittance_mu, s.transmittance_r);
   fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
   fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu, s.scattering_mu_s,

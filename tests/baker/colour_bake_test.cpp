@@ -57,7 +57,10 @@ class ColourBakeTest : public ::testing::Test {
     const BakeConfig settled = settledBakeConfig(*config_);
     passes_ = new std::vector<BakeOutput>();
     for (size_t g = 0; g < settled.colour_groups.size(); ++g) {
-      passes_->push_back(bakeAtmosphere(passConfig(settled, g), 2, quiet));
+      // Every bit kept, as the colour bake's own passes keep them.
+      BakeConfig pass = passConfig(settled, g);
+      pass.bake.stored_fraction_bits = kFloatFractionBits;
+      passes_->push_back(bakeAtmosphere(pass, 2, quiet));
     }
   }
   static void TearDownTestSuite() {
@@ -78,8 +81,10 @@ std::vector<BakeOutput>* ColourBakeTest::passes_ = nullptr;
 // colour-matching-weighted sum of the passes' tables. Both sides sum 15
 // float products of float weights; the bake sums them in float, 4 lanes per
 // pass, the test in double: they differ by a few float roundings of the
-// largest term, well below 1e-5 of the sum of the terms' magnitudes.
-constexpr double kLinearSumTolerance = 1e-5;
+// largest term, well below 1e-5 of the sum of the terms' magnitudes. The
+// stored sum is then rounded to the stored fraction bits, at most 2^-17
+// (7.6e-6) of itself (data_formats/stored_float_bits.h).
+constexpr double kLinearSumTolerance = 1e-5 + 7.6e-6;
 
 template <typename Member>
 void expectWeightedSum(const BakeOutput& colour, const std::vector<BakeOutput>& passes,

@@ -27,6 +27,10 @@ expect_status 2 "does not exist" -- bake "$small" -o "$work/no/such/dir/x.exr"
 sed 's/phase_g = 0.8/phase_g = 1.2/' "$small" >"$work/bad_g.toml"
 expect_status 2 "bad_g.toml:" -- bake "$work/bad_g.toml" -o "$work/x.exr"
 grep -qF "mie.phase_g = 1.2: must be in (-1, 1)" "$work/stderr" || fail "bad phase_g message: $(cat "$work/stderr")"
+sed 's/^orders = 3/orders = 3\nstored_fraction_bits = 30/' "$small" >"$work/bad_bits.toml"
+expect_status 2 "bad_bits.toml:" -- bake "$work/bad_bits.toml" -o "$work/x.exr"
+grep -qF "bake.stored_fraction_bits = 30: must be in [10, 23]" "$work/stderr" ||
+  fail "bad stored_fraction_bits message: $(cat "$work/stderr")"
 
 # A good bake, then a failing one aimed at the same path: the first survives.
 expect_status 0 "baked 'small_earth'" -- bake "$small" -o "$work/good.exr" --threads 1 --reproducible
@@ -42,6 +46,7 @@ cmp -s "$work/good.exr" "$work/two.exr" || fail "bakes with 1 and 2 threads diff
 expect_status 0 "" -- info "$work/good.exr"
 grep -q "small_earth" "$work/stdout" || fail "info does not name the atmosphere"
 grep -q "8 r x 32 mu x 8 mu_s x 4 nu" "$work/stdout" || fail "info does not give the sizes"
+grep -qF "keep 16 of 23 fraction bits" "$work/stdout" || fail "info does not give the stored precision"
 printf 'not an exr' >"$work/garbage.exr"
 expect_status 2 "garbage.exr" -- info "$work/garbage.exr"
 expect_status 2 "missing.exr" -- info "$work/missing.exr"

@@ -208,6 +208,19 @@ TEST(Config, RejectsBadOrderSettings) {
   expectRejected(kMinimal + "[bake]\nmax_orders = 1\n", {"bake.max_orders", "1", "must be in [2, 1000]"});
 }
 
+TEST(Config, StoredFractionBitsDefaultRoundTripAndRange) {
+  EXPECT_EQ(parseConfig(kMinimal, "minimal").bake.stored_fraction_bits, kDefaultStoredFractionBits);
+  const BakeConfig exact = parseConfig(kMinimal + "[bake]\nstored_fraction_bits = 23\n", "exact");
+  EXPECT_EQ(exact.bake.stored_fraction_bits, 23);
+  EXPECT_EQ(parseConfig(configToToml(exact), "round trip").bake.stored_fraction_bits, 23);
+  // The default is left out of the canonical text, which keys reference caches.
+  EXPECT_EQ(configToToml(parseConfig(kMinimal, "minimal")).find("stored_fraction_bits"), std::string::npos);
+  expectRejected(kMinimal + "[bake]\nstored_fraction_bits = 9\n",
+                 {"bake.stored_fraction_bits", "9", "must be in [10, 23]"});
+  expectRejected(kMinimal + "[bake]\nstored_fraction_bits = 24\n", {"bake.stored_fraction_bits", "24"});
+  expectRejected(kMinimal + "[bake]\nstored_fraction_bits = 16.5\n", {"bake.stored_fraction_bits", "16.5"});
+}
+
 TEST(Config, MinimalConfigGetsDefaults) {
   const BakeConfig c = parseConfig(kMinimal, "minimal");
   EXPECT_EQ(c.atmosphere.rayleigh_scattering[0], 0.0f);
