@@ -225,14 +225,19 @@ Command addValidateCommand(CLI::App& app) {
   auto o = std::make_shared<ValidateOptions>();
   CLI::App* cmd = app.add_subcommand(
       "validate", "Measure a bake's error against the independent reference solver (results cached on disk).");
-  cmd->add_option("file", o->bake_path, "Bake file (.exr).")->required();
+  cmd->add_option("file", o->bake_path,
+                  "Bake file (.exr). A spectral bake (channels.store = \"spectral\") is validated lane group by lane "
+                  "group, each group of 4 wavelengths against its own reference (the reference time grows with the "
+                  "number of groups); the report gives every wavelength's errors.")
+      ->required();
   addReferenceOptions(*cmd, o->queries, o->reference_samples, o->cache_dir);
   cmd->add_option("--json", o->json_path, "Also write the report as JSON here.");
   cmd->add_option("--details", o->details_path, "Also write every query's bake and reference values (CSV).");
   cmd->add_option("--colour-config", o->colour_config,
                   "Also report colour error (luminance, CIEDE2000) against a reference in CIE XYZ from 41 "
                   "wavelengths, 380 to 780 nm, the atmosphere there read from this config's spectra: the config "
-                  "the bake was made from. Refused for a config with a per-wavelength key given as a list of "
+                  "the bake was made from (a spectral bake's colour is all its channels together). Refused for a "
+                  "config with a per-wavelength key given as a list of "
                   "differing values, or a spectrum that stops short of 380 or 780 nm (docs/COLOUR.md). Required for a "
                   "colour bake (channels X, Y, Z), which is compared with this reference only.");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");

@@ -427,10 +427,27 @@ nlohmann::ordered_json ErrorReport::toJson() const {
   return j;
 }
 
+namespace {
+
+// A channel's name in the table: a wavelength channel's wavelength to 5
+// digits ("406.67nm" where the file's channel name, which OpenEXR allows no
+// '.' in, is "406p6666666666667nm"); X, Y, Z as they are.
+std::vector<std::string> tableLabels(const ErrorReport& r) {
+  std::vector<std::string> labels = r.channel_names;
+  if (r.wavelengths_nm.size() != labels.size()) return labels;
+  for (size_t c = 0; c < labels.size(); ++c) {
+    if (labels[c].ends_with("nm")) labels[c] = fmt::format("{:.5g}nm", r.wavelengths_nm[c]);
+  }
+  return labels;
+}
+
+}  // namespace
+
 std::string ErrorReport::table() const {
   // A spectral bake's channels (up to 64) are shown a lane group of 4 at a
   // time, one table per group, each as wide as an ordinary bake's.
-  const size_t channels = channel_names.size();
+  const std::vector<std::string> labels = tableLabels(*this);
+  const size_t channels = labels.size();
   const size_t group = static_cast<size_t>(kMaxChannels);
   const size_t groups = (channels + group - 1) / group;
   std::string out;
@@ -438,10 +455,10 @@ std::string ErrorReport::table() const {
     const size_t last = std::min(first + group, channels);
     if (groups > 1) {
       out += fmt::format("{}lane group {} of {} ({} to {}):\n", first == 0 ? "" : "\n", first / group + 1, groups,
-                         channel_names[first], channel_names[last - 1]);
+                         labels[first], labels[last - 1]);
     }
     out += fmt::format("{:<18} {:<12} {:>5} {:>5}", "quantity", "band", "n", "skip");
-    for (size_t c = first; c < last; ++c) out += fmt::format("  {:>22}", channel_names[c] + " rms/p95/max %");
+    for (size_t c = first; c < last; ++c) out += fmt::format("  {:>22}", labels[c] + " rms/p95/max %");
     out += "  ref stderr %\n";
     for (const ErrorRow& row : rows) {
       const ErrorStats& lead = row.channels[first];
