@@ -76,12 +76,33 @@ BakeConfig configAtWavelengths(std::string_view toml_text, const std::string& so
                      spectrum_directory);
 }
 
-BakeConfig configFileAtWavelengths(const std::filesystem::path& path, std::span<const double> wavelengths_nm) {
+namespace {
+
+std::string configFileText(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throwBadInput(fmt::format("{}: cannot open config file", path.string()));
   std::ostringstream text;
   text << file.rdbuf();
-  return configAtWavelengths(text.str(), path.string(), path.parent_path(), wavelengths_nm);
+  return text.str();
+}
+
+}  // namespace
+
+BakeConfig configFileAtWavelengths(const std::filesystem::path& path, std::span<const double> wavelengths_nm) {
+  return configAtWavelengths(configFileText(path), path.string(), path.parent_path(), wavelengths_nm);
+}
+
+BakeConfig configFileWithStore(const std::filesystem::path& path, std::string_view store) {
+  const std::string toml_text = configFileText(path);
+  // The config as written first, so that its own errors name its lines.
+  parseConfig(toml_text, path.string(), path.parent_path());
+  checkTomlCharacters(toml_text, path.string());
+  toml::table root = toml::parse(toml_text, path.string());
+  if (root.get_as<toml::table>("channels") == nullptr) root.insert_or_assign("channels", toml::table{});
+  root.get_as<toml::table>("channels")->insert_or_assign("store", std::string(store));
+  std::ostringstream text;
+  text << toml::toml_formatter(root);
+  return parseConfig(text.str(), fmt::format("{} (channels.store = \"{}\")", path.string(), store), path.parent_path());
 }
 
 }  // namespace skybake

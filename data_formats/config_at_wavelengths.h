@@ -2,7 +2,8 @@
 // per-wavelength quantities taken from the config's own spectra (CONFIG.md,
 // "Spectra") at the wavelengths asked for. The colour reference of
 // `skybake validate --colour-config` evaluates a bake's atmosphere this way
-// at 41 wavelengths from 380 to 780 nm, a few at a time.
+// at 41 wavelengths from 380 to 780 nm, a few at a time. Also a config on its
+// own wavelengths stored another way (channels.store).
 #pragma once
 
 #include <array>
@@ -35,5 +36,12 @@ BakeConfig configAtWavelengths(std::string_view toml_text, const std::string& so
 
 // The same for a config file (its spectrum files relative to its directory).
 BakeConfig configFileAtWavelengths(const std::filesystem::path& path, std::span<const double> wavelengths_nm);
+
+// The config file with channels.store set to `store` ("wavelengths",
+// "cie_xyz" or "spectral"): the same atmosphere on the same wavelengths,
+// stored another way (skybake compare --colour puts a colour bake's config
+// beside its spectral bake). Refused as a config file is (Error(BadInput)
+// naming the file and the store) where the store cannot take it.
+BakeConfig configFileWithStore(const std::filesystem::path& path, std::string_view store);
 
 }  // namespace skybake

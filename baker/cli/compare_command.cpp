@@ -3,7 +3,8 @@
 // Error against the reference and cost, for the bake at several resolutions
 // and for the simpler methods people use instead, on the same queries; or,
 // with --colour, a colour bake beside bakes of 3 and 4 wavelengths of the
-// same atmosphere, in colour error against the colour reference.
+// same atmosphere and its spectral bake (every one of its wavelengths
+// stored), in colour error against the colour reference.
 #include <omp.h>
 
 #include <array>
@@ -24,6 +25,7 @@
 #include "baker/comparators/ray_marched_single.h"
 #include "baker/validation/colour_error.h"
 #include "baker/validation/colour_reference.h"
+#include "baker/validation/lane_group_validation.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
@@ -57,14 +59,20 @@ class BakedSky final : public SkyMethod {
   }
   double precomputeSeconds() const override { return seconds_; }
   const Sky& sky() const { return sky_; }
+  // Every lane group's tables (a spectral bake holds one set per group of 4).
   size_t memoryBytes() const override {
-    const BakeTables& t = sky_.tables();
-    size_t texels = 0;
-    for (const auto* v : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels,
-                          &t.single_mie.texels, &t.multiple_scattering.texels, &t.multiple_density.texels}) {
-      texels += v->size();
+    size_t bytes = 0;
+    for (int g = 0; g < sky_.laneGroupCount(); ++g) {
+      const Sky& group = sky_.laneGroup(g);
+      const BakeTables& t = group.tables();
+      size_t texels = 0;
+      for (const auto* v : {&t.optical_depth.texels, &t.irradiance.texels, &t.single_rayleigh.texels,
+                            &t.single_mie.texels, &t.multiple_scattering.texels, &t.multiple_density.texels}) {
+        texels += v->size();
+      }
+      bytes += texels * sizeof(float) * group.channelCount();
     }
-    return texels * sizeof(float) * sky_.channelCount();
+    return bytes;
   }
 
  private:
@@ -165,9 +173,11 @@ std::string colourCell(const ColourErrorReport& r, const char* band) {
                      row->stats.ciede2000_p95);
 }
 
-// --colour: the config's colour bake and its atmosphere baked on 3 and on 4
-// wavelengths, each against the colour reference (41 wavelengths, CIE XYZ),
-// in luminance and CIEDE2000, with bake time, lookup time and table size.
+// --colour: the config's colour bake, its atmosphere baked on 3 and on 4
+// wavelengths, and its spectral bake of the colour bake's wavelengths, each
+// against the colour reference (41 wavelengths, CIE XYZ), in luminance and
+// CIEDE2000, with bake time, lookup time (every lane group's) and table size
+// (every lane group's tables).
 void runColourCompare(const CompareOptions& o) {
   if (o.config_path.empty() || o.resolutions_given) {
     throwBadInput(o.config_path.empty()
@@ -192,8 +202,14 @@ void runColourCompare(const CompareOptions& o) {
       {"3 wavelengths (680, 550, 440 nm)", configFileAtWavelengths(o.config_path, kThreeCompareWavelengths_nm)});
   variants.push_back(
       {"4 wavelengths (440, 520, 600, 680 nm)", configFileAtWavelengths(o.config_path, kFourCompareWavelengths_nm)});
-  variants.push_back({fmt::format("colour: {} wavelengths to CIE XYZ", colour_config.atmosphere.wavelengths_nm.size()),
-                      colour_config});
+  const size_t colour_wavelengths = colour_config.atmosphere.wavelengths_nm.size();
+  variants.push_back({fmt::format("colour: {} wavelengths to CIE XYZ", colour_wavelengths), colour_config});
+  // The colour bake's wavelengths every one stored, its colour converted
+  // after the lookups: the truth the colour bake approximates.
+  const BakeConfig spectral_config = configFileWithStore(o.config_path, "spectral");
+  variants.push_back({fmt::format("spectral: {} wavelengths, {} lane groups", colour_wavelengths,
+                                  (colour_wavelengths + kMaxChannels - 1) / kMaxChannels),
+                      spectral_config});
   uint64_t largest_peak_bytes = 0;  // the bakes run one at a time
   for (const Variant& v : variants)
     largest_peak_bytes = std::max(largest_peak_bytes, estimateBakeMemory(v.config).peak_bytes);
@@ -224,16 +240,18 @@ void runColourCompare(const CompareOptions& o) {
     SilentProgress silent;
     fmt::print(stderr, "baking {} ...\n", v.name);
     const BakedSky baked(v.name, bakeAtmosphere(v.config, 0, silent));
-    const MethodValues values = evaluate(baked, baked.sky().atmosphere(), queries);
-    const ColourErrorReport report = compareColourWithReference(
-        baked.sky().atmosphere(), queries, reference, {bakeXyz(baked.sky(), values.radiance), {}}, settings.paths);
+    // Every lane group's lookups (a spectral bake's colour is its groups' channels together).
+    const std::vector<MethodValues> values = evaluateLaneGroups(baked.sky(), queries);
+    const double seconds_per_ray = secondsPerRay(values);
+    const ColourErrorReport report = compareColourWithReference(baked.sky().atmosphere(), queries, reference,
+                                                                bakeXyz(baked.sky(), values), settings.paths);
     fmt::print("{:<40} {:>10.2f} {:>9.2f} {:>9.2f}  {:>24} {:>24} {:>24}\n", v.name, baked.precomputeSeconds(),
-               values.seconds_per_ray * 1e6, baked.memoryBytes() / (1024.0 * 1024.0), colourCell(report, "day"),
+               seconds_per_ray * 1e6, baked.memoryBytes() / (1024.0 * 1024.0), colourCell(report, "day"),
                colourCell(report, "low_sun"), colourCell(report, "twilight"));
     nlohmann::ordered_json row = report.toJson();
     row["method"] = v.name;
     row["precompute_seconds"] = baked.precomputeSeconds();
-    row["seconds_per_ray"] = values.seconds_per_ray;
+    row["seconds_per_ray"] = seconds_per_ray;
     row["memory_bytes"] = baked.memoryBytes();
     rows.push_back(row);
   }
@@ -250,10 +268,11 @@ void runCompare(const CompareOptions& o) {
     return;
   }
   const BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
+  const AtmosphereParameters& a = config.atmosphere;
+  requireOneLaneGroupForComparators(a, o.config_path);
+  requireWavelengthChannels(a, o.config_path, "compare");
   const std::vector<BakeConfig> scaled_configs =
       scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);
-  const AtmosphereParameters& a = config.atmosphere;
-  requireWavelengthChannels(a, o.config_path, "compare");
   const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
   // Comparators answer rays to the sky or the ground; rays to a point,
   // irradiance and eclipses are validate's.
@@ -330,8 +349,10 @@ Command addCompareCommand(CLI::App& app) {
   requireFiniteIn(resolutions, kMinResolutionFactor, kMaxResolutionFactor);
   cmd->add_flag("--colour", o->colour,
                 "CONFIG is a colour bake's (channels.store = \"cie_xyz\", with spectra): compare it with its "
-                "atmosphere baked on 3 and on 4 wavelengths, in luminance and CIEDE2000 against a colour reference "
-                "from 41 wavelengths (docs/COLOUR.md), with bake time, lookup time and size.");
+                "atmosphere baked on 3 and on 4 wavelengths and with its spectral bake of the same wavelengths "
+                "(channels.store = \"spectral\", colour converted after the lookups), in luminance and CIEDE2000 "
+                "against a colour reference from 41 wavelengths (docs/COLOUR.md), with bake time, lookup time and "
+                "size.");
   cmd->add_option("--json", o->json_path, "Also write the table as JSON here.");
   cmd->add_option("--cache-dir", o->cache_dir, "Reference cache directory (see validate).");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");

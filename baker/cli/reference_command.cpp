@@ -58,47 +58,90 @@ Piece parsePiece(const std::string& text) {
   return {static_cast<int>(*k), static_cast<int>(*n)};
 }
 
-AtmosphereParameters atmosphereOf(const std::string& path) {
-  if (path.empty()) return builtinEarthConfig().atmosphere;
-  const AtmosphereParameters a = std::filesystem::path(path).extension() == ".exr" ? Sky::load(path).atmosphere()
-                                                                                   : loadConfigFile(path).atmosphere;
+// The atmospheres whose references the source needs: its own, or a
+// spectral bake's or config's lane groups (each a reference of its own, in
+// its own cache directory, as validate computes them).
+std::vector<AtmosphereParameters> referenceAtmospheresOf(const std::string& path) {
+  if (path.empty()) return {builtinEarthConfig().atmosphere};
+  AtmosphereParameters a;
+  std::vector<AtmosphereParameters> lane_groups;
+  if (std::filesystem::path(path).extension() == ".exr") {
+    const Sky sky = Sky::load(path);
+    a = sky.atmosphere();
+    lane_groups = sky.contents().lane_groups;
+  } else {
+    const BakeConfig config = loadConfigFile(path);
+    a = config.atmosphere;
+    if (a.storesLaneGroups()) lane_groups = config.colour_groups;
+  }
   requireWavelengthChannels(a, path, "reference");
-  return a;
+  if (!a.storesLaneGroups()) return {a};
+  return lane_groups;
+}
+
+std::string wavelengthList(const AtmosphereParameters& a) {
+  std::string out;
+  for (double nm : a.wavelengths_nm) out += fmt::format("{}{}", out.empty() ? "" : " ", nm);
+  return out;
 }
 
 void runReference(const ReferenceOptions& o) {
   const ScopedOpenMpThreads thread_count(o.threads);
   const Piece piece = parsePiece(o.piece);
-  const AtmosphereParameters a = atmosphereOf(o.source_path);
+  const std::vector<AtmosphereParameters> groups = referenceAtmospheresOf(o.source_path);
+  const AtmosphereParameters& a = groups.front();
   const QuerySet queries =
       queryPiece(querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m), piece.index, piece.count);
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, false);
   const std::string source = o.source_path.empty() ? "<built-in earth>" : o.source_path;
+  const size_t total = queries.radiance.size() + queries.irradiance.size();
   if (o.estimate) {
-    const ReferenceCache cache(settings.cache_directory, a, settings.paths);
-    const size_t missing = queriesMissingFromCache(cache, queries).size();
-    const size_t total = queries.radiance.size() + queries.irradiance.size();
-    const nlohmann::ordered_json j{
+    size_t missing = 0;
+    nlohmann::ordered_json lane_groups = nlohmann::ordered_json::array();
+    std::string directory;
+    for (const AtmosphereParameters& group : groups) {
+      const ReferenceCache cache(settings.cache_directory, group, settings.paths);
+      const size_t group_missing = queriesMissingFromCache(cache, queries).size();
+      missing += group_missing;
+      directory = cache.directory().string();
+      lane_groups.push_back({{"wavelengths_nm", group.wavelengths_nm},
+                             {"cached", total - group_missing},
+                             {"to_compute", group_missing},
+                             {"cache_directory", directory}});
+    }
+    // Counted over every lane group's reference: a spectral source's queries are computed once per group.
+    nlohmann::ordered_json j{
         {"source", source},
         {"query_set", queries.name},
         {"piece", fmt::format("{}/{}", piece.index, piece.count)},
         {"paths_per_query", settings.paths},
-        {"queries", total},
-        {"cached", total - missing},
+        {"queries", total * groups.size()},
+        {"cached", total * groups.size() - missing},
         {"to_compute", missing},
-        {"estimated_core_seconds", std::ceil(missing * double(settings.paths) * kReferenceCoreSecondsPerPath)},
-        {"cache_directory", cache.directory().string()}};
+        {"estimated_core_seconds", std::ceil(missing * double(settings.paths) * kReferenceCoreSecondsPerPath)}};
+    if (groups.size() == 1) {
+      j["cache_directory"] = directory;
+    } else {
+      j["lane_groups"] = lane_groups;
+    }
     fmt::print("{}\n", j.dump(2));
     return;
   }
   TerminalProgress progress;
-  const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
-  fmt::print(
-      "reference for {} ({} paths per query), query set '{}' piece {} of {}: {} radiance and {} irradiance "
-      "queries ({} from the cache, {} computed in {:.1f} s) in {}\n",
-      source, settings.paths, queries.name, piece.index, piece.count, queries.radiance.size(),
-      queries.irradiance.size(), reference.cached, reference.computed, reference.seconds,
-      settings.cache_directory.string());
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const std::string stage =
+        groups.size() == 1 ? "reference" : fmt::format("reference, lane group {}/{}", g + 1, groups.size());
+    const ReferenceValues reference = computeReferenceValues(groups[g], queries, settings, progress, stage);
+    fmt::print(
+        "reference for {}{} ({} paths per query), query set '{}' piece {} of {}: {} radiance and {} irradiance "
+        "queries ({} from the cache, {} computed in {:.1f} s) in {}\n",
+        source,
+        groups.size() == 1
+            ? ""
+            : fmt::format(", lane group {} of {} ({} nm)", g + 1, groups.size(), wavelengthList(groups[g])),
+        settings.paths, queries.name, piece.index, piece.count, queries.radiance.size(), queries.irradiance.size(),
+        reference.cached, reference.computed, reference.seconds, settings.cache_directory.string());
+  }
 }
 
 }  // namespace
@@ -110,7 +153,9 @@ Command addReferenceCommand(CLI::App& app) {
       "Compute an atmosphere's reference values into the reference cache (whole or one piece), for validate and "
       "compare to find there.");
   cmd->add_option("source", o->source_path,
-                  "Config (.toml) or bake (.exr) whose atmosphere to compute (default: the built-in Earth).");
+                  "Config (.toml) or bake (.exr) whose atmosphere to compute (default: the built-in Earth); for a "
+                  "spectral one (channels.store = \"spectral\"), each lane group of 4 wavelengths in turn, as "
+                  "validate needs them.");
   addReferenceOptions(*cmd, o->queries, o->reference_samples, o->cache_dir);
   cmd->add_option("--piece", o->piece,
                   "K/N: compute only the K-th of N interleaved pieces of the query set (each piece its own job; "

@@ -11,10 +11,10 @@
 #include "baker/cli/reference_options.h"
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/terminal_progress.h"
-#include "baker/cli/wavelength_channels.h"
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/colour_error.h"
 #include "baker/validation/colour_reference.h"
+#include "baker/validation/lane_group_validation.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
@@ -48,17 +48,23 @@ std::string colourColumns(const colour::Xyz& bake, const CachedReference& refere
                          : 0.0);
 }
 
-// One row per query: the bake's and the reference's values side by side
-// (and their CIE XYZ and CIEDE2000 with a colour reference).
-void writeDetails(const std::string& path, const AtmosphereParameters& a, const QuerySet& queries,
-                  const ReferenceValues& reference, const MethodValues& bake, const ColourDetails& colour) {
+// One row per query: the bake's and the reference's values side by side,
+// every lane group's channels in order (and their CIE XYZ and CIEDE2000
+// with a colour reference).
+void writeDetails(const std::string& path, const Sky& sky, const QuerySet& queries,
+                  const std::vector<ReferenceValues>& references, const std::vector<MethodValues>& bakes,
+                  const ColourDetails& colour) {
   std::string text =
       "kind,altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,"
       "moon_angular_radius_deg";
   // A colour bake's channels are X, Y, Z: the colour columns below hold them.
-  const int n = a.storesCieXyz() ? 0 : a.channelCount();
-  for (int c = 0; c < n; ++c) {
-    text += fmt::format(",bake_{0},reference_{0},reference_error_{0}", a.wavelengths_nm[c]);
+  const int groups = sky.atmosphere().storesCieXyz() ? 0 : sky.laneGroupCount();
+  auto lanes = [&](int g) { return sky.laneGroup(g).channelCount(); };
+  for (int g = 0; g < groups; ++g) {
+    for (int c = 0; c < lanes(g); ++c) {
+      text +=
+          fmt::format(",bake_{0},reference_{0},reference_error_{0}", sky.laneGroup(g).atmosphere().wavelengths_nm[c]);
+    }
   }
   if (colour.reference != nullptr) {
     text += ",bake_X,bake_Y,bake_Z,reference_X,reference_Y,reference_Z,reference_error_Y,ciede2000";
@@ -68,9 +74,11 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
     const RadianceQuery& q = queries.radiance[i];
     text += fmt::format("radiance,{},{},{},{},{},{},{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
                         q.view_azimuth_deg, q.distance_m, q.moon.separation_deg, q.moon.angular_radius_deg);
-    for (int c = 0; c < n; ++c) {
-      text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.radiance[i][c], reference.radiance[i].value[c],
-                          reference.radiance[i].standard_error[c]);
+    for (int g = 0; g < groups; ++g) {
+      const CachedReference& r = references[g].radiance[i];
+      for (int c = 0; c < lanes(g); ++c) {
+        text += fmt::format(",{:.6g},{:.6g},{:.3g}", bakes[g].radiance[i][c], r.value[c], r.standard_error[c]);
+      }
     }
     if (colour.reference != nullptr) text += colourColumns(colour.bake->radiance[i], colour.reference->radiance[i]);
     text += "\n";
@@ -78,9 +86,11 @@ void writeDetails(const std::string& path, const AtmosphereParameters& a, const 
   for (size_t i = 0; i < queries.irradiance.size(); ++i) {
     const IrradianceQuery& q = queries.irradiance[i];
     text += fmt::format("sky_irradiance,{},{},,,,,", q.altitude_m, q.sun_zenith_deg);
-    for (int c = 0; c < n; ++c) {
-      text += fmt::format(",{:.6g},{:.6g},{:.3g}", bake.irradiance[i][c], reference.irradiance[i].value[c],
-                          reference.irradiance[i].standard_error[c]);
+    for (int g = 0; g < groups; ++g) {
+      const CachedReference& r = references[g].irradiance[i];
+      for (int c = 0; c < lanes(g); ++c) {
+        text += fmt::format(",{:.6g},{:.6g},{:.3g}", bakes[g].irradiance[i][c], r.value[c], r.standard_error[c]);
+      }
     }
     if (colour.reference != nullptr) {
       text += colourColumns(colour.bake->irradiance[i], colour.reference->irradiance[i]);
@@ -98,7 +108,6 @@ void runValidate(const ValidateOptions& o) {
   const Sky sky = Sky::load(o.bake_path);
   requireWritableOutput(reportSidecarPath(o.bake_path));
   const AtmosphereParameters& a = sky.atmosphere();
-  requireOneLaneGroup(a, o.bake_path, "validate");
   // A colour bake's X, Y, Z are compared with the colour reference only:
   // its atmosphere's X, Y, Z coefficients are means no wavelength has.
   const bool colour_bake = a.storesCieXyz();
@@ -112,7 +121,7 @@ void runValidate(const ValidateOptions& o) {
   // reference is computed.
   std::optional<ColourReferenceAtmospheres> colour_atmospheres;
   if (!o.colour_config.empty()) {
-    requireConfigOfBake(o.colour_config, a);
+    requireConfigOfBake(o.colour_config, a, sky.contents().lane_groups);
     colour_atmospheres = colourReferenceAtmospheresFromFile(o.colour_config);
   }
   std::string left_out;
@@ -123,31 +132,38 @@ void runValidate(const ValidateOptions& o) {
   TerminalProgress progress;
   ColourReferenceValues colour_reference;
   if (colour_atmospheres) colour_reference = computeColourReference(*colour_atmospheres, queries, settings, progress);
-  // A colour bake's reference is the colour reference itself, channel for channel.
-  const ReferenceValues reference =
-      colour_bake ? ReferenceValues{colour_reference.radiance, colour_reference.irradiance, colour_reference.seconds,
-                                    colour_reference.computed, colour_reference.cached}
-                  : computeReferenceValues(a, queries, settings, progress);
-  const MethodValues bake = evaluateBake(sky, queries);
-  const ErrorReport report = compareWithReference(a, queries, reference, bake, settings.paths);
+  // A colour bake's reference is the colour reference itself, channel for
+  // channel; any other bake's is computed per lane group (a spectral bake's
+  // groups one after the other, each in its own cache).
+  const std::vector<ReferenceValues> references =
+      colour_bake
+          ? std::vector<ReferenceValues>{{colour_reference.radiance, colour_reference.irradiance,
+                                          colour_reference.seconds, colour_reference.computed, colour_reference.cached}}
+          : computeLaneGroupReferences(sky, queries, settings, progress);
+  const ReferenceValues reference = referenceTotals(references);
+  const std::vector<MethodValues> bakes = evaluateLaneGroups(sky, queries);
+  const ErrorReport report = compareLaneGroupsWithReference(sky, queries, references, bakes, settings.paths);
   MethodXyz bake_xyz;
   ColourValidation colour_report;
   if (colour_atmospheres) {
-    bake_xyz = bakeXyz(sky, bake);
+    bake_xyz = bakeXyz(sky, bakes);
     colour_report =
         colour_bake
             ? ColourValidation{compareColourWithReference(a, queries, colour_reference, bake_xyz, settings.paths), {}}
-            : validateColour(sky, queries, reference, colour_reference, bake, settings.paths);
+            : validateColour(sky, queries, references, colour_reference, bakes, settings.paths);
   }
 
   // The X, Y, Z of a colour bake are spectral values integrated over the
   // colour-matching functions' width: its thresholds scale with it.
   const double value_scale = report.smallest_compared_value / kSmallestComparedValue;
+  const int groups = sky.laneGroupCount();
   fmt::print(
-      "validate {} against the reference ({} paths per query), query set '{}': {} radiance and {} "
+      "validate {} against the reference ({} paths per query{}), query set '{}': {} radiance and {} "
       "irradiance queries ({} from the cache, {} computed in {:.1f} s)\n",
-      o.bake_path, settings.paths, queries.name, queries.radiance.size(), queries.irradiance.size(), reference.cached,
-      reference.computed, reference.seconds);
+      o.bake_path, settings.paths,
+      groups > 1 ? fmt::format("; {} lane groups of up to 4 wavelengths, each against its own reference", groups) : "",
+      queries.name, queries.radiance.size(), queries.irradiance.size(), reference.cached, reference.computed,
+      reference.seconds);
   fmt::print(
       "relative error |L - Lref| / Lref; values below {:.3g} skipped ({:.3g} nautical, {:.3g} astronomical and "
       "night); sun elevation: day > 10 deg, low_sun 0 to 10, twilight (civil) -6 to 0, nautical -12 to -6, "
@@ -177,13 +193,14 @@ void runValidate(const ValidateOptions& o) {
     j["colour"] = colour_report.toJson();
     j["colour"]["config"] = o.colour_config;
   }
+  if (groups > 1) j["lane_groups"] = laneGroupsJson(sky, references);
   j["bake_file"] = o.bake_path;
-  j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
+  j["lookup_seconds_per_ray"] = secondsPerRay(bakes);
   if (!o.json_path.empty()) {
     writeFileContentsAtomically(o.json_path, j.dump(2) + "\n");
   }
   if (!o.details_path.empty()) {
-    writeDetails(o.details_path, a, queries, reference, bake,
+    writeDetails(o.details_path, sky, queries, references, bakes,
                  colour_atmospheres ? ColourDetails{&colour_reference, &bake_xyz} : ColourDetails{});
   }
   nlohmann::ordered_json sidecar = readReportSidecar(o.bake_path);
@@ -208,14 +225,19 @@ Command addValidateCommand(CLI::App& app) {
   auto o = std::make_shared<ValidateOptions>();
   CLI::App* cmd = app.add_subcommand(
       "validate", "Measure a bake's error against the independent reference solver (results cached on disk).");
-  cmd->add_option("file", o->bake_path, "Bake file (.exr).")->required();
+  cmd->add_option("file", o->bake_path,
+                  "Bake file (.exr). A spectral bake (channels.store = \"spectral\") is validated lane group by lane "
+                  "group, each group of 4 wavelengths against its own reference (the reference time grows with the "
+                  "number of groups); the report gives every wavelength's errors.")
+      ->required();
   addReferenceOptions(*cmd, o->queries, o->reference_samples, o->cache_dir);
   cmd->add_option("--json", o->json_path, "Also write the report as JSON here.");
   cmd->add_option("--details", o->details_path, "Also write every query's bake and reference values (CSV).");
   cmd->add_option("--colour-config", o->colour_config,
                   "Also report colour error (luminance, CIEDE2000) against a reference in CIE XYZ from 41 "
                   "wavelengths, 380 to 780 nm, the atmosphere there read from this config's spectra: the config "
-                  "the bake was made from. Refused for a config with a per-wavelength key given as a list of "
+                  "the bake was made from (a spectral bake's colour is all its channels together). Refused for a "
+                  "config with a per-wavelength key given as a list of "
                   "differing values, or a spectrum that stops short of 380 or 780 nm (docs/COLOUR.md). Required for a "
                   "colour bake (channels X, Y, Z), which is compared with this reference only.");
   cmd->add_flag("--no-cache", o->no_cache, "Compute the reference afresh and keep nothing.");

@@ -1,6 +1,7 @@
 // skybake._skybake.validate: a bake's error against the independent
 // reference, as `skybake validate` measures it, returned as the report's
-// JSON object (the same keys as `validate --json`; with colour_config, its
+// JSON object (the same keys as `validate --json`, a spectral bake's
+// figures per wavelength from a reference per lane group; with colour_config, its
 // "colour" object too: luminance and CIEDE2000 per sun band against the
 // colour reference, docs/COLOUR.md). The reference cache is
 // shared with the command line; unlike it, this writes no report sidecar.
@@ -14,6 +15,7 @@
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/colour_error.h"
 #include "baker/validation/colour_reference.h"
+#include "baker/validation/lane_group_validation.h"
 #include "baker/validation/validation.h"
 #include "baker/validation/validation_queries.h"
 #include "data_formats/error.h"
@@ -32,14 +34,9 @@ py::object validate(const std::string& bake_path, const std::string& queries_nam
     const ScopedOpenMpThreads thread_count(threads);
     const Sky sky = Sky::load(bake_path);
     const AtmosphereParameters& a = sky.atmosphere();
-    if (a.storesLaneGroups()) {
-      throw Error(ErrorKind::BadInput, bake_path +
-                                           ": a spectral bake of more than 4 wavelengths: validate compares at "
-                                           "most 4 wavelength channels with the reference solver");
-    }
     std::optional<ColourReferenceAtmospheres> colour;
     if (!colour_config.empty()) {
-      requireConfigOfBake(colour_config, a);
+      requireConfigOfBake(colour_config, a, sky.contents().lane_groups);
       colour = colourReferenceAtmospheresFromFile(colour_config);
     }
     std::string left_out;
@@ -47,16 +44,18 @@ py::object validate(const std::string& bake_path, const std::string& queries_nam
         queriesAnsweredBy(sky, querySetNamed(queries_name, a.top_radius_m - a.bottom_radius_m), left_out);
     const ReferenceSettings settings = referenceSettings(reference_samples, cache_dir, no_cache);
     cli::TerminalProgress progress;
-    const ReferenceValues reference = computeReferenceValues(a, queries, settings, progress);
-    const MethodValues bake = evaluateBake(sky, queries);
-    nlohmann::ordered_json j = compareWithReference(a, queries, reference, bake, settings.paths).toJson();
+    // A spectral bake's lane groups each against their own reference, as the command line does.
+    const std::vector<ReferenceValues> references = computeLaneGroupReferences(sky, queries, settings, progress);
+    const std::vector<MethodValues> bakes = evaluateLaneGroups(sky, queries);
+    nlohmann::ordered_json j = compareLaneGroupsWithReference(sky, queries, references, bakes, settings.paths).toJson();
     if (colour) {
       const ColourReferenceValues colour_reference = computeColourReference(*colour, queries, settings, progress);
-      j["colour"] = validateColour(sky, queries, reference, colour_reference, bake, settings.paths).toJson();
+      j["colour"] = validateColour(sky, queries, references, colour_reference, bakes, settings.paths).toJson();
       j["colour"]["config"] = colour_config;
     }
+    if (sky.laneGroupCount() > 1) j["lane_groups"] = laneGroupsJson(sky, references);
     j["bake_file"] = bake_path;
-    j["lookup_seconds_per_ray"] = bake.seconds_per_ray;
+    j["lookup_seconds_per_ray"] = secondsPerRay(bakes);
     if (!left_out.empty()) j["left_out"] = left_out;
     report_json = j.dump();
   }

@@ -70,24 +70,40 @@ ColourErrorStats summarize(Samples s) {
 
 double smallestComparedY(SunBand band) { return smallestComparedValue(band) * colour::ybarIntegral_nm(); }
 
-std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<Spectrum>& channels) {
+std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<std::vector<Spectrum>>& group_channels) {
+  std::vector<colour::Xyz> out;
+  if (group_channels.empty()) return out;
+  const size_t queries = group_channels.front().size();
+  out.reserve(queries);
   if (sky.atmosphere().storesCieXyz()) {
     // A colour bake's channels are X, Y, Z already (integrated while it baked).
-    std::vector<colour::Xyz> out;
-    out.reserve(channels.size());
-    for (const Spectrum& s : channels) out.push_back({s.x, s.y, s.z});
+    for (const Spectrum& s : group_channels.front()) out.push_back({s.x, s.y, s.z});
     return out;
   }
   const colour::SpectralToXyz to_xyz(sky.atmosphere().wavelengths_nm);
-  const size_t n = static_cast<size_t>(sky.channelCount());
-  std::vector<colour::Xyz> out;
-  out.reserve(channels.size());
-  for (const Spectrum& s : channels) out.push_back(to_xyz(std::span<const float>(&s[0], n)));
+  std::vector<float> channels(static_cast<size_t>(sky.channelCount()));
+  for (size_t i = 0; i < queries; ++i) {
+    size_t c = 0;
+    for (int g = 0; g < sky.laneGroupCount(); ++g) {
+      const Spectrum& lanes = group_channels.at(static_cast<size_t>(g)).at(i);
+      for (int l = 0; l < sky.laneGroup(g).channelCount(); ++l) channels.at(c++) = lanes[l];
+    }
+    out.push_back(to_xyz(std::span<const float>(channels)));
+  }
   return out;
 }
 
-MethodXyz bakeXyz(const Sky& sky, const MethodValues& values) {
-  return {bakeXyz(sky, values.radiance), bakeXyz(sky, values.irradiance)};
+std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<Spectrum>& channels) {
+  return bakeXyz(sky, std::vector<std::vector<Spectrum>>{channels});
+}
+
+MethodXyz bakeXyz(const Sky& sky, const std::vector<MethodValues>& group_values) {
+  std::vector<std::vector<Spectrum>> radiance, irradiance;
+  for (const MethodValues& v : group_values) {
+    radiance.push_back(v.radiance);
+    irradiance.push_back(v.irradiance);
+  }
+  return {bakeXyz(sky, radiance), bakeXyz(sky, irradiance)};
 }
 
 double colourDifference(const colour::Xyz& value, const colour::Xyz& reference) {
@@ -154,13 +170,19 @@ std::vector<Spectrum> referenceChannels(const std::vector<CachedReference>& refe
 
 }  // namespace
 
-ColourValidation validateColour(const Sky& sky, const QuerySet& queries, const ReferenceValues& spectral_reference,
-                                const ColourReferenceValues& colour_reference, const MethodValues& bake,
+ColourValidation validateColour(const Sky& sky, const QuerySet& queries,
+                                const std::vector<ReferenceValues>& spectral_references,
+                                const ColourReferenceValues& colour_reference, const std::vector<MethodValues>& bakes,
                                 int reference_paths) {
   const AtmosphereParameters& a = sky.atmosphere();
-  MethodXyz sampled{bakeXyz(sky, referenceChannels(spectral_reference.radiance)), {}};
-  if (!bake.irradiance.empty()) sampled.irradiance = bakeXyz(sky, referenceChannels(spectral_reference.irradiance));
-  return {compareColourWithReference(a, queries, colour_reference, bakeXyz(sky, bake), reference_paths),
+  std::vector<std::vector<Spectrum>> radiance, irradiance;
+  for (const ReferenceValues& r : spectral_references) {
+    radiance.push_back(referenceChannels(r.radiance));
+    irradiance.push_back(referenceChannels(r.irradiance));
+  }
+  MethodXyz sampled{bakeXyz(sky, radiance), {}};
+  if (!bakes.front().irradiance.empty()) sampled.irradiance = bakeXyz(sky, irradiance);
+  return {compareColourWithReference(a, queries, colour_reference, bakeXyz(sky, bakes), reference_paths),
           compareColourWithReference(a, queries, colour_reference, sampled, reference_paths)};
 }
 

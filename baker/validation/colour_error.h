@@ -38,13 +38,19 @@ double smallestComparedY(SunBand band);
 // through the colour-matching functions by the rule `skybake render` uses
 // (colour::SpectralToXyz: piecewise linear between the channels, end
 // values held). The one place a bake's channels become a colour.
+// `group_channels[g][i]` holds lane group g's lanes (Sky::laneGroup) at
+// query i: a spectral bake's colour comes from all its groups' channels
+// together, over all its wavelengths; any other bake has one group.
+std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<std::vector<Spectrum>>& group_channels);
+// The same for a bake of one lane group.
 std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<Spectrum>& channels);
 
 struct MethodXyz {
   std::vector<colour::Xyz> radiance;    // one per radiance query
   std::vector<colour::Xyz> irradiance;  // one per irradiance query; empty if the method has none
 };
-MethodXyz bakeXyz(const Sky& sky, const MethodValues& values);
+// Every lane group's values (evaluateLaneGroups) as XYZ.
+MethodXyz bakeXyz(const Sky& sky, const std::vector<MethodValues>& group_values);
 
 // CIEDE2000 between a colour and its reference after both are scaled by the
 // factor that puts the reference at kComparedLightness.
@@ -98,8 +104,11 @@ struct ColourValidation {
   nlohmann::ordered_json toJson() const;
 };
 
-ColourValidation validateColour(const Sky& sky, const QuerySet& queries, const ReferenceValues& spectral_reference,
-                                const ColourReferenceValues& colour_reference, const MethodValues& bake,
+// `spectral_references` and `bakes`: one per lane group of the bake
+// (lane_group_validation.h).
+ColourValidation validateColour(const Sky& sky, const QuerySet& queries,
+                                const std::vector<ReferenceValues>& spectral_references,
+                                const ColourReferenceValues& colour_reference, const std::vector<MethodValues>& bakes,
                                 int reference_paths);
 
 }  // namespace skybake

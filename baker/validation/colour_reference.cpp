@@ -90,7 +90,16 @@ ColourReferenceAtmospheres colourReferenceAtmospheresFromFile(const std::filesys
       [&](const std::vector<double>& wavelengths) { return configFileAtWavelengths(config_path, wavelengths); });
 }
 
-void requireConfigOfBake(const std::filesystem::path& config_path, const AtmosphereParameters& bake) {
+void requireConfigOfBake(const std::filesystem::path& config_path, const AtmosphereParameters& bake,
+                         const std::vector<AtmosphereParameters>& lane_groups) {
+  if (bake.storesLaneGroups()) {
+    // Read at more than 4 wavelengths a config gives no one atmosphere: each
+    // group's wavelengths give that group's.
+    if (lane_groups.empty())
+      throw Error(ErrorKind::Internal, "requireConfigOfBake: a spectral bake without its groups");
+    for (const AtmosphereParameters& group : lane_groups) requireConfigOfBake(config_path, group);
+    return;
+  }
   if (bake.storesCieXyz()) {
     // A colour bake states its X, Y, Z atmosphere, made from its passes'
     // atmospheres by the weights the bake used (colour_bake_weights.h).

@@ -59,7 +59,10 @@ ColourReferenceAtmospheres colourReferenceAtmospheresFromFile(const std::filesys
 // from: read at the bake's own wavelengths, its atmosphere must be the
 // bake's, value for value (the lowest tabulated sun aside, which the bake
 // may have settled).
-void requireConfigOfBake(const std::filesystem::path& config_path, const AtmosphereParameters& bake);
+// A spectral bake (more than 4 wavelengths) is checked lane group by lane
+// group: `lane_groups` are its groups' atmospheres (BakeContents::lane_groups).
+void requireConfigOfBake(const std::filesystem::path& config_path, const AtmosphereParameters& bake,
+                         const std::vector<AtmosphereParameters>& lane_groups = {});
 
 // The paths each group traces in each half for a reference of `paths`
 // paths: a share, at least one per replicate.

@@ -140,7 +140,8 @@ double computeInCheckpointedBatches(const std::vector<size_t>& items, const std:
 }
 
 ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const QuerySet& queries,
-                                       const ReferenceSettings& settings, ProgressSink& progress) {
+                                       const ReferenceSettings& settings, ProgressSink& progress,
+                                       const std::string& stage) {
   ReferenceCache cache(settings.cache_directory, a, settings.paths);
   const ReferenceSolver solver(a);
   ReferenceValues out;
@@ -177,7 +178,7 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
       cache.store(irradianceKey(queries.irradiance[i]), out.irradiance[i]);
     }
   };
-  out.seconds = computeInCheckpointedBatches(missing, "reference", progress, cache, compute, storeInCache);
+  out.seconds = computeInCheckpointedBatches(missing, stage, progress, cache, compute, storeInCache);
   out.computed = static_cast<int>(missing.size());
   return out;
 }
@@ -426,19 +427,50 @@ nlohmann::ordered_json ErrorReport::toJson() const {
   return j;
 }
 
+namespace {
+
+// A channel's name in the table: a wavelength channel's wavelength to 5
+// digits ("406.67nm" where the file's channel name, which OpenEXR allows no
+// '.' in, is "406p6666666666667nm"); X, Y, Z as they are.
+std::vector<std::string> tableLabels(const ErrorReport& r) {
+  std::vector<std::string> labels = r.channel_names;
+  if (r.wavelengths_nm.size() != labels.size()) return labels;
+  for (size_t c = 0; c < labels.size(); ++c) {
+    if (labels[c].ends_with("nm")) labels[c] = fmt::format("{:.5g}nm", r.wavelengths_nm[c]);
+  }
+  return labels;
+}
+
+}  // namespace
+
 std::string ErrorReport::table() const {
-  std::string out = fmt::format("{:<18} {:<12} {:>5} {:>5}", "quantity", "band", "n", "skip");
-  for (const std::string& name : channel_names) out += fmt::format("  {:>22}", name + " rms/p95/max %");
-  out += "  ref stderr %\n";
-  for (const ErrorRow& row : rows) {
-    const ErrorStats& first = row.channels.front();
-    out += fmt::format("{:<18} {:<12} {:>5} {:>5}", row.quantity, row.band, first.count, first.skipped);
-    double ref = 0.0;
-    for (const ErrorStats& s : row.channels) {
-      out += fmt::format("  {:>22}", fmt::format("{:.2f} / {:.2f} / {:.2f}", 100 * s.rms, 100 * s.p95, 100 * s.max));
-      ref = std::max(ref, s.reference_standard_error);
+  // A spectral bake's channels (up to 64) are shown a lane group of 4 at a
+  // time, one table per group, each as wide as an ordinary bake's.
+  const std::vector<std::string> labels = tableLabels(*this);
+  const size_t channels = labels.size();
+  const size_t group = static_cast<size_t>(kMaxChannels);
+  const size_t groups = (channels + group - 1) / group;
+  std::string out;
+  for (size_t first = 0; first < channels; first += group) {
+    const size_t last = std::min(first + group, channels);
+    if (groups > 1) {
+      out += fmt::format("{}lane group {} of {} ({} to {}):\n", first == 0 ? "" : "\n", first / group + 1, groups,
+                         labels[first], labels[last - 1]);
     }
-    out += fmt::format("  {:>11.2f}\n", 100 * ref);
+    out += fmt::format("{:<18} {:<12} {:>5} {:>5}", "quantity", "band", "n", "skip");
+    for (size_t c = first; c < last; ++c) out += fmt::format("  {:>22}", labels[c] + " rms/p95/max %");
+    out += "  ref stderr %\n";
+    for (const ErrorRow& row : rows) {
+      const ErrorStats& lead = row.channels[first];
+      out += fmt::format("{:<18} {:<12} {:>5} {:>5}", row.quantity, row.band, lead.count, lead.skipped);
+      double ref = 0.0;
+      for (size_t c = first; c < last; ++c) {
+        const ErrorStats& s = row.channels[c];
+        out += fmt::format("  {:>22}", fmt::format("{:.2f} / {:.2f} / {:.2f}", 100 * s.rms, 100 * s.p95, 100 * s.max));
+        ref = std::max(ref, s.reference_standard_error);
+      }
+      out += fmt::format("  {:>11.2f}\n", 100 * ref);
+    }
   }
   return out;
 }

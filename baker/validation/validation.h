@@ -78,9 +78,13 @@ double computeInCheckpointedBatches(const std::vector<size_t>& items, const std:
                                     const std::function<void(size_t)>& store);
 
 // The reference for every query of the set, from the cache where it holds
-// them; the rest computed and added to the cache as it goes.
+// them; the rest computed and added to the cache as it goes, under the
+// progress stage `stage`. `atmosphere` holds at most 4 wavelengths (a
+// spectral bake's lane groups are computed one at a time:
+// lane_group_validation.h).
 ReferenceValues computeReferenceValues(const AtmosphereParameters& atmosphere, const QuerySet& queries,
-                                       const ReferenceSettings& settings, ProgressSink& progress);
+                                       const ReferenceSettings& settings, ProgressSink& progress,
+                                       const std::string& stage = "reference");
 
 // Piece `piece` (1 to `pieces`) of a query set: every pieces-th query,
 // radiance then irradiance, so pieces mix cheap and expensive queries alike.

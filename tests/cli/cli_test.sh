@@ -194,7 +194,7 @@ expect_status 2 "is not the bake's" -- validate "$work/spectral.exr" --queries q
 # A colour bake against the colour reference: its X, Y, Z channel by
 # channel and its colour table; refused with a config that is not its own or
 # not a colour bake's. compare --colour puts it beside its atmosphere on 3 and
-# 4 wavelengths.
+# 4 wavelengths and its spectral bake of its 5 wavelengths.
 colour_config="$source_dir/tests/cli/small_earth_colour.toml"
 expect_status 0 "baked 'small_earth_colour'" -- bake "$colour_config" -o "$work/small_colour.exr"
 expect_status 0 "Y rms/p95/max %" -- validate "$work/small_colour.exr" --queries quick --reference-samples 64 --cache-dir "$colour_cache" --colour-config "$colour_config" --json "$work/cc.json" --details "$work/cc.csv"
@@ -215,11 +215,19 @@ expect_status 2 "not a colour bake's config" -- validate "$work/small_colour.exr
 sed -e "s|\.\./\.\./data_formats|$source_dir/data_formats|" -e 's/phase_g = 0.8/phase_g = 0.7/' "$colour_config" >"$work/other_colour.toml"
 expect_status 2 "is not the colour bake's" -- validate "$work/small_colour.exr" --queries quick --reference-samples 64 --no-cache --colour-config "$work/other_colour.toml"
 expect_status 0 "colour: 5 wavelengths to CIE XYZ" -- compare "$colour_config" --colour --queries quick --reference-samples 64 --cache-dir "$colour_cache" --json "$work/compare_colour.json"
-/usr/bin/python3 - "$work/compare_colour.json" <<'PY' || fail "compare --colour did not compare three bakes"
+/usr/bin/python3 - "$work/compare_colour.json" <<'PY' || fail "compare --colour did not compare four bakes"
 import json, sys
 methods = json.load(open(sys.argv[1]))["methods"]
-assert [m["method"].split(" ")[0] for m in methods] == ["3", "4", "colour:"], [m["method"] for m in methods]
-assert all(m["precompute_seconds"] > 0 and m["memory_bytes"] > 0 for m in methods), methods
+assert [m["method"].split(" ")[0] for m in methods] == ["3", "4", "colour:", "spectral:"], [m["method"] for m in methods]
+assert all(m["precompute_seconds"] > 0 and m["memory_bytes"] > 0 and m["seconds_per_ray"] > 0 for m in methods), methods
+# The same table sizes: the bytes per channel are the same for every bake
+# (3, 4, 3 and 5 channels), so the spectral bake's count both lane groups'.
+per_channel = [m["memory_bytes"] / c for m, c in zip(methods, (3, 4, 3, 5))]
+assert len(set(per_channel)) == 1, per_channel
+spectral_day = {(r["quantity"], r["band"]): r for r in methods[3]["errors"]}[("sky_radiance", "day")]
+assert spectral_day["count"] > 0 and spectral_day["ciede2000_median"] >= 0, spectral_day
+PY
+grep -qF "spectral: 5 wavelengths, 2 lane groups" "$work/stdout" || fail "compare --colour printed no spectral bake: $(cat "$work/stdout")"
 PY
 expect_status 2 "--resolutions does not apply" -- compare "$colour_config" --colour --resolutions 1
 expect_status 2 "needs a colour bake's config" -- compare "$spectral" --colour

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A spectral bake (channels.store = "spectral") through the command line:
 # baked byte-identically on 1 and 2 threads, info and lookup printing all 6
-# channels, render writing them, and the verbs that compare with the
-# reference solver refusing it with exit status 2.
+# channels, render writing them, validate and reference working lane group
+# by lane group, and compare's comparators refusing it with exit status 2.
 # Usage: spectral_cli_test.sh SKYBAKE_BINARY SOURCE_DIR
 set -u
 skybake=$1
@@ -42,9 +42,36 @@ expect_status 0 "" -- render "$work/two.exr" --altitude-m 0 --sun-zenith-deg 60 
 expect_status 0 "" -- render "$work/two.exr" --altitude-m 0 --sun-zenith-deg 60 --projection latlong --size 32x16 \
   -o "$work/rgb.png"
 
-expect_status 2 "a spectral bake of 6 wavelengths" -- validate "$work/two.exr" --queries quick --no-cache
-expect_status 2 "a spectral bake of 6 wavelengths" -- reference "$work/two.exr" --queries quick --cache-dir "$work/cache"
-expect_status 2 "a spectral bake of 6 wavelengths" -- compare "$many" --queries quick --no-cache
+# validate: each lane group against its own reference, the figures of all 6
+# wavelengths in the table (a group at a time), the JSON and the details;
+# with --colour-config, the colour of all 6 channels together.
+expect_status 0 "2 lane groups of up to 4 wavelengths, each against its own reference" -- validate "$work/two.exr" \
+  --queries quick --reference-samples 64 --cache-dir "$work/cache" --json "$work/v.json" --details "$work/d.csv" \
+  --colour-config "$many"
+for heading in "lane group 1 of 2 (400nm to 580nm):" "lane group 2 of 2 (640nm to 700nm):" "700nm rms/p95/max %" \
+  "CIEDE2000 median/p95/max"; do
+  grep -qF "$heading" "$work/stdout" || fail "validate's table lacks '$heading': $(cat "$work/stdout")"
+done
+/usr/bin/python3 - "$work/v.json" "$work/d.csv" <<'PY' || fail "validate wrote no per-wavelength figures of the spectral bake"
+import csv, json, math, sys
+j = json.load(open(sys.argv[1]))
+assert j["wavelengths_nm"] == [400, 460, 520, 580, 640, 700], j["wavelengths_nm"]
+assert [g["wavelengths_nm"] for g in j["lane_groups"]] == [[400, 460, 520, 580], [640, 700]], j["lane_groups"]
+assert all(g["reference_computed"] == 54 for g in j["lane_groups"]), j["lane_groups"]
+rows = {(r["quantity"], r["band"]): r for r in j["errors"]}
+for key in (("sky_radiance", "day"), ("transmittance", "all"), ("sky_irradiance", "day")):
+    channels = rows[key]["channels"]
+    assert len(channels) == 6 and all(c["count"] > 0 and math.isfinite(c["rms"]) for c in channels), (key, channels)
+assert j["colour"]["errors"][0]["count"] > 0, j["colour"]
+header = next(csv.reader(open(sys.argv[2])))
+assert all(f"bake_{nm}" in header for nm in (400, 580, 640, 700)) and "ciede2000" in header, header
+PY
+# reference: every lane group into the cache, where validate then finds them.
+expect_status 0 '"to_compute": 108' -- reference "$many" --queries quick --reference-samples 64 --cache-dir "$work/rcache" --estimate
+expect_status 0 "lane group 2 of 2 (640 700 nm)" -- reference "$many" --queries quick --reference-samples 64 --cache-dir "$work/rcache"
+expect_status 0 "(108 from the cache, 0 computed" -- validate "$work/two.exr" --queries quick --reference-samples 64 --cache-dir "$work/rcache"
+# compare's comparators take one atmosphere of at most 4 wavelengths.
+expect_status 2 "skybake compare's comparators take at most 4 wavelengths" -- compare "$many" --queries quick --no-cache
 
 # Config refusals: combined single Mie, and too many wavelengths for the
 # default store, whose message names both stores that take them.

@@ -1,7 +1,8 @@
 // A config read at other wavelengths (configAtWavelengths): at its own
 // wavelengths it is the config itself, bit for bit; elsewhere each spectrum
 // is read at the new wavelengths; a list of differing values is refused,
-// naming its key; a flat list stands for its one value everywhere.
+// naming its key; a flat list stands for its one value everywhere. A config
+// stored another way (configFileWithStore) keeps its atmosphere.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -116,6 +117,29 @@ TEST(ConfigAtWavelengths, SpectraThatDoNotCoverAWavelengthAreRefused) {
     ADD_FAILURE() << "a wavelength outside the inline spectra was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("not extrapolated"), std::string::npos) << e.what();
+  }
+}
+
+// configFileWithStore: the colour preset stored as a spectral bake is the
+// same atmosphere on the same wavelengths, grouped into the same passes;
+// only what the file keeps differs.
+TEST(ConfigFileWithStore, AColourConfigAsASpectralBakeHasTheSameGroups) {
+  const fs::path colour_path = kPresets / "earth_colour.toml";
+  const BakeConfig colour = loadConfigFile(colour_path);
+  ASSERT_TRUE(colour.atmosphere.storesCieXyz());
+  const BakeConfig spectral = configFileWithStore(colour_path, "spectral");
+  EXPECT_TRUE(spectral.atmosphere.storesLaneGroups());
+  EXPECT_EQ(spectral.atmosphere.wavelengths_nm, colour.atmosphere.wavelengths_nm);
+  EXPECT_EQ(spectral.colour_groups, colour.colour_groups);
+  EXPECT_EQ(spectral.sizes, colour.sizes);
+  // The spectral preset of the same atmosphere is what it gives.
+  EXPECT_EQ(spectral.colour_groups, loadConfigFile(kPresets / "earth_spectral_16.toml").colour_groups);
+  try {
+    configFileWithStore(colour_path, "rgb");
+    ADD_FAILURE() << "store \"rgb\" accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("channels.store = \"rgb\""), std::string::npos) << e.what();
   }
 }
 

@@ -228,6 +228,26 @@ def test_validate_gives_the_command_lines_colour_figures(tmp_path):
         skybake.validate(bake, colour_config=SMALL_EARTH, **settings)
 
 
+def test_validate_gives_a_spectral_bakes_figures_per_wavelength(tmp_path):
+    config = os.path.join(SOURCE, "tests", "cli", "small_earth_many.toml")
+    bake = tmp_path / "many.exr"
+    subprocess.run([BINARY, "bake", config, "-o", str(bake)], check=True, capture_output=True)
+    settings = dict(queries="quick", reference_samples=64, no_cache=True)
+    report = skybake.validate(bake, colour_config=config, **settings)
+    json_path = tmp_path / "validate.json"
+    subprocess.run([BINARY, "validate", str(bake), "--queries", "quick", "--reference-samples", "64", "--no-cache",
+                    "--colour-config", config, "--json", str(json_path)], check=True, capture_output=True)
+    expected = json.loads(json_path.read_text())
+    # Each lane group's reference is seeded per query as the command line's:
+    # the same figures, every wavelength's, to the last digit.
+    assert report["errors"] == expected["errors"]
+    assert report["colour"]["errors"] == expected["colour"]["errors"]
+    assert report["wavelengths_nm"] == [400.0, 460.0, 520.0, 580.0, 640.0, 700.0]
+    assert [g["wavelengths_nm"] for g in report["lane_groups"]] == [[400.0, 460.0, 520.0, 580.0], [640.0, 700.0]]
+    day = next(r for r in report["errors"] if (r["quantity"], r["band"]) == ("sky_radiance", "day"))
+    assert len(day["channels"]) == 6 and all(c["count"] > 0 for c in day["channels"])
+
+
 def test_a_bake_beyond_the_memory_it_may_allocate_is_refused_before_allocating(tmp_path):
     # As the command line does (docs/STABILITY.md): under a 4 GB address-space
     # limit, tables of 34 GB are refused with the estimate, not attempted.
