@@ -261,6 +261,12 @@ for method in "ray-marched single scattering" "closed-form flat single scatterin
 done
 grep -q '"seconds_per_ray"' "$work/c.json" || fail "compare --json lacks timings"
 expect_status 2 "--resolutions" -- compare "$small" --resolutions 0
+# A CSV with rays the comparators cannot answer (a moon, a point) compares
+# the rest and says what it left out.
+printf '%s\n' altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,moon_angular_radius_deg \
+  0,50,0,0,0,0,0 0,50,60,90,0,0,0 0,50,0,0,0,0,0.28 0,50,85,0,5000,0,0 >"$work/mixed.csv"
+expect_status 0 "left out (skybake validate compares them): 1 eclipse queries (a moon; the comparators have no moon), 1 rays to points" -- compare "$small" --queries "$work/mixed.csv" --reference-samples 4 --resolutions 1 --no-cache --json "$work/mixed.json"
+grep -q "compare on 'mixed.csv' (2 sky and ground rays" "$work/stdout" || fail "compare did not compare the two plain rays: $(cat "$work/stdout")"
 
 # stress: one quick case with JSON output; an unknown case is bad input.
 expect_status 0 "PASS" -- stress --quick --case mars --json "$work/stress.json"
