@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Error of a bake against the reference per eclipse case, from the CSV that
 `skybake validate --queries eclipse --details FILE` writes: for each moon
-(separation, angular radius) and camera altitude, the RMS relative error of
-the radiance over the views (values below 1e-5 W m^-2 sr^-1 nm^-1 skipped,
-as validate does), and the zenith view's bake / reference ratio.
+(separation, angular radius), camera altitude and kind of ray (views of the
+sky and the ground, or rays to points), the RMS relative error of the
+radiance over the rays (values below 1e-5 W m^-2 sr^-1 nm^-1 skipped, as
+validate does), and the zenith view's bake / reference ratio (views only).
 
 Usage: /usr/bin/python3 scripts/eclipse_errors.py DETAILS.csv
 """
@@ -21,8 +22,10 @@ def main(path):
     channels = [k[len("bake_"):] for k in rows[0] if k.startswith("bake_")]
     groups = defaultdict(list)
     for r in rows:
-        groups[(float(r["moon_separation_deg"]), float(r["moon_angular_radius_deg"]), float(r["altitude_m"]))].append(r)
-    print("moon_sep_deg moon_radius_deg altitude_m " +
+        rays = "points" if float(r["distance_m"]) > 0.0 else "views"
+        groups[(float(r["moon_separation_deg"]), float(r["moon_angular_radius_deg"]), float(r["altitude_m"]),
+                rays)].append(r)
+    print("moon_sep_deg moon_radius_deg altitude_m rays " +
           " ".join(f"rms_{c}_%" for c in channels) + " " + " ".join(f"zenith_ratio_{c}" for c in channels))
     for key in sorted(groups):
         rms = []
@@ -36,7 +39,7 @@ def main(path):
                 if float(r["view_zenith_deg"]) == 0.0:
                     zen.append(f"{bake / ref:.3f}" if ref > 0 else "nan")
             rms.append(f"{100 * math.sqrt(sum(e * e for e in errs) / len(errs)):.2f}" if errs else "-")
-        print(f"{key[0]} {key[1]} {key[2]:.0f} " + " ".join(rms) + " " + " ".join(zen))
+        print(f"{key[0]} {key[1]} {key[2]:.0f} {key[3]} " + " ".join(rms) + " " + " ".join(zen))
 
 
 if __name__ == "__main__":

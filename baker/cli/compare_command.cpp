@@ -10,6 +10,8 @@
 #include <array>
 #include <chrono>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -119,6 +121,36 @@ MethodValues evaluate(const SkyMethod& method, const AtmosphereParameters& a, co
   return out;
 }
 
+// The queries the comparators answer: rays to the sky or the ground without
+// a moon. Rays to a point, eclipses (the comparators have no moon) and
+// irradiance are validate's: left out, with their counts in `left_out`
+// (empty when none is). A set with nothing left is refused.
+QuerySet comparableQueries(const QuerySet& all, const std::string& what, std::string& left_out) {
+  QuerySet queries{all.name, {}, {}};
+  size_t eclipses = 0, to_points = 0;
+  for (const RadianceQuery& q : all.radiance) {
+    if (q.moon.present()) {
+      ++eclipses;
+    } else if (q.distance_m > 0.0) {
+      ++to_points;
+    } else {
+      queries.radiance.push_back(q);
+    }
+  }
+  std::vector<std::string> parts;
+  if (eclipses > 0) parts.push_back(fmt::format("{} eclipse queries (a moon; the comparators have no moon)", eclipses));
+  if (to_points > 0) parts.push_back(fmt::format("{} rays to points", to_points));
+  if (!all.irradiance.empty()) parts.push_back(fmt::format("{} irradiance queries", all.irradiance.size()));
+  left_out.clear();
+  for (const std::string& part : parts) left_out += (left_out.empty() ? "" : ", ") + part;
+  if (queries.radiance.empty()) {
+    throwBadInput(fmt::format("{}: {} holds no sky or ground ray without a moon to compare ({}): use skybake validate",
+                              what, all.name, left_out.empty() ? "no radiance queries" : left_out));
+  }
+  if (!left_out.empty()) left_out = "left out (skybake validate compares them): " + left_out;
+  return queries;
+}
+
 // Worst channel's figure in a row, or -1 where the row is absent.
 double worst(const ErrorReport& r, const char* quantity, const char* band, double ErrorStats::*field) {
   const ErrorRow* row = r.find(quantity, band);
@@ -217,14 +249,8 @@ void runColourCompare(const CompareOptions& o) {
 
   const AtmosphereParameters& geometry = variants.front().config.atmosphere;
   const QuerySet all = querySetNamed(o.queries, geometry.top_radius_m - geometry.bottom_radius_m);
-  QuerySet queries{all.name, {}, {}};
-  for (const RadianceQuery& q : all.radiance) {
-    if (q.moon.present()) {
-      throwBadInput(
-          fmt::format("compare --colour: {} holds eclipse queries (a moon): use skybake validate", o.queries));
-    }
-    if (!(q.distance_m > 0.0)) queries.radiance.push_back(q);
-  }
+  std::string left_out;
+  const QuerySet queries = comparableQueries(all, "compare --colour", left_out);
   TerminalProgress progress;
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
   const ColourReferenceValues reference = computeColourReference(colour_atmospheres, queries, settings, progress);
@@ -233,6 +259,7 @@ void runColourCompare(const CompareOptions& o) {
       "compare in colour on '{}' ({} sky and ground rays; colour reference from {} wavelengths, {} paths per "
       "query); sky radiance: luminance RMS / CIEDE2000 median / p95; {} cores\n\n",
       queries.name, queries.radiance.size(), kColourReferenceWavelengthCount, settings.paths, omp_get_num_procs());
+  if (!left_out.empty()) fmt::print("{}\n\n", left_out);
   fmt::print("{:<40} {:>10} {:>9} {:>9}  {:>24} {:>24} {:>24}\n", "bake", "bake s", "us/ray", "MiB", "sky day",
              "sky low sun", "sky twilight");
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
@@ -274,17 +301,8 @@ void runCompare(const CompareOptions& o) {
   const std::vector<BakeConfig> scaled_configs =
       scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);
   const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
-  // Comparators answer rays to the sky or the ground; rays to a point,
-  // irradiance and eclipses are validate's.
-  QuerySet queries{all.name, {}, {}};
-  for (const RadianceQuery& q : all.radiance) {
-    if (q.moon.present())
-      throwBadInput(
-          fmt::format("compare: {} holds eclipse queries (a moon); the comparators "
-                      "have no moon: use skybake validate",
-                      o.queries));
-    if (!(q.distance_m > 0.0)) queries.radiance.push_back(q);
-  }
+  std::string left_out;
+  const QuerySet queries = comparableQueries(all, "compare", left_out);
 
   TerminalProgress progress;
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
@@ -309,6 +327,7 @@ void runCompare(const CompareOptions& o) {
       "compare on '{}' ({} sky and ground rays; reference {} paths per query); errors: RMS / p95 / max %, "
       "worst channel; {} cores\n\n",
       queries.name, queries.radiance.size(), settings.paths, omp_get_num_procs());
+  if (!left_out.empty()) fmt::print("{}\n\n", left_out);
   fmt::print("{:<62} {:>10} {:>9} {:>9}  {:>16} {:>16} {:>16}  {:>16}\n", "method", "precomp s", "us/ray", "MiB",
              "sky day", "sky low sun", "sky twilight", "ground day");
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();

@@ -201,8 +201,10 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
   const auto start = std::chrono::steady_clock::now();
   for (const RadianceQuery& q : queries.radiance) {
     const QueryGeometry g = geometryOf(a, q);
+    const glm::dvec3 point = g.camera + g.view * q.distance_m;
     const RadianceAndTransmittance v = q.distance_m > 0.0
-                                           ? sky.radianceToPoint(g.camera, g.camera + g.view * q.distance_m, g.sun)
+                                           ? (q.moon.present() ? sky.radianceToPoint(g.camera, point, g.sun, g.moon)
+                                                               : sky.radianceToPoint(g.camera, point, g.sun))
                                        : q.moon.present() ? sky.receivedRadiance(g.camera, g.view, g.sun, g.moon)
                                                           : sky.receivedRadiance(g.camera, g.view, g.sun);
     out.radiance.push_back(v.radiance);

@@ -222,3 +222,57 @@ SkybakeRadianceAndTransmittance skybakeReceivedRadiance(vec3 camera_m, vec3 view
   return skybakeReceivedRadiance(camera_m, view_dir, sun_dir, moon,
                                  skybakeEclipseSkylight(start.origin, sun_dir, moon));
 }
+
+// Radiance to the point camera_m + view_dir * distance_m under an eclipse,
+// the skylight share at the segment's start given (Sky::radianceToPoint(...,
+// moon, camera_skylight)): the segment's single scattering integrated with
+// the moon's shadow, and the plain radiance to the point less the same
+// integral without the moon (what the tables scattered more than once)
+// scaled by the share. The same float caveat as skybakeRadianceAlongRayTo's.
+SkybakeRadianceAndTransmittance skybakeRadianceAlongRayTo(vec3 camera_m, vec3 view_dir, float distance_m, vec3 sun_dir,
+                                                          SkybakeMoon moon, vec4 camera_skylight) {
+  SkybakeRadianceAndTransmittance v = skybakeRadianceAlongRayTo(camera_m, view_dir, distance_m, sun_dir, 0.0);
+  // A bake without radiance to points gives none, eclipse or not.
+  if (!(distance_m > 0.0) || skybake_outputs.x == 0) return v;
+  SkybakeRay s = skybakeEnterAtmosphere(camera_m, view_dir);
+  float d = min(distance_m - s.moved_m, s.length_m);
+  if (!s.inside || d <= 0.0 || !skybakeMoonHidesSunNear(s.origin, sun_dir, moon)) return v;
+  float mu_s = skybakeClampCosine(dot(s.origin, sun_dir) / s.r);
+  float nu = skybakeClampCosine(dot(view_dir, sun_dir));
+  SkybakeMoonAlongRay along = SkybakeMoonAlongRay(moon, s.origin, view_dir, sun_dir);
+  SkybakeSingleScatteringPastMoon integral = skybakeIntegrateSingleScattering(
+      s.r, s.mu, mu_s, nu, s.ends_on_ground, 0.0, d, SKYBAKE_ECLIPSE_SINGLE_SCATTERING_SEGMENTS, along);
+  vec4 multiple = max(v.radiance - skybakeSingleScatteringRadiance(integral.plain, nu), vec4(0.0));
+  v.radiance = multiple * camera_skylight + skybakeSingleScatteringRadiance(integral.past_moon, nu);
+  return v;
+}
+
+// The same with the skylight share computed at the segment's start
+// (Sky::radianceToPoint(..., moon)): 4096 kernel points, so where many
+// points are seen from one camera, compute the share once.
+SkybakeRadianceAndTransmittance skybakeRadianceAlongRayTo(vec3 camera_m, vec3 view_dir, float distance_m, vec3 sun_dir,
+                                                          SkybakeMoon moon) {
+  SkybakeRay start = skybakeEnterAtmosphere(camera_m, view_dir);
+  if (!(distance_m > 0.0) || !start.inside)
+    return skybakeRadianceAlongRayTo(camera_m, view_dir, distance_m, sun_dir, 0.0);
+  return skybakeRadianceAlongRayTo(camera_m, view_dir, distance_m, sun_dir, moon,
+                                   skybakeEclipseSkylight(start.origin, sun_dir, moon));
+}
+
+// Radiance scattered toward `camera_m` between it and `point_m` under an
+// eclipse, and the transmittance between them (Sky::radianceToPoint(...,
+// moon[, camera_skylight])).
+SkybakeRadianceAndTransmittance skybakeRadianceToPoint(vec3 camera_m, vec3 point_m, vec3 sun_dir, SkybakeMoon moon,
+                                                       vec4 camera_skylight) {
+  vec3 offset = point_m - camera_m;
+  float distance_m = length(offset);
+  if (!(distance_m > 0.0)) return SkybakeRadianceAndTransmittance(vec4(0.0), vec4(1.0));
+  return skybakeRadianceAlongRayTo(camera_m, offset / distance_m, distance_m, sun_dir, moon, camera_skylight);
+}
+
+SkybakeRadianceAndTransmittance skybakeRadianceToPoint(vec3 camera_m, vec3 point_m, vec3 sun_dir, SkybakeMoon moon) {
+  vec3 offset = point_m - camera_m;
+  float distance_m = length(offset);
+  if (!(distance_m > 0.0)) return SkybakeRadianceAndTransmittance(vec4(0.0), vec4(1.0));
+  return skybakeRadianceAlongRayTo(camera_m, offset / distance_m, distance_m, sun_dir, moon);
+}

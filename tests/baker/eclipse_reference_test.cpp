@@ -1,12 +1,19 @@
 // The reference under a solar eclipse: the moon hides the sun in every sun
 // connection, so the umbra is dark but for the light of the sunlit air
-// around it; eclipse queries have cache keys of their own.
+// around it; eclipse queries have cache keys of their own; the eclipse
+// query set's rays to points.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <utility>
 
 #include "baker/reference/reference_solver.h"
 #include "baker/validation/validation.h"
+#include "baker/validation/validation_queries.h"
 #include "data_formats/config.h"
 
 namespace skybake {
@@ -60,6 +67,48 @@ TEST(EclipseReference, TheEclipseQuerySetHasEveryCase) {
   }
   EXPECT_TRUE(total && annular && partial);
   EXPECT_FALSE(plain);
+}
+
+// Rays to points under the eclipse: totality with the camera inside the
+// umbra (at its centre and off its axis) and outside it (0.03 deg), a
+// partial and an annular eclipse, from both cameras, at distances from 5 to
+// 120 km; and a query CSV may give a row both a distance and a moon.
+TEST(EclipseReference, TheEclipseQuerySetHasRaysToPoints) {
+  const QuerySet set = querySetNamed("eclipse", 100e3);
+  std::set<std::pair<double, double>> moons;
+  std::set<double> altitudes;
+  double nearest_m = 1e30, farthest_m = 0.0;
+  size_t to_points = 0;
+  for (const RadianceQuery& q : set.radiance) {
+    if (q.distance_m <= 0.0) continue;
+    ++to_points;
+    EXPECT_TRUE(q.moon.present());
+    moons.insert({q.moon.separation_deg, q.moon.angular_radius_deg});
+    altitudes.insert(q.altitude_m);
+    nearest_m = std::min(nearest_m, q.distance_m);
+    farthest_m = std::max(farthest_m, q.distance_m);
+  }
+  for (const std::pair<double, double> moon : {std::pair{0.0, 0.28}, std::pair{0.006, 0.28}, std::pair{0.03, 0.28},
+                                               std::pair{0.25, 0.28}, std::pair{0.0, 0.25}}) {
+    EXPECT_EQ(moons.count(moon), 1u) << moon.first << " " << moon.second;
+  }
+  EXPECT_EQ(altitudes, (std::set<double>{0.0, 10000.0}));
+  EXPECT_LE(nearest_m, 5000.0);
+  EXPECT_GE(farthest_m, 120000.0);
+  // validate's cost is its reference's, about the same per query: at most
+  // half as many rays to points as sky rays keeps it within 1.5 times.
+  EXPECT_LE(2 * to_points, set.radiance.size() - to_points);
+
+  const std::filesystem::path csv = std::filesystem::path(::testing::TempDir()) / "eclipse_points.csv";
+  {
+    std::ofstream out(csv);
+    out << "altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,"
+           "moon_angular_radius_deg\n0,50,85,0,20000,0,0.28\n";
+  }
+  const QuerySet from_csv = querySetFromCsv(csv);
+  ASSERT_EQ(from_csv.radiance.size(), 1u);
+  EXPECT_EQ(from_csv.radiance[0].distance_m, 20000.0);
+  EXPECT_EQ(from_csv.radiance[0].moon.angular_radius_deg, 0.28);
 }
 
 }  // namespace

@@ -162,6 +162,27 @@ expect_status 2 "--reference-samples" -- validate "$work/good.exr" --reference-s
 # the details name each query's moon.
 expect_status 0 "query set 'eclipse'" -- validate "$work/good.exr" --queries eclipse --reference-samples 0 --no-cache --details "$work/eclipse.csv"
 grep -q "^radiance,0,50,0,0,0,0,0.28," "$work/eclipse.csv" || fail "validate --details lacks the total eclipse's zenith row"
+grep -q "^radiance,0,50,85,0,5000,0,0.28," "$work/eclipse.csv" || fail "validate --details lacks the total eclipse's ray to a point 5 km away"
+grep -q "radiance_to_point" "$work/stdout" || fail "validate --queries eclipse reports no radiance_to_point"
+# A row may give both a distance and a moon: in totality at the umbra's
+# centre the 5 km toward the sun lie in the umbra, so the bake's radiance to
+# the point is the plain one's multiple scattering times F (about 3e-3),
+# and the reference's single scattering (0 paths) nothing; the same row
+# without the moon is the plain day.
+printf '%s\n' altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,moon_angular_radius_deg \
+  0,50,85,0,5000,0,0.28 0,50,85,0,5000,0,0 >"$work/eclipse_point.csv"
+expect_status 0 "radiance_to_point" -- validate "$work/good.exr" --queries "$work/eclipse_point.csv" --reference-samples 0 --no-cache --details "$work/eclipse_point_details.csv"
+/usr/bin/python3 - "$work/eclipse_point_details.csv" <<'PY' || fail "validate gave a ray to a point in totality no eclipse"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 2, rows
+total, plain = rows
+for key in total:
+    if key.startswith("bake_"):
+        assert 0 < float(total[key]) < 0.01 * float(plain[key]), (key, total[key], plain[key])
+    if key.startswith("reference_") and not key.startswith("reference_error"):
+        assert float(total[key]) < 1e-6 * float(plain[key]), (key, total[key], plain[key])
+PY
 
 # validate --colour-config: the colour table, its JSON and CSV columns, and a
 # second run served from the colour cache; refused for a config whose
@@ -253,6 +274,12 @@ for method in "ray-marched single scattering" "closed-form flat single scatterin
 done
 grep -q '"seconds_per_ray"' "$work/c.json" || fail "compare --json lacks timings"
 expect_status 2 "--resolutions" -- compare "$small" --resolutions 0
+# A CSV with rays the comparators cannot answer (a moon, a point) compares
+# the rest and says what it left out.
+printf '%s\n' altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,moon_angular_radius_deg \
+  0,50,0,0,0,0,0 0,50,60,90,0,0,0 0,50,0,0,0,0,0.28 0,50,85,0,5000,0,0 >"$work/mixed.csv"
+expect_status 0 "left out (skybake validate compares them): 1 eclipse queries (a moon; the comparators have no moon), 1 rays to points" -- compare "$small" --queries "$work/mixed.csv" --reference-samples 4 --resolutions 1 --no-cache --json "$work/mixed.json"
+grep -q "compare on 'mixed.csv' (2 sky and ground rays" "$work/stdout" || fail "compare did not compare the two plain rays: $(cat "$work/stdout")"
 
 # stress: one quick case with JSON output; an unknown case is bad input.
 expect_status 0 "PASS" -- stress --quick --case mars --json "$work/stress.json"

@@ -49,7 +49,8 @@ enum class Kind {
   EclipseReceived = 7,
   EclipseIrradiance = 8,
   EclipseSkylightAndSun = 9,
-  EclipseSun = 10
+  EclipseSun = 10,
+  EclipseRadianceToPoint = 11
 };
 
 struct Query {
@@ -132,6 +133,10 @@ void main() {
     SkybakeSunAndSkyIrradiance e = skybakeSunAndSkyIrradiance(qa.xyz, qb.xyz, qc.xyz, moon);
     first = e.sun;
     second = e.sky;
+  } else if (kind == 11) {
+    SkybakeRadianceAndTransmittance v = skybakeRadianceToPoint(qa.xyz, qb.xyz, qc.xyz, moon);
+    first = v.radiance;
+    second = v.transmittance;
   } else {
     // The skylight share at a point (kind 9 only), the sun's visible
     // fraction there, and whether the view direction from it sees the sun
@@ -176,7 +181,7 @@ class GlLookups {
     Outputs out;
     out.first.assign(queries.size(), Spectrum(0.0f));
     out.second.assign(queries.size(), Spectrum(0.0f));
-    for (int kind = 0; kind <= static_cast<int>(Kind::EclipseSun); ++kind) {
+    for (int kind = 0; kind <= static_cast<int>(Kind::EclipseRadianceToPoint); ++kind) {
       std::vector<Query> group;
       std::vector<size_t> at;
       for (size_t i = 0; i < queries.size(); ++i) {
@@ -293,6 +298,11 @@ Outputs evaluateOnCpu(const Sky& sky, const std::vector<Query>& queries) {
       }
       case Kind::EclipseReceived: {
         const RadianceAndTransmittance v = sky.receivedRadiance(a, b, sun, moonOf(q));
+        first = v.radiance, second = v.transmittance;
+        break;
+      }
+      case Kind::EclipseRadianceToPoint: {
+        const RadianceAndTransmittance v = sky.radianceToPoint(a, b, sun, moonOf(q));
         first = v.radiance, second = v.transmittance;
         break;
       }
@@ -605,6 +615,47 @@ TEST_F(GlParity, EclipseSkyRadiance) {
   expectParity(sky, gl, queries, "eclipse", kEclipseValueFloor);
 }
 
+// Radiance to points 5 to 120 km away under the same moons (total at the
+// umbra's centre and 40 km off its axis, the camera inside the umbra;
+// annular; partial; just outside the umbra, the camera outside it), from
+// the ground and from 10 km, toward, across and away from the sun, near the
+// horizon and down toward the ground (points below it left out). The
+// segment's single scattering with and without the moon are float sums at
+// the same 64 Gauss nodes as the sky's (the tolerance note above), and what
+// the plain lookup scattered more than once is the plain value less the
+// second of them: the same tolerances, over the same value floor.
+TEST_F(GlParity, EclipseRadianceToPoint) {
+  const Sky& sky = eclipseSky();
+  const GlLookups& gl = eclipseLookups();
+  const double bottom = sky.atmosphere().bottom_radius_m;
+  const double sun_zenith_deg = 50.0;
+  const glm::vec3 sun = sunAt(sun_zenith_deg);
+  struct MoonCase {
+    double separation_deg, angular_radius_deg;
+  };
+  const MoonCase moons[] = {{0.0, 0.28}, {0.006, 0.28}, {0.0, 0.25}, {0.25, 0.28}, {0.03, 0.28}};
+  // Views: zenith angle, azimuth from the sun's (deg).
+  const double views[][2] = {{80.0, 0.0}, {60.0, 90.0}, {85.0, 180.0}, {89.0, 90.0}, {100.0, 30.0}};
+  std::vector<Query> queries;
+  for (double altitude_m : {0.0, 10000.0}) {
+    const glm::vec3 camera(0.0f, 0.0f, static_cast<float>(bottom + altitude_m));
+    for (const MoonCase& m : moons) {
+      const glm::dvec3 moon_dir(sunAt(sun_zenith_deg - m.separation_deg));
+      const Moon moon = Moon::seenFrom(glm::dvec3(camera), moon_dir, radiansFromDegrees(m.angular_radius_deg));
+      const glm::vec4 moon_f(glm::vec3(moon.centre_m), static_cast<float>(moon.radius_m));
+      for (const auto& v : views) {
+        for (float distance_m : {5000.0f, 20000.0f, 60000.0f, 120000.0f}) {
+          // Positions rounded to float, so the CPU sees the query the GPU does.
+          const glm::vec3 point = camera + sunAt(v[0], v[1]) * distance_m;
+          if (glm::length(glm::dvec3(point)) < bottom) continue;
+          queries.push_back({Kind::EclipseRadianceToPoint, camera, point, sun, 0.0f, moon_f});
+        }
+      }
+    }
+  }
+  expectParity(sky, gl, queries, "eclipse radiance to a point", kEclipseValueFloor);
+}
+
 // A moon far from the sun hides it from nowhere in the atmosphere: the
 // eclipse lookups give the plain ones' values. The same float operations,
 // but compiled in another program, whose compiler may fuse a multiply and
@@ -622,6 +673,8 @@ TEST_F(GlParity, EclipseWithTheMoonAwayIsPlain) {
   for (const glm::vec3& d : directions(32, 13)) {
     plain.push_back({Kind::Received, camera, d, sun});
     eclipsed.push_back({Kind::EclipseReceived, camera, d, sun, 0.0f, moon_f});
+    plain.push_back({Kind::RadianceToPoint, camera, camera + d * 30000.0f, sun});
+    eclipsed.push_back({Kind::EclipseRadianceToPoint, camera, camera + d * 30000.0f, sun, 0.0f, moon_f});
   }
   plain.push_back({Kind::Irradiance, camera, glm::vec3(0.0f, 0.0f, 1.0f), sun});
   eclipsed.push_back({Kind::EclipseIrradiance, camera, glm::vec3(0.0f, 0.0f, 1.0f), sun, 0.0f, moon_f});
@@ -671,7 +724,8 @@ TEST_F(GlParity, EclipseSunDiskPastMoon) {
 
 // Hostile moons, as the C++ eclipse tests take them: a camera inside the
 // moon, a moon bigger than its distance, a small near one, a centre that is
-// not a number: every GL output finite and not negative.
+// not a number: every GL output finite and not negative (radiance to points
+// 20 km away among them).
 TEST_F(GlParity, EclipseHostileMoonsAreFinite) {
   const Sky& sky = eclipseSky();
   const GlLookups& gl = eclipseLookups();
@@ -685,6 +739,7 @@ TEST_F(GlParity, EclipseHostileMoonsAreFinite) {
     for (const glm::vec3& d : {sunAt(0.0), sunAt(50.0), sunAt(89.0, 90.0), sunAt(120.0)}) {
       queries.push_back({Kind::EclipseReceived, camera, d, sun, 0.0f, moon});
       queries.push_back({Kind::EclipseSun, camera, d, sun, 0.0f, moon});
+      queries.push_back({Kind::EclipseRadianceToPoint, camera, camera + d * 20000.0f, sun, 0.0f, moon});
     }
     queries.push_back({Kind::EclipseIrradiance, camera, glm::vec3(0.0f, 0.0f, 1.0f), sun, 0.0f, moon});
     queries.push_back({Kind::EclipseSkylightAndSun, camera, sun, sun, 0.0f, moon});

@@ -28,13 +28,16 @@ void main() {
   SkybakeRadianceAndTransmittance eclipsed = skybakeSkyRadiance(camera, dir, sun, moon, skylight);
   SkybakeRadianceAndTransmittance eclipsed_received = skybakeReceivedRadiance(camera, dir, sun, moon);
   SkybakeSunAndSkyIrradiance eclipsed_irradiance = skybakeSunAndSkyIrradiance(camera, dir, sun, moon);
+  SkybakeRadianceAndTransmittance eclipsed_aerial = skybakeRadianceToPoint(camera, camera + dir * 5000.0, sun, moon);
+  SkybakeRadianceAndTransmittance eclipsed_aerial_given =
+      skybakeRadianceAlongRayTo(camera, dir, 5000.0, sun, moon, skylight);
   float past_moon = skybakeMoonVisibleSunFraction(moon, camera, sun, 4.65e-3);
   vec4 eclipsed_solar = skybakeInSunDiskPastMoon(camera, dir, sun, moon) ? skybakeSolarRadiance() : vec4(0.0);
   skybake_check_colour = sky.radiance + received.radiance + aerial.radiance + aerial.transmittance +
                          irradiance.sun + irradiance.sky + solar + skybakeTransmittance(camera, camera + dir) +
                          eclipsed.radiance + skybakeSkyRadiance(camera, dir, sun, moon).radiance +
                          eclipsed_received.radiance + eclipsed_irradiance.sun + eclipsed_irradiance.sky +
-                         eclipsed_solar * past_moon;
+                         eclipsed_solar * past_moon + eclipsed_aerial.radiance + eclipsed_aerial_given.radiance;
 }
 )";
 

@@ -1,6 +1,7 @@
 """Solar eclipses from Python: the moon argument of the lookups against the
-command line's eclipse queries (skybake validate --queries eclipse), and a
-moon far from the sun leaving the plain lookups' values bit for bit.
+command line's eclipse queries (skybake validate --queries eclipse: sky rays
+and rays to points), and a moon far from the sun leaving the plain lookups'
+values bit for bit.
 
 Run by CTest (python_module), with the environment test_skybake.py names.
 """
@@ -34,12 +35,13 @@ def query_moon(camera, sun, separation_deg, radius_deg):
     return skybake.moon_seen_from(camera, moon_dir / np.linalg.norm(moon_dir), np.radians(radius_deg))
 
 
-def test_sky_radiance_with_a_moon_is_the_command_lines(sky, tmp_path):
+def test_sky_radiance_and_radiance_to_point_with_a_moon_are_the_command_lines(sky, tmp_path):
     details = tmp_path / "eclipse.csv"
     subprocess.run([BINARY, "validate", BAKE, "--queries", "eclipse", "--reference-samples", "0", "--no-cache",
                     "--details", str(details)], check=True, capture_output=True)
     bottom = sky.atmosphere["bottom_radius_m"]
     compared = 0
+    to_points = 0
     with open(details) as f:
         for row in csv.DictReader(f):
             if row["kind"] != "radiance" or float(row["view_zenith_deg"]) > 90.0:
@@ -48,13 +50,19 @@ def test_sky_radiance_with_a_moon_is_the_command_lines(sky, tmp_path):
             sun = direction(float(row["sun_zenith_deg"]), 0.0)
             view = direction(float(row["view_zenith_deg"]), float(row["view_azimuth_deg"]))
             moon = query_moon(camera, sun, float(row["moon_separation_deg"]), float(row["moon_angular_radius_deg"]))
-            radiance, _ = sky.sky_radiance(camera, view, sun, moon=moon)
+            distance_m = float(row["distance_m"])
+            if distance_m > 0.0:
+                radiance, _ = sky.radiance_to_point(camera, camera + view * distance_m, sun, moon=moon)
+                to_points += 1
+            else:
+                radiance, _ = sky.sky_radiance(camera, view, sun, moon=moon)
             for c, nm in enumerate(sky.wavelengths_nm):
                 expected = float(row[f"bake_{nm:g}"])
                 # The details print 6 significant digits.
                 assert radiance[c] == pytest.approx(expected, rel=1e-5, abs=1e-30), (row, nm)
             compared += 1
     assert compared >= 60
+    assert to_points >= 40
 
 
 def test_a_far_moon_changes_nothing_and_totality_is_dark(sky):
