@@ -88,8 +88,8 @@ TEST(EclipseReference, TheEclipseQuerySetHasRaysToPoints) {
     nearest_m = std::min(nearest_m, q.distance_m);
     farthest_m = std::max(farthest_m, q.distance_m);
   }
-  for (const std::pair<double, double> moon : {std::pair{0.0, 0.28}, std::pair{0.006, 0.28}, std::pair{0.03, 0.28},
-                                               std::pair{0.25, 0.28}, std::pair{0.0, 0.25}}) {
+  for (const auto& moon : {std::pair{0.0, 0.28}, std::pair{0.006, 0.28}, std::pair{0.03, 0.28}, std::pair{0.25, 0.28},
+                           std::pair{0.0, 0.25}}) {
     EXPECT_EQ(moons.count(moon), 1u) << moon.first << " " << moon.second;
   }
   EXPECT_EQ(altitudes, (std::set<double>{0.0, 10000.0}));
