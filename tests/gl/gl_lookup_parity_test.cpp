@@ -572,32 +572,36 @@ TEST_F(GlParity, IrradianceAndTransmittance) {
 // down to 1e-9 are compared with the same relative tolerances.
 constexpr double kEclipseValueFloor = 1e-9;
 
+// The eclipse tests' sun (zenith angle, deg) and moons, each separation_deg
+// above the sun seen from the camera: total at the umbra's centre and 40 km
+// off its axis, annular, partial, and just outside the umbra.
+constexpr double kEclipseSunZenith_deg = 50.0;
+struct EclipseMoonCase {
+  double separation_deg, angular_radius_deg;
+};
+constexpr EclipseMoonCase kEclipseMoons[] = {{0.0, 0.28}, {0.006, 0.28}, {0.0, 0.25}, {0.25, 0.28}, {0.03, 0.28}};
+
+// The moon of m seen from camera, as the GLSL takes it (centre in metres
+// from the planet's centre, radius in metres).
+glm::vec4 eclipseMoonSeenFrom(const glm::vec3& camera, const EclipseMoonCase& m) {
+  const glm::dvec3 moon_dir(sunAt(kEclipseSunZenith_deg - m.separation_deg));
+  const Moon moon = Moon::seenFrom(glm::dvec3(camera), moon_dir, radiansFromDegrees(m.angular_radius_deg));
+  return glm::vec4(glm::vec3(moon.centre_m), static_cast<float>(moon.radius_m));
+}
+
 TEST_F(GlParity, EclipseSkyRadiance) {
   const Sky& sky = eclipseSky();
   const GlLookups& gl = eclipseLookups();
   const double bottom = sky.atmosphere().bottom_radius_m;
-  const double sun_zenith_deg = 50.0;
-  const glm::vec3 sun = sunAt(sun_zenith_deg);
-  struct MoonCase {
-    const char* name;
-    double separation_deg, angular_radius_deg;
-  };
-  const MoonCase moons[] = {{"total", 0.0, 0.28},
-                            {"total, off the axis", 0.006, 0.28},
-                            {"annular", 0.0, 0.25},
-                            {"partial", 0.25, 0.28},
-                            {"outside the umbra", 0.03, 0.28}};
+  const glm::vec3 sun = sunAt(kEclipseSunZenith_deg);
   // Views: zenith angle, azimuth from the sun's (deg).
   const double views[][2] = {{0.0, 0.0},  {45.0, 0.0},  {45.0, 90.0},  {45.0, 180.0},
                              {85.0, 0.0}, {88.0, 90.0}, {89.5, 180.0}, {120.0, 30.0}};
   std::vector<Query> queries;
   for (double altitude_m : {0.0, 10000.0}) {
     const glm::vec3 camera(0.0f, 0.0f, static_cast<float>(bottom + altitude_m));
-    for (const MoonCase& m : moons) {
-      // The moon seen from the camera, separation_deg above the sun.
-      const glm::dvec3 moon_dir(sunAt(sun_zenith_deg - m.separation_deg));
-      const Moon moon = Moon::seenFrom(glm::dvec3(camera), moon_dir, radiansFromDegrees(m.angular_radius_deg));
-      const glm::vec4 moon_f(glm::vec3(moon.centre_m), static_cast<float>(moon.radius_m));
+    for (const EclipseMoonCase& m : kEclipseMoons) {
+      const glm::vec4 moon_f = eclipseMoonSeenFrom(camera, m);
       for (const auto& v : views) {
         const glm::vec3 dir = sunAt(v[0], v[1]);
         queries.push_back({Kind::EclipseSkyRadiance, camera, dir, sun, 0.0f, moon_f});
@@ -628,21 +632,14 @@ TEST_F(GlParity, EclipseRadianceToPoint) {
   const Sky& sky = eclipseSky();
   const GlLookups& gl = eclipseLookups();
   const double bottom = sky.atmosphere().bottom_radius_m;
-  const double sun_zenith_deg = 50.0;
-  const glm::vec3 sun = sunAt(sun_zenith_deg);
-  struct MoonCase {
-    double separation_deg, angular_radius_deg;
-  };
-  const MoonCase moons[] = {{0.0, 0.28}, {0.006, 0.28}, {0.0, 0.25}, {0.25, 0.28}, {0.03, 0.28}};
+  const glm::vec3 sun = sunAt(kEclipseSunZenith_deg);
   // Views: zenith angle, azimuth from the sun's (deg).
   const double views[][2] = {{80.0, 0.0}, {60.0, 90.0}, {85.0, 180.0}, {89.0, 90.0}, {100.0, 30.0}};
   std::vector<Query> queries;
   for (double altitude_m : {0.0, 10000.0}) {
     const glm::vec3 camera(0.0f, 0.0f, static_cast<float>(bottom + altitude_m));
-    for (const MoonCase& m : moons) {
-      const glm::dvec3 moon_dir(sunAt(sun_zenith_deg - m.separation_deg));
-      const Moon moon = Moon::seenFrom(glm::dvec3(camera), moon_dir, radiansFromDegrees(m.angular_radius_deg));
-      const glm::vec4 moon_f(glm::vec3(moon.centre_m), static_cast<float>(moon.radius_m));
+    for (const EclipseMoonCase& m : kEclipseMoons) {
+      const glm::vec4 moon_f = eclipseMoonSeenFrom(camera, m);
       for (const auto& v : views) {
         for (float distance_m : {5000.0f, 20000.0f, 60000.0f, 120000.0f}) {
           // Positions rounded to float, so the CPU sees the query the GPU does.

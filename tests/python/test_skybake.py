@@ -212,32 +212,35 @@ def test_validate_gives_the_command_lines_figures(tmp_path):
         skybake.validate(tmp_path / "missing.exr", **settings)
 
 
-def test_validate_gives_the_command_lines_colour_figures(tmp_path):
-    config = os.path.join(SOURCE, "tests", "cli", "small_earth_spectral.toml")
-    bake = tmp_path / "spectral.exr"
+QUICK_COLOUR_VALIDATION = dict(queries="quick", reference_samples=64, no_cache=True)
+
+
+def bake_and_validate_with_colour(config, tmp_path):
+    """Bakes CONFIG with the command line, then validates the bake with its
+    colour reference from Python and from the command line (the quick set,
+    64 paths): the bake, Python's report and the command line's JSON."""
+    bake = tmp_path / "bake.exr"
     subprocess.run([BINARY, "bake", config, "-o", str(bake)], check=True, capture_output=True)
-    settings = dict(queries="quick", reference_samples=64, no_cache=True)
-    report = skybake.validate(bake, colour_config=config, **settings)
+    report = skybake.validate(bake, colour_config=config, **QUICK_COLOUR_VALIDATION)
     json_path = tmp_path / "validate.json"
     subprocess.run([BINARY, "validate", str(bake), "--queries", "quick", "--reference-samples", "64", "--no-cache",
                     "--colour-config", config, "--json", str(json_path)], check=True, capture_output=True)
+    return bake, report, json.loads(json_path.read_text())
+
+
+def test_validate_gives_the_command_lines_colour_figures(tmp_path):
+    config = os.path.join(SOURCE, "tests", "cli", "small_earth_spectral.toml")
+    bake, report, expected = bake_and_validate_with_colour(config, tmp_path)
     # Seeded per query and wavelength group: the same figures to the last digit.
-    assert report["colour"]["errors"] == json.loads(json_path.read_text())["colour"]["errors"]
-    assert "colour" not in skybake.validate(bake, **settings)
+    assert report["colour"]["errors"] == expected["colour"]["errors"]
+    assert "colour" not in skybake.validate(bake, **QUICK_COLOUR_VALIDATION)
     with pytest.raises(skybake.BadInput, match="sun.irradiance"):
-        skybake.validate(bake, colour_config=SMALL_EARTH, **settings)
+        skybake.validate(bake, colour_config=SMALL_EARTH, **QUICK_COLOUR_VALIDATION)
 
 
 def test_validate_gives_a_spectral_bakes_figures_per_wavelength(tmp_path):
     config = os.path.join(SOURCE, "tests", "cli", "small_earth_many.toml")
-    bake = tmp_path / "many.exr"
-    subprocess.run([BINARY, "bake", config, "-o", str(bake)], check=True, capture_output=True)
-    settings = dict(queries="quick", reference_samples=64, no_cache=True)
-    report = skybake.validate(bake, colour_config=config, **settings)
-    json_path = tmp_path / "validate.json"
-    subprocess.run([BINARY, "validate", str(bake), "--queries", "quick", "--reference-samples", "64", "--no-cache",
-                    "--colour-config", config, "--json", str(json_path)], check=True, capture_output=True)
-    expected = json.loads(json_path.read_text())
+    bake, report, expected = bake_and_validate_with_colour(config, tmp_path)
     # Each lane group's reference is seeded per query as the command line's:
     # the same figures, every wavelength's, to the last digit.
     assert report["errors"] == expected["errors"]
