@@ -589,6 +589,16 @@ glm::vec4 eclipseMoonSeenFrom(const glm::vec3& camera, const EclipseMoonCase& m)
   return glm::vec4(glm::vec3(moon.centre_m), static_cast<float>(moon.radius_m));
 }
 
+// Calls f(camera, moon) for cameras on the ground and at 10 km above the
+// origin's vertical and every moon of kEclipseMoons seen from there.
+template <class F>
+void forEachEclipseCameraAndMoon(double bottom_radius_m, F&& f) {
+  for (double altitude_m : {0.0, 10000.0}) {
+    const glm::vec3 camera(0.0f, 0.0f, static_cast<float>(bottom_radius_m + altitude_m));
+    for (const EclipseMoonCase& m : kEclipseMoons) f(camera, eclipseMoonSeenFrom(camera, m));
+  }
+}
+
 TEST_F(GlParity, EclipseSkyRadiance) {
   const Sky& sky = eclipseSky();
   const GlLookups& gl = eclipseLookups();
@@ -598,24 +608,19 @@ TEST_F(GlParity, EclipseSkyRadiance) {
   const double views[][2] = {{0.0, 0.0},  {45.0, 0.0},  {45.0, 90.0},  {45.0, 180.0},
                              {85.0, 0.0}, {88.0, 90.0}, {89.5, 180.0}, {120.0, 30.0}};
   std::vector<Query> queries;
-  for (double altitude_m : {0.0, 10000.0}) {
-    const glm::vec3 camera(0.0f, 0.0f, static_cast<float>(bottom + altitude_m));
-    for (const EclipseMoonCase& m : kEclipseMoons) {
-      const glm::vec4 moon_f = eclipseMoonSeenFrom(camera, m);
-      for (const auto& v : views) {
-        const glm::vec3 dir = sunAt(v[0], v[1]);
-        queries.push_back({Kind::EclipseSkyRadiance, camera, dir, sun, 0.0f, moon_f});
-        if (v[0] > 90.0) queries.push_back({Kind::EclipseReceived, camera, dir, sun, 0.0f, moon_f});
-      }
-      queries.push_back({Kind::EclipseIrradiance, camera, glm::vec3(0.0f, 0.0f, 1.0f), sun, 0.0f, moon_f});
-      queries.push_back({Kind::EclipseSkylightAndSun, camera, sun, sun, 0.0f, moon_f});
-      // F and the visible fraction 30 km up the sun's direction and 60 km
-      // across it: other parts of the shadow.
-      queries.push_back({Kind::EclipseSkylightAndSun, camera + sun * 30000.0f, sun, sun, 0.0f, moon_f});
-      queries.push_back(
-          {Kind::EclipseSkylightAndSun, camera + glm::vec3(60000.0f, 0.0f, 0.0f), sun, sun, 0.0f, moon_f});
+  forEachEclipseCameraAndMoon(bottom, [&](const glm::vec3& camera, const glm::vec4& moon_f) {
+    for (const auto& v : views) {
+      const glm::vec3 dir = sunAt(v[0], v[1]);
+      queries.push_back({Kind::EclipseSkyRadiance, camera, dir, sun, 0.0f, moon_f});
+      if (v[0] > 90.0) queries.push_back({Kind::EclipseReceived, camera, dir, sun, 0.0f, moon_f});
     }
-  }
+    queries.push_back({Kind::EclipseIrradiance, camera, glm::vec3(0.0f, 0.0f, 1.0f), sun, 0.0f, moon_f});
+    queries.push_back({Kind::EclipseSkylightAndSun, camera, sun, sun, 0.0f, moon_f});
+    // F and the visible fraction 30 km up the sun's direction and 60 km
+    // across it: other parts of the shadow.
+    queries.push_back({Kind::EclipseSkylightAndSun, camera + sun * 30000.0f, sun, sun, 0.0f, moon_f});
+    queries.push_back({Kind::EclipseSkylightAndSun, camera + glm::vec3(60000.0f, 0.0f, 0.0f), sun, sun, 0.0f, moon_f});
+  });
   expectParity(sky, gl, queries, "eclipse", kEclipseValueFloor);
 }
 
@@ -636,20 +641,16 @@ TEST_F(GlParity, EclipseRadianceToPoint) {
   // Views: zenith angle, azimuth from the sun's (deg).
   const double views[][2] = {{80.0, 0.0}, {60.0, 90.0}, {85.0, 180.0}, {89.0, 90.0}, {100.0, 30.0}};
   std::vector<Query> queries;
-  for (double altitude_m : {0.0, 10000.0}) {
-    const glm::vec3 camera(0.0f, 0.0f, static_cast<float>(bottom + altitude_m));
-    for (const EclipseMoonCase& m : kEclipseMoons) {
-      const glm::vec4 moon_f = eclipseMoonSeenFrom(camera, m);
-      for (const auto& v : views) {
-        for (float distance_m : {5000.0f, 20000.0f, 60000.0f, 120000.0f}) {
-          // Positions rounded to float, so the CPU sees the query the GPU does.
-          const glm::vec3 point = camera + sunAt(v[0], v[1]) * distance_m;
-          if (glm::length(glm::dvec3(point)) < bottom) continue;
-          queries.push_back({Kind::EclipseRadianceToPoint, camera, point, sun, 0.0f, moon_f});
-        }
+  forEachEclipseCameraAndMoon(bottom, [&](const glm::vec3& camera, const glm::vec4& moon_f) {
+    for (const auto& v : views) {
+      for (float distance_m : {5000.0f, 20000.0f, 60000.0f, 120000.0f}) {
+        // Positions rounded to float, so the CPU sees the query the GPU does.
+        const glm::vec3 point = camera + sunAt(v[0], v[1]) * distance_m;
+        if (glm::length(glm::dvec3(point)) < bottom) continue;
+        queries.push_back({Kind::EclipseRadianceToPoint, camera, point, sun, 0.0f, moon_f});
       }
     }
-  }
+  });
   expectParity(sky, gl, queries, "eclipse radiance to a point", kEclipseValueFloor);
 }
 
