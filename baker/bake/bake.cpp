@@ -21,9 +21,11 @@
 #include "baker/bake/colour_bake.h"
 #include "baker/bake/order_convergence.h"
 #include "baker/bake/process_usage.h"
+#include "baker/bake/slice_tail.h"
 #include "baker/bake/spectral_bake.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
+#include "data_formats/texture_mapping.h"
 
 namespace skybake {
 namespace {
@@ -66,14 +68,9 @@ float lastOrderShare(const std::vector<OrderContribution>& orders, int channels)
 // (and too large) to add: such atmospheres need more computed orders.
 constexpr float kMaxTailRatio = 0.8f;
 
-// The orders after the last computed one as a multiple of it: the sum of the
-// geometric series r + r^2 + ... = r / (1 - r) of the estimated ratio.
-Spectrum tailScale(const TailEstimate& tail) { return tail.ratio / (Spectrum(1.0f) - tail.ratio); }
-
-TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<OrderContribution>& orders, int channels,
-                             const Texture4D& last_radiance, const Texture4D& last_density,
-                             const MultipleScatteringPhase& last_shape, const MultipleScatteringPhase& stored_shape,
-                             const Texture2D& last_irradiance, BakeTables& tables) {
+// The table's ratio between the last two orders' mean radiance, per
+// channel, if a tail can be estimated from it; otherwise why not.
+TailEstimate tableTailRatio(const std::vector<OrderContribution>& orders, int channels) {
   TailEstimate tail;
   const size_t n = orders.size();
   if (n < 3) {
@@ -99,16 +96,45 @@ TailEstimate addTailEstimate(const TableSampler& sampler, const std::vector<Orde
       return tail;
     }
   }
-  const Spectrum scale = tailScale(tail);
-  addReshaped(sampler, TexelLayout::Scattering, last_radiance, last_shape, stored_shape, scale,
-              tables.multiple_scattering);
-  addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, scale, tables.multiple_density);
-  // The sky irradiance holds orders 1 .. N-1; the rest follow the same series
-  // from order N - 1 on.
-  addScaled(tables.irradiance.texels, last_irradiance.texels, scale);
   tail.applied = true;
-  tail.reason = fmt::format("applied after order {}: the remaining orders as a geometric series", orders[n - 1].order);
   return tail;
+}
+
+// Adds the orders after the last computed one to the tables, each slice's
+// as its own multiple of the last order (SliceTail); the SliceTail, or none
+// where the table's ratio allows no tail (tail.reason says why).
+std::optional<SliceTail> addTailEstimate(const TableSampler& sampler, const std::vector<OrderContribution>& orders,
+                                         const OrderConvergence& convergence, int channels,
+                                         const Texture4D& last_radiance, const Texture4D& last_density,
+                                         const MultipleScatteringPhase& last_shape,
+                                         const MultipleScatteringPhase& stored_shape, const Texture2D& last_irradiance,
+                                         BakeTables& tables, TailEstimate& tail) {
+  tail = tableTailRatio(orders, channels);
+  if (!tail.applied) return std::nullopt;
+  std::optional<SliceTail> slices(std::in_place, sampler, convergence.sliceMeans(2), convergence.sliceMeans(1),
+                                  convergence.sliceMeans(0), tail.ratio, kMaxTailRatio);
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  std::vector<Spectrum> slice_scale(static_cast<size_t>(s.r) * s.mu_s);
+  for (int i_r = 0; i_r < s.r; ++i_r)
+    for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) slice_scale[i_r * s.mu_s + i_mu_s] = slices->scale(i_r, i_mu_s);
+  addReshaped(sampler, TexelLayout::Scattering, last_radiance, last_shape, stored_shape, slice_scale,
+              tables.multiple_scattering);
+  addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, slice_scale,
+              tables.multiple_density);
+  // The sky irradiance holds orders 1 .. N-1; the rest follow the same series
+  // from order N - 1 on, at each texel's altitude and sun.
+  const Texture2D& e = last_irradiance;
+  for (int i_r = 0; i_r < e.height; ++i_r) {
+    for (int i_mu_s = 0; i_mu_s < e.width; ++i_mu_s) {
+      const RMuS texel = irradianceTexelConfig(sampler.domain(), e.width, e.height, i_mu_s, i_r);
+      tables.irradiance.at(i_mu_s, i_r) += e.at(i_mu_s, i_r) * slices->scaleAt(texel.r, texel.mu_s);
+    }
+  }
+  tail.reason = fmt::format(
+      "applied after order {}: the remaining orders as a series whose ratio relaxes from each slice's last toward "
+      "the table's (at most {:.3g} times the last order)",
+      orders.back().order, slices->largestScale());
+  return slices;
 }
 
 // A narrowed scene's stored scattering density, computed on the scene's own
@@ -288,11 +314,19 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
 
   if (config.bake.tail_estimate) {
     const MultipleScatteringPhase& last_shape = previous_shape ? *previous_shape : stored_shape;
-    report.tail = addTailEstimate(sampler, report.orders, a.channelCount(), delta_multiple, last_density, last_shape,
-                                  stored_shape, delta_irradiance, tables);
-    if (scene && report.tail.applied) {
-      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape, tailScale(report.tail),
-                  scene->sum);
+    const std::optional<SliceTail> slice_tail =
+        addTailEstimate(sampler, report.orders, convergence, a.channelCount(), delta_multiple, last_density, last_shape,
+                        stored_shape, delta_irradiance, tables, report.tail);
+    if (scene && slice_tail) {
+      // The scene's texels take the whole domain's tail at their altitude and sun.
+      const AtmosphereDomain& sd = scene->sampler.domain();
+      const ScatteringSizes& ss = scene->sampler.scatteringSizes();
+      std::vector<Spectrum> scene_scale(static_cast<size_t>(ss.r) * ss.mu_s);
+      for (int i_r = 0; i_r < ss.r; ++i_r)
+        for (int i_mu_s = 0; i_mu_s < ss.mu_s; ++i_mu_s)
+          scene_scale[i_r * ss.mu_s + i_mu_s] =
+              slice_tail->scaleAt(rFromScatteringTexel(sd, ss, i_r), muSFromScatteringTexel(sd, ss, i_mu_s));
+      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape, scene_scale, scene->sum);
     }
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";

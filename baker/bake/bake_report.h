@@ -25,11 +25,13 @@ struct OrderContribution {
   Spectrum mean_irradiance;  // 0 for the last order (nothing reflects it yet)
 };
 
-// The orders after the last computed one, estimated as a geometric series:
-// each later order is `ratio` times the one before (per channel, from the
-// last two orders' mean radiance), so together they add ratio / (1 - ratio)
-// times the last order. Applied only where that is sound: at least 3 orders
-// and a ratio in (0, kMaxTailRatio).
+// The orders after the last computed one, estimated as a series per (altitude,
+// sun) slice of the scattering table (baker/bake/slice_tail.h): each later
+// order is a ratio times the one before, the ratio relaxing from the slice's
+// last one toward `ratio`, the table's (per channel, from the last two
+// orders' mean radiance; by day the two agree and the series is the geometric
+// ratio / (1 - ratio) times the last order). Applied only where that is
+// sound: at least 3 orders and a table ratio in (0, kMaxTailRatio).
 struct TailEstimate {
   bool applied = false;
   Spectrum ratio{0.0f};

@@ -32,6 +32,12 @@ void OrderConvergence::add(const std::vector<SpectrumD>& slice_means) {
   if (slice_means.size() != total_.size()) throw Error(ErrorKind::Internal, "OrderConvergence: slices differ");
   for (size_t i = 0; i < total_.size(); ++i) total_[i] += slice_means[i];
   last_ = slice_means;
+  history_.push_back(slice_means);
+}
+
+const std::vector<SpectrumD>& OrderConvergence::sliceMeans(size_t from_last) const {
+  if (from_last >= history_.size()) throw Error(ErrorKind::Internal, "OrderConvergence: no such order");
+  return history_[history_.size() - 1 - from_last];
 }
 
 SliceShare OrderConvergence::worstLastShare() const {

@@ -66,11 +66,23 @@ void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4
     for (size_t i = 0; i < sum.texels.size(); ++i) sum.texels[i] += delta.texels[i] * scale;
     return;
   }
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  addReshaped(sampler, layout, delta, from, to, std::vector<Spectrum>(static_cast<size_t>(s.r) * s.mu_s, scale), sum);
+}
+
+void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
+                 const MultipleScatteringPhase& from, const MultipleScatteringPhase& to,
+                 const std::vector<Spectrum>& slice_scale, Texture4D& sum) {
+  const ScatteringSizes& s = sampler.scatteringSizes();
+  if (sum.texels.size() != delta.texels.size() || slice_scale.size() != static_cast<size_t>(s.r) * s.mu_s) {
+    throw Error(ErrorKind::Internal, "addReshaped: tables of different sizes");
+  }
   const std::vector<SpectrumD> from_weight = peakWeightsOfRows(sampler, from);
   const std::vector<SpectrumD> to_weight = peakWeightsOfRows(sampler, to);
   forEachTexel(sampler, layout, [&](int i_r, int i_mu, int i_mu_s, int i_nu, double nu) {
-    sum.at(i_r, i_mu, i_mu_s, i_nu) +=
-        delta.at(i_r, i_mu, i_mu_s, i_nu) * scale * from(from_weight[i_r], nu) / to(to_weight[i_r], nu);
+    sum.at(i_r, i_mu, i_mu_s, i_nu) += delta.at(i_r, i_mu, i_mu_s, i_nu) *
+                                       slice_scale[static_cast<size_t>(i_r) * s.mu_s + i_mu_s] *
+                                       from(from_weight[i_r], nu) / to(to_weight[i_r], nu);
   });
 }
 

@@ -29,6 +29,12 @@ void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4
                  const MultipleScatteringPhase& from, const MultipleScatteringPhase& to, const Spectrum& scale,
                  Texture4D& sum);
 
+// The same with a scale per (r, mu_s) slice of the sampler's tables:
+// slice_scale[i_r * mu_s_size + i_mu_s].
+void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4D& delta,
+                 const MultipleScatteringPhase& from, const MultipleScatteringPhase& to,
+                 const std::vector<Spectrum>& slice_scale, Texture4D& sum);
+
 // sum[c] += sum over lanes l of mix[c][l] * delta[l] * from[l] / to[c] at
 // every texel: a table of one set of channels divided by its shape `from`
 // added, mixed linearly, into a table of other channels divided by `to` (a
