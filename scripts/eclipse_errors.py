@@ -4,7 +4,9 @@
 (separation, angular radius), camera altitude and kind of ray (views of the
 sky and the ground, or rays to points), the RMS relative error of the
 radiance over the rays (values below 1e-5 W m^-2 sr^-1 nm^-1 skipped, as
-validate does), and the zenith view's bake / reference ratio (views only).
+validate does), and the zenith view's bake / reference ratio (views only);
+for the sky irradiance queries (kind "irradiance", one per moon and
+altitude), its error and its bake / reference ratio in the same columns.
 
 Usage: /usr/bin/python3 scripts/eclipse_errors.py DETAILS.csv
 """
@@ -18,11 +20,14 @@ SMALLEST = 1e-5
 
 def main(path):
     with open(path) as f:
-        rows = [r for r in csv.DictReader(f) if r["kind"] == "radiance"]
+        rows = [r for r in csv.DictReader(f) if r["kind"] in ("radiance", "sky_irradiance")]
     channels = [k[len("bake_"):] for k in rows[0] if k.startswith("bake_")]
     groups = defaultdict(list)
     for r in rows:
-        rays = "points" if float(r["distance_m"]) > 0.0 else "views"
+        if r["kind"] == "sky_irradiance":
+            rays = "irradiance"
+        else:
+            rays = "points" if float(r["distance_m"]) > 0.0 else "views"
         groups[(float(r["moon_separation_deg"]), float(r["moon_angular_radius_deg"]), float(r["altitude_m"]),
                 rays)].append(r)
     print("moon_sep_deg moon_radius_deg altitude_m rays " +
@@ -36,7 +41,7 @@ def main(path):
                 ref, bake = float(r[f"reference_{c}"]), float(r[f"bake_{c}"])
                 if ref >= SMALLEST:
                     errs.append((bake - ref) / ref)
-                if float(r["view_zenith_deg"]) == 0.0:
+                if r["kind"] == "sky_irradiance" or float(r["view_zenith_deg"]) == 0.0:
                     zen.append(f"{bake / ref:.3f}" if ref > 0 else "nan")
             rms.append(f"{100 * math.sqrt(sum(e * e for e in errs) / len(errs)):.2f}" if errs else "-")
         print(f"{key[0]} {key[1]} {key[2]:.0f} {key[3]} " + " ".join(rms) + " " + " ".join(zen))

@@ -137,10 +137,12 @@ QuerySet comparableQueries(const QuerySet& all, const std::string& what, std::st
       queries.radiance.push_back(q);
     }
   }
+  size_t irradiance = 0;
+  for (const IrradianceQuery& q : all.irradiance) ++(q.moon.present() ? eclipses : irradiance);
   std::vector<std::string> parts;
   if (eclipses > 0) parts.push_back(fmt::format("{} eclipse queries (a moon; the comparators have no moon)", eclipses));
   if (to_points > 0) parts.push_back(fmt::format("{} rays to points", to_points));
-  if (!all.irradiance.empty()) parts.push_back(fmt::format("{} irradiance queries", all.irradiance.size()));
+  if (irradiance > 0) parts.push_back(fmt::format("{} irradiance queries", irradiance));
   left_out.clear();
   for (const std::string& part : parts) left_out += (left_out.empty() ? "" : ", ") + part;
   if (queries.radiance.empty()) {

@@ -85,7 +85,8 @@ void writeDetails(const std::string& path, const Sky& sky, const QuerySet& queri
   }
   for (size_t i = 0; i < queries.irradiance.size(); ++i) {
     const IrradianceQuery& q = queries.irradiance[i];
-    text += fmt::format("sky_irradiance,{},{},,,,,", q.altitude_m, q.sun_zenith_deg);
+    text += fmt::format("sky_irradiance,{},{},,,,{},{}", q.altitude_m, q.sun_zenith_deg, q.moon.separation_deg,
+                        q.moon.angular_radius_deg);
     for (int g = 0; g < groups; ++g) {
       const CachedReference& r = references[g].irradiance[i];
       for (int c = 0; c < lanes(g); ++c) {

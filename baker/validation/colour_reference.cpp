@@ -141,10 +141,10 @@ ColourEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour,
 }
 
 ColourEstimate colourSkyIrradianceReference(const ColourReferenceAtmospheres& colour, const glm::dvec3& point,
-                                            const glm::dvec3& sun, int paths, uint64_t seed) {
+                                            const glm::dvec3& sun, int paths, uint64_t seed, const Moon& moon) {
   const int half_paths = colourGroupHalfPaths(paths);
   return sumOverGroups(colour, [&](const ReferenceSolver& solver, const glm::dmat4& to_xyz, int g, int h) {
-    return solver.mappedSkyIrradiance(point, sun, half_paths, groupSeed(seed, g, h), to_xyz);
+    return solver.mappedSkyIrradiance(point, sun, half_paths, groupSeed(seed, g, h), to_xyz, moon);
   });
 }
 
@@ -182,9 +182,9 @@ ColourReferenceValues computeColourReference(const ColourReferenceAtmospheres& c
       out.radiance[item] = {e.value, e.standard_error, SpectrumD(0.0), e.half_difference};
     } else {
       const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];
-      const ColourEstimate e = colourSkyIrradianceReference(colour, {0.0, 0.0, a.bottom_radius_m + q.altitude_m},
-                                                            directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
-                                                            settings.paths, stableHash(irradianceKey(q)));
+      const QueryGeometry g = geometryOf(a, q);
+      const ColourEstimate e =
+          colourSkyIrradianceReference(colour, g.camera, g.sun, settings.paths, stableHash(irradianceKey(q)), g.moon);
       out.irradiance[item - queries.radiance.size()] = {e.value, e.standard_error, SpectrumD(0.0), e.half_difference};
     }
   };

@@ -78,7 +78,7 @@ struct ColourEstimate {
 ColourEstimate colourRadianceReference(const ColourReferenceAtmospheres& colour, const ReferenceRay& ray, int paths,
                                        uint64_t seed, const Moon& moon = Moon{});
 ColourEstimate colourSkyIrradianceReference(const ColourReferenceAtmospheres& colour, const glm::dvec3& point,
-                                            const glm::dvec3& sun, int paths, uint64_t seed);
+                                            const glm::dvec3& sun, int paths, uint64_t seed, const Moon& moon = Moon{});
 
 struct ColourReferenceValues {
   // XYZ per radiance query, with its half_difference (transmittance unused)

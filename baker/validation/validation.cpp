@@ -66,19 +66,35 @@ std::string radianceKey(const RadianceQuery& q) {
 }
 
 std::string irradianceKey(const IrradianceQuery& q) {
-  return fmt::format("e {} {}{}", q.altitude_m, q.sun_zenith_deg, samplingSuffix(q.sun_zenith_deg));
+  const std::string key = fmt::format("e {} {}{}", q.altitude_m, q.sun_zenith_deg, samplingSuffix(q.sun_zenith_deg));
+  return q.moon.present() ? fmt::format("{} moon {} {}", key, q.moon.separation_deg, q.moon.angular_radius_deg) : key;
 }
+
+namespace {
+
+// The query's moon seen from the camera: turned from the sun toward +y,
+// perpendicular to the sun's x-z plane. None for a query without one.
+Moon moonOf(const glm::dvec3& camera, const glm::dvec3& sun, const MoonQuery& q) {
+  if (!q.present()) return Moon{};
+  const double s = radiansFromDegrees(q.separation_deg);
+  const glm::dvec3 moon_dir = sun * std::cos(s) + glm::dvec3(0.0, 1.0, 0.0) * std::sin(s);
+  return Moon::seenFrom(camera, glm::normalize(moon_dir), radiansFromDegrees(q.angular_radius_deg));
+}
+
+}  // namespace
 
 QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
   QueryGeometry g{cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
                   directionFromZenithAzimuthDeg(q.view_zenith_deg, q.view_azimuth_deg),
                   directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0), Moon{}};
-  if (q.moon.present()) {
-    // Turned from the sun toward +y, perpendicular to the sun's x-z plane.
-    const double s = radiansFromDegrees(q.moon.separation_deg);
-    const glm::dvec3 moon_dir = g.sun * std::cos(s) + glm::dvec3(0.0, 1.0, 0.0) * std::sin(s);
-    g.moon = Moon::seenFrom(g.camera, glm::normalize(moon_dir), radiansFromDegrees(q.moon.angular_radius_deg));
-  }
+  g.moon = moonOf(g.camera, g.sun, q.moon);
+  return g;
+}
+
+QueryGeometry geometryOf(const AtmosphereParameters& a, const IrradianceQuery& q) {
+  QueryGeometry g{cameraAtAltitude(a.bottom_radius_m, q.altitude_m), glm::dvec3(0.0, 0.0, 1.0),
+                  directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0), Moon{}};
+  g.moon = moonOf(g.camera, g.sun, q.moon);
   return g;
 }
 
@@ -164,9 +180,9 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
       out.radiance[item] = {e.value, e.standard_error, solver.transmittance(ray)};
     } else {
       const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];
-      const ReferenceEstimate e = solver.skyIrradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m},
-                                                       directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0),
-                                                       settings.paths, stableHash(irradianceKey(q)));
+      const QueryGeometry g = geometryOf(a, q);
+      const ReferenceEstimate e =
+          solver.skyIrradiance(g.camera, g.sun, settings.paths, stableHash(irradianceKey(q)), g.moon);
       out.irradiance[item - queries.radiance.size()] = {e.value, e.standard_error, SpectrumD(1.0)};
     }
   };
@@ -213,9 +229,9 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
   out.seconds_per_ray = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
                         std::max<size_t>(queries.radiance.size(), 1);
   for (const IrradianceQuery& q : queries.irradiance) {
-    out.irradiance.push_back(sky.irradiance({0.0, 0.0, a.bottom_radius_m + q.altitude_m}, {0.0, 0.0, 1.0},
-                                            directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0))
-                                 .sky);
+    const QueryGeometry g = geometryOf(a, q);
+    out.irradiance.push_back(q.moon.present() ? sky.irradiance(g.camera, g.view, g.sun, g.moon).sky
+                                              : sky.irradiance(g.camera, g.view, g.sun).sky);
   }
   return out;
 }

@@ -98,6 +98,9 @@ struct QueryGeometry {
   Moon moon;  // none unless the query has one
 };
 QueryGeometry geometryOf(const AtmosphereParameters& atmosphere, const RadianceQuery& query);
+// An irradiance query's: the surface's point as the camera, its normal (+z)
+// as the view.
+QueryGeometry geometryOf(const AtmosphereParameters& atmosphere, const IrradianceQuery& query);
 
 // A method's answers for every query of a set.
 struct MethodValues {

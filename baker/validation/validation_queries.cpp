@@ -83,6 +83,11 @@ QuerySet eclipseQuerySet() {
       for (const auto& p : points) set.radiance.push_back({altitude, sun_zenith_deg, p[0], p[1], p[2], moon});
     }
   }
+  // The light on the ground (and at 10 km) under each moon: in totality it
+  // comes from the sunlit air beyond the umbra, from every direction.
+  for (double altitude : {0.0, 10000.0}) {
+    for (const MoonQuery& moon : moons) set.irradiance.push_back({altitude, sun_zenith_deg, moon});
+  }
   return set;
 }
 

@@ -51,9 +51,11 @@ struct RadianceQuery {
   MoonQuery moon{};         // none but in eclipse queries
 };
 
+// Sky irradiance on a horizontal surface above the +z pole.
 struct IrradianceQuery {
   double altitude_m;
   double sun_zenith_deg;
+  MoonQuery moon{};  // none but in eclipse queries
 };
 
 struct QuerySet {
@@ -77,7 +79,8 @@ QuerySet quickQuerySet(double atmosphere_thickness_m);
 // total eclipse seen from the umbra's centre, from inside it off centre and
 // from just outside it, partial eclipses and an annular one; cameras on the
 // ground and at 10 km; views at the zenith, across the sky, near the
-// horizon and to the ground.
+// horizon and to the ground; rays to points; and the sky irradiance on the
+// ground and at 10 km under every moon.
 QuerySet eclipseQuerySet();
 
 // The columns of a radiance query CSV (those of `skybake lookup radiance`),

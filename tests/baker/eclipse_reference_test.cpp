@@ -1,7 +1,7 @@
 // The reference under a solar eclipse: the moon hides the sun in every sun
 // connection, so the umbra is dark but for the light of the sunlit air
 // around it; eclipse queries have cache keys of their own; the eclipse
-// query set's rays to points.
+// query set's rays to points and irradiance queries.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,10 +11,13 @@
 #include <set>
 #include <utility>
 
+#include "baker/bake/bake.h"
 #include "baker/reference/reference_solver.h"
 #include "baker/validation/validation.h"
 #include "baker/validation/validation_queries.h"
 #include "data_formats/config.h"
+#include "runtime/sky.h"
+#include "test_configs.h"
 
 namespace skybake {
 namespace {
@@ -109,6 +112,53 @@ TEST(EclipseReference, TheEclipseQuerySetHasRaysToPoints) {
   ASSERT_EQ(from_csv.radiance.size(), 1u);
   EXPECT_EQ(from_csv.radiance[0].distance_m, 20000.0);
   EXPECT_EQ(from_csv.radiance[0].moon.angular_radius_deg, 0.28);
+}
+
+// The eclipse set's sky irradiance: on the ground and at 10 km under every
+// moon. Their cache keys name the moon; the bake (Sky::irradiance with a
+// moon) and the reference (the moon in its sun connections) both see it: a
+// moon far from the sun changes nothing, totality leaves the light of the
+// sunlit air beyond the umbra.
+TEST(EclipseReference, IrradianceQueriesSeeTheMoonInTheBakeAndTheReference) {
+  const QuerySet set = querySetNamed("eclipse", 100e3);
+  std::set<std::pair<double, double>> moons;
+  for (const IrradianceQuery& q : set.irradiance) {
+    EXPECT_TRUE(q.moon.present());
+    moons.insert({q.moon.separation_deg, q.moon.angular_radius_deg});
+  }
+  EXPECT_EQ(set.irradiance.size(), 12u);
+  EXPECT_EQ(moons.size(), 6u);
+  EXPECT_EQ(moons.count({0.0, 0.28}), 1u);
+
+  const IrradianceQuery plain{0.0, 50.0}, total{0.0, 50.0, {0.0, 0.28}}, far{0.0, 50.0, {5.0, 0.28}};
+  EXPECT_NE(irradianceKey(plain), irradianceKey(total));
+  EXPECT_NE(irradianceKey(total), irradianceKey(far));
+  const QuerySet queries{"irradiance under a moon", {}, {plain, total, far}};
+
+  SilentProgress silent;
+  const BakeConfig config = test::smallEarth(4);
+  const Sky sky(bakeAtmosphere(config, 0, silent).file);
+  const MethodValues bake = evaluateBake(sky, queries);
+  ReferenceSettings settings;
+  settings.paths = 1024;
+  settings.cache_directory.clear();
+  const ReferenceValues reference = computeReferenceValues(config.atmosphere, queries, settings, silent);
+  for (int c = 0; c < config.atmosphere.channelCount(); ++c) {
+    // A moon 5 deg away hides the sun from nowhere: the plain lookup, and
+    // (each query's paths seeded by its key) the plain value within the
+    // noise: 4 standard errors of the difference of two estimates.
+    EXPECT_EQ(bake.irradiance[2][c], bake.irradiance[0][c]) << c;
+    const CachedReference &r_plain = reference.irradiance[0], &r_far = reference.irradiance[2];
+    EXPECT_NEAR(r_far.value[c], r_plain.value[c], 4.0 * std::hypot(r_far.standard_error[c], r_plain.standard_error[c]))
+        << c;
+    // Totality: between 1e-5 and 1e-2 of the plain sky's irradiance in both
+    // (as the zenith radiance above; 1024 paths estimate it to some 10 %).
+    for (double ratio : {double(bake.irradiance[1][c]) / bake.irradiance[0][c],
+                         reference.irradiance[1].value[c] / reference.irradiance[0].value[c]}) {
+      EXPECT_GT(ratio, 1e-5) << c;
+      EXPECT_LT(ratio, 1e-2) << c;
+    }
+  }
 }
 
 }  // namespace

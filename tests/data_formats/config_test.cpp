@@ -47,10 +47,25 @@ TEST(Config, BuiltinEarthHasBrunetonValues) {
 }
 
 TEST(Config, PresetsLoad) {
-  for (const char* name : {"earth", "earth_hazy", "mars", "earth_spectral", "earth_colour"}) {
+  for (const char* name : {"earth", "earth_hazy", "mars", "earth_spectral", "earth_colour", "earth_twilight"}) {
     const BakeConfig c = loadConfigFile(std::string(SKYBAKE_SOURCE_DIR) + "/data_formats/presets/" + name + ".toml");
     EXPECT_EQ(c.name, name);
   }
+}
+
+// The twilight preset is the built-in Earth with twice its sun and view-sun
+// axes and 6 orders, nothing else: the two files cannot drift apart.
+TEST(Config, TwilightPresetIsTheBuiltInEarthWithFinerSunAxesAndMoreOrders) {
+  BakeConfig twilight = loadConfigFile(std::string(SKYBAKE_SOURCE_DIR) + "/data_formats/presets/earth_twilight.toml");
+  const BakeConfig earth = builtinEarthConfig();
+  EXPECT_EQ(twilight.sizes.scattering_mu_s, 2 * earth.sizes.scattering_mu_s);
+  EXPECT_EQ(twilight.sizes.scattering_nu, 2 * earth.sizes.scattering_nu);
+  EXPECT_EQ(twilight.bake.orders, 6);
+  twilight.name = earth.name;
+  twilight.sizes.scattering_mu_s = earth.sizes.scattering_mu_s;
+  twilight.sizes.scattering_nu = earth.sizes.scattering_nu;
+  twilight.bake.orders = earth.bake.orders;
+  EXPECT_EQ(configToToml(twilight), configToToml(earth));
 }
 
 TEST(Config, CanonicalTomlRoundTripsExactly) {
