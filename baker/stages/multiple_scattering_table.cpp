@@ -6,6 +6,7 @@
 #include "baker/stages/row_sun_texels.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/ray_quadrature.h"
+#include "runtime/table_sampler.h"
 
 namespace skybake {
 namespace {
@@ -69,12 +70,19 @@ void interpolateAtNode(const Texture4D& density, const RayNode& n, std::vector<S
   }
 }
 
-Spectrum samplePlane(const std::vector<Spectrum>& plane, int nu_size, const AxisLerp& mu_s, const AxisLerp& nu) {
+// The plane at a sun (mu_s) and nu, blended across mu_s as `blend` says.
+Spectrum samplePlane(const std::vector<Spectrum>& plane, int nu_size, const AxisLerp& mu_s, const AxisLerp& nu,
+                     Blend blend) {
   auto at = [&](int i_mu_s, int i_nu) -> const Spectrum& {
     return plane[static_cast<size_t>(i_mu_s) * nu_size + i_nu];
   };
-  const Spectrum a = at(mu_s.i0, nu.i0) + (at(mu_s.i1, nu.i0) - at(mu_s.i0, nu.i0)) * mu_s.w1;
-  const Spectrum b = at(mu_s.i0, nu.i1) + (at(mu_s.i1, nu.i1) - at(mu_s.i0, nu.i1)) * mu_s.w1;
+  if (blend == Blend::Linear) {
+    const Spectrum a = at(mu_s.i0, nu.i0) + (at(mu_s.i1, nu.i0) - at(mu_s.i0, nu.i0)) * mu_s.w1;
+    const Spectrum b = at(mu_s.i0, nu.i1) + (at(mu_s.i1, nu.i1) - at(mu_s.i0, nu.i1)) * mu_s.w1;
+    return a + (b - a) * nu.w1;
+  }
+  const Spectrum a = blendGeometricWhereSteep(at(mu_s.i0, nu.i0), at(mu_s.i1, nu.i0), mu_s.w1);
+  const Spectrum b = blendGeometricWhereSteep(at(mu_s.i0, nu.i1), at(mu_s.i1, nu.i1), mu_s.w1);
   return a + (b - a) * nu.w1;
 }
 
@@ -94,6 +102,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
   const ScatteringMuSCoordMap density_mu_s_coord =
       ScatteringMuSCoordMap::of(density_sampler.domain(), density_sizes.mu_s);
   const std::vector<double> texel_mu_s = scatteringTexelMuS(sampler.domain(), s);
+  const bool own_texels = &density_sampler == &sampler;
   constexpr double kBroad = MultipleScatteringPhase::kBroad;
   Texture4D table(s.r, s.mu, s.mu_s, s.nu);
 #pragma omp parallel
@@ -102,6 +111,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
     std::vector<std::vector<Spectrum>> planes;  // one per node
     RowSunTexels suns;
     std::vector<AxisLerp> density_nu;   // per sun: nu is constant along a straight ray, so is its interpolation
+    std::vector<double> mu_s_at_node;   // per sun: its cosine at the current node
     std::vector<double> mu_s_position;  // per sun: its coordinate on the density table at the current node
     // Per sun, the density integrated along the ray times the broad and the
     // peaked part of the shape at each node: the shape at the node is
@@ -121,6 +131,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
         for (size_t i = 0; i < count; ++i) density_nu[i] = axisLerpNu((suns.nu[i] + 1.0) * 0.5, density_sizes.nu);
         broad.assign(count, Spectrum(0.0f));
         peaked.assign(count, Spectrum(0.0f));
+        mu_s_at_node.resize(count);
         mu_s_position.resize(count);
         const double* sun_mu_s = suns.mu_s.data();
         const double* sun_nu = suns.nu.data();
@@ -133,12 +144,13 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
           // without table reads, which vectorizes.
 #pragma omp simd
           for (size_t i = 0; i < count; ++i) {
-            const double mu_s_at_node = clampCosine((row.r * sun_mu_s[i] + n.t * sun_nu[i]) / n.r);
-            mu_s_position[i] = density_mu_s_coord(mu_s_at_node);
+            mu_s_at_node[i] = clampCosine((row.r * sun_mu_s[i] + n.t * sun_nu[i]) / n.r);
+            mu_s_position[i] = density_mu_s_coord(mu_s_at_node[i]);
           }
           for (size_t i = 0; i < count; ++i) {
             const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(mu_s_position[i], density_sizes.mu_s);
-            const Spectrum value = samplePlane(plane, density_sizes.nu, mu_s_lerp, density_nu[i]);
+            const Blend blend = own_texels ? Blend::Linear : radianceBlend(mu_s_at_node[i]);
+            const Spectrum value = samplePlane(plane, density_sizes.nu, mu_s_lerp, density_nu[i], blend);
             broad[i] += value * light;
             peaked[i] += value * light_peaked;
           }
