@@ -45,4 +45,14 @@ inline BakeConfig smallEarth(int orders) {
   return c;
 }
 
+// smallEarth with the scattering tables' sizes given.
+inline BakeConfig smallEarthWithScattering(int orders, int r, int mu, int mu_s, int nu) {
+  BakeConfig c = smallEarth(orders);
+  c.sizes.scattering_r = r;
+  c.sizes.scattering_mu = mu;
+  c.sizes.scattering_mu_s = mu_s;
+  c.sizes.scattering_nu = nu;
+  return c;
+}
+
 }  // namespace skybake::test

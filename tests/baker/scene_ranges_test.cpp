@@ -22,14 +22,7 @@ constexpr double kDeg = radiansFromDegrees(1.0);
 
 // Earth at an eighth of the default 4D texels: whole-domain and narrowed
 // bakes of it take about a second each on 2 cores.
-BakeConfig testEarth() {
-  BakeConfig c = test::smallEarth(4);
-  c.sizes.scattering_r = 16;
-  c.sizes.scattering_mu = 64;
-  c.sizes.scattering_mu_s = 16;
-  c.sizes.scattering_nu = 8;
-  return c;
-}
+BakeConfig testEarth() { return test::smallEarthWithScattering(4, 16, 64, 16, 8); }
 
 BakeConfig groundScene() {
   BakeConfig c = testEarth();

@@ -157,11 +157,7 @@ TEST(SliceTail, ScaleAtInterpolatesBetweenTheSlices) {
 TEST(SliceTail, FourOrdersAndTheTailComeNearTwelveOrdersInAstronomicalTwilight) {
   constexpr double kAstronomicalRmsTolerance = 0.09;
   constexpr double kDayTolerance = 5e-4;
-  BakeConfig config = test::smallEarth(4);
-  config.sizes.scattering_mu_s = 36;
-  config.sizes.scattering_r = 16;
-  config.sizes.scattering_mu = 64;
-  config.sizes.scattering_nu = 8;
+  BakeConfig config = test::smallEarthWithScattering(4, 16, 64, 36, 8);
   SilentProgress silent;
   const Sky four(bakeAtmosphere(config, 0, silent).file);
   config.bake.orders = 12;
