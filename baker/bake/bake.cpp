@@ -113,13 +113,9 @@ std::optional<SliceTail> addTailEstimate(const TableSampler& sampler, const std:
   if (!tail.applied) return std::nullopt;
   std::optional<SliceTail> slices(std::in_place, sampler, convergence.sliceMeans(2), convergence.sliceMeans(1),
                                   convergence.sliceMeans(0), tail.ratio, kMaxTailRatio);
-  const ScatteringSizes& s = sampler.scatteringSizes();
-  std::vector<Spectrum> slice_scale(static_cast<size_t>(s.r) * s.mu_s);
-  for (int i_r = 0; i_r < s.r; ++i_r)
-    for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) slice_scale[i_r * s.mu_s + i_mu_s] = slices->scale(i_r, i_mu_s);
-  addReshaped(sampler, TexelLayout::Scattering, last_radiance, last_shape, stored_shape, slice_scale,
+  addReshaped(sampler, TexelLayout::Scattering, last_radiance, last_shape, stored_shape, slices->scales(),
               tables.multiple_scattering);
-  addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, slice_scale,
+  addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, slices->scales(),
               tables.multiple_density);
   // The sky irradiance holds orders 1 .. N-1; the rest follow the same series
   // from order N - 1 on, at each texel's altitude and sun.
@@ -319,14 +315,8 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                         stored_shape, delta_irradiance, tables, report.tail);
     if (scene && slice_tail) {
       // The scene's texels take the whole domain's tail at their altitude and sun.
-      const AtmosphereDomain& sd = scene->sampler.domain();
-      const ScatteringSizes& ss = scene->sampler.scatteringSizes();
-      std::vector<Spectrum> scene_scale(static_cast<size_t>(ss.r) * ss.mu_s);
-      for (int i_r = 0; i_r < ss.r; ++i_r)
-        for (int i_mu_s = 0; i_mu_s < ss.mu_s; ++i_mu_s)
-          scene_scale[i_r * ss.mu_s + i_mu_s] =
-              slice_tail->scaleAt(rFromScatteringTexel(sd, ss, i_r), muSFromScatteringTexel(sd, ss, i_mu_s));
-      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape, scene_scale, scene->sum);
+      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape,
+                  slice_tail->scalesAtSlicesOf(scene->sampler), scene->sum);
     }
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";

@@ -31,7 +31,6 @@ void OrderConvergence::add(const std::vector<SpectrumD>& slice_means) {
   if (total_.empty()) total_.assign(slice_means.size(), SpectrumD(0.0));
   if (slice_means.size() != total_.size()) throw Error(ErrorKind::Internal, "OrderConvergence: slices differ");
   for (size_t i = 0; i < total_.size(); ++i) total_[i] += slice_means[i];
-  last_ = slice_means;
   history_.push_back(slice_means);
 }
 
@@ -42,14 +41,16 @@ const std::vector<SpectrumD>& OrderConvergence::sliceMeans(size_t from_last) con
 
 SliceShare OrderConvergence::worstLastShare() const {
   SliceShare worst;
+  if (history_.empty()) return worst;
+  const std::vector<SpectrumD>& last = history_.back();
   const ScatteringSizes& s = sampler_.scatteringSizes();
-  for (size_t i = 0; i < last_.size(); ++i) {
+  for (size_t i = 0; i < last.size(); ++i) {
     for (int c = 0; c < channels_; ++c) {
       double share = 0.0;
-      if (!std::isfinite(total_[i][c]) || !std::isfinite(last_[i][c])) {
+      if (!std::isfinite(total_[i][c]) || !std::isfinite(last[i][c])) {
         share = std::numeric_limits<double>::infinity();
       } else if (total_[i][c] > 0.0) {
-        share = last_[i][c] / total_[i][c];
+        share = last[i][c] / total_[i][c];
       }
       if (share <= worst.share) continue;
       const int i_r = static_cast<int>(i / s.mu_s);

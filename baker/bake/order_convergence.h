@@ -38,13 +38,11 @@ class OrderConvergence {
   // The slice means of the order `from_last` orders before the last added
   // (0: the last); needs that many orders added before it.
   const std::vector<SpectrumD>& sliceMeans(size_t from_last) const;
-  size_t orderCount() const { return history_.size(); }
 
  private:
   const TableSampler& sampler_;
   int channels_;
   std::vector<SpectrumD> total_;
-  std::vector<SpectrumD> last_;
   std::vector<std::vector<SpectrumD>> history_;  // every order's slice means, first order first
 };
 

@@ -28,18 +28,12 @@ double relaxedSeriesSum(double last_ratio, double table_ratio, double relaxation
   return sum;
 }
 
-// A continuous texel index from a texture coordinate, clamped to the texels.
-double texelIndex(double coord, int size) { return std::clamp(coord * size - 0.5, 0.0, size - 1.0); }
-
 }  // namespace
 
 SliceTail::SliceTail(const TableSampler& sampler, const std::vector<SpectrumD>& before_previous,
                      const std::vector<SpectrumD>& previous, const std::vector<SpectrumD>& last,
                      const Spectrum& table_ratio, double max_ratio)
-    : sampler_(sampler),
-      r_size_(sampler.scatteringSizes().r),
-      mu_s_size_(sampler.scatteringSizes().mu_s),
-      scale_(last.size(), Spectrum(0.0f)) {
+    : sampler_(sampler), scale_(last.size(), Spectrum(0.0f)) {
   for (size_t i = 0; i < last.size(); ++i) {
     for (int c = 0; c < kMaxChannels; ++c) {
       const double r_table = table_ratio[c];
@@ -63,13 +57,22 @@ SliceTail::SliceTail(const TableSampler& sampler, const std::vector<SpectrumD>& 
 
 Spectrum SliceTail::scaleAt(double r_m, double mu_s) const {
   const AtmosphereDomain& d = sampler_.domain();
-  const double x_r = texelIndex(scatteringCoordR(d, r_size_, d.distanceToHorizon(r_m)), r_size_);
-  const double x_s = texelIndex(scatteringCoordMuS(d, mu_s_size_, mu_s), mu_s_size_);
-  const int r0 = std::min(static_cast<int>(x_r), r_size_ - 1), s0 = std::min(static_cast<int>(x_s), mu_s_size_ - 1);
-  const int r1 = std::min(r0 + 1, r_size_ - 1), s1 = std::min(s0 + 1, mu_s_size_ - 1);
-  const float fr = static_cast<float>(x_r - r0), fs = static_cast<float>(x_s - s0);
-  return (scale(r0, s0) * (1.0f - fs) + scale(r0, s1) * fs) * (1.0f - fr) +
-         (scale(r1, s0) * (1.0f - fs) + scale(r1, s1) * fs) * fr;
+  const ScatteringSizes& s = sampler_.scatteringSizes();
+  const AxisLerp r = axisLerpFromTextureCoord(scatteringCoordR(d, s.r, d.distanceToHorizon(r_m)), s.r);
+  const AxisLerp m = axisLerpFromTextureCoord(scatteringCoordMuS(d, s.mu_s, mu_s), s.mu_s);
+  return (scale(r.i0, m.i0) * (1.0f - m.w1) + scale(r.i0, m.i1) * m.w1) * (1.0f - r.w1) +
+         (scale(r.i1, m.i0) * (1.0f - m.w1) + scale(r.i1, m.i1) * m.w1) * r.w1;
+}
+
+std::vector<Spectrum> SliceTail::scalesAtSlicesOf(const TableSampler& other) const {
+  const AtmosphereDomain& d = other.domain();
+  const ScatteringSizes& s = other.scatteringSizes();
+  std::vector<Spectrum> out(static_cast<size_t>(s.r) * s.mu_s);
+  for (int i_r = 0; i_r < s.r; ++i_r)
+    for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s)
+      out[static_cast<size_t>(i_r) * s.mu_s + i_mu_s] =
+          scaleAt(rFromScatteringTexel(d, s, i_r), muSFromScatteringTexel(d, s, i_mu_s));
+  return out;
 }
 
 float SliceTail::largestScale() const {

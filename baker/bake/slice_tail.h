@@ -37,17 +37,23 @@ class SliceTail {
 
   // The remaining orders as a multiple of the last computed one, at slice
   // (i_r, i_mu_s) of the sampler the tail was made on.
-  const Spectrum& scale(int i_r, int i_mu_s) const { return scale_[static_cast<size_t>(i_r) * mu_s_size_ + i_mu_s]; }
+  const Spectrum& scale(int i_r, int i_mu_s) const {
+    return scale_[static_cast<size_t>(i_r) * sampler_.scatteringSizes().mu_s + i_mu_s];
+  }
+  // Every slice's, entry i_r * mu_s_size + i_mu_s (addReshaped's slice_scale).
+  const std::vector<Spectrum>& scales() const { return scale_; }
   // The same at any radius (m) and sun cosine: bilinear between the slices
   // in the table's coordinates, clamped to its range (other tables' texels:
   // a narrowed scene's, the irradiance table's).
   Spectrum scaleAt(double r_m, double mu_s) const;
+  // scaleAt at the slices of another sampler's tables (a narrowed scene's),
+  // laid out as scales().
+  std::vector<Spectrum> scalesAtSlicesOf(const TableSampler& other) const;
   // The largest multiple over every slice and channel (the bake report's).
   float largestScale() const;
 
  private:
   const TableSampler& sampler_;
-  int r_size_, mu_s_size_;
   std::vector<Spectrum> scale_;
 };
 

@@ -76,13 +76,8 @@ Spectrum samplePlane(const std::vector<Spectrum>& plane, int nu_size, const Axis
   auto at = [&](int i_mu_s, int i_nu) -> const Spectrum& {
     return plane[static_cast<size_t>(i_mu_s) * nu_size + i_nu];
   };
-  if (blend == Blend::Linear) {
-    const Spectrum a = at(mu_s.i0, nu.i0) + (at(mu_s.i1, nu.i0) - at(mu_s.i0, nu.i0)) * mu_s.w1;
-    const Spectrum b = at(mu_s.i0, nu.i1) + (at(mu_s.i1, nu.i1) - at(mu_s.i0, nu.i1)) * mu_s.w1;
-    return a + (b - a) * nu.w1;
-  }
-  const Spectrum a = blendGeometricWhereSteep(at(mu_s.i0, nu.i0), at(mu_s.i1, nu.i0), mu_s.w1);
-  const Spectrum b = blendGeometricWhereSteep(at(mu_s.i0, nu.i1), at(mu_s.i1, nu.i1), mu_s.w1);
+  const Spectrum a = blendAcross(at(mu_s.i0, nu.i0), at(mu_s.i1, nu.i0), mu_s.w1, blend);
+  const Spectrum b = blendAcross(at(mu_s.i0, nu.i1), at(mu_s.i1, nu.i1), mu_s.w1, blend);
   return a + (b - a) * nu.w1;
 }
 

@@ -56,21 +56,10 @@ std::string samplingSuffix(double sun_zenith_deg) {
   return referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(sun_zenith_deg, 0.0).z) ? " lit-air" : "";
 }
 
-}  // namespace
-
-std::string radianceKey(const RadianceQuery& q) {
-  const std::string key = fmt::format("r {} {} {} {} {}{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
-                                      q.view_azimuth_deg, q.distance_m, samplingSuffix(q.sun_zenith_deg));
-  // An eclipse's value is not the plain sky's: its key names the moon.
-  return q.moon.present() ? fmt::format("{} moon {} {}", key, q.moon.separation_deg, q.moon.angular_radius_deg) : key;
+// An eclipse's value is not the plain sky's: its key names the moon.
+std::string withMoon(const std::string& key, const MoonQuery& moon) {
+  return moon.present() ? fmt::format("{} moon {} {}", key, moon.separation_deg, moon.angular_radius_deg) : key;
 }
-
-std::string irradianceKey(const IrradianceQuery& q) {
-  const std::string key = fmt::format("e {} {}{}", q.altitude_m, q.sun_zenith_deg, samplingSuffix(q.sun_zenith_deg));
-  return q.moon.present() ? fmt::format("{} moon {} {}", key, q.moon.separation_deg, q.moon.angular_radius_deg) : key;
-}
-
-namespace {
 
 // The query's moon seen from the camera: turned from the sun toward +y,
 // perpendicular to the sun's x-z plane. None for a query without one.
@@ -82,6 +71,16 @@ Moon moonOf(const glm::dvec3& camera, const glm::dvec3& sun, const MoonQuery& q)
 }
 
 }  // namespace
+
+std::string radianceKey(const RadianceQuery& q) {
+  return withMoon(fmt::format("r {} {} {} {} {}{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
+                              q.view_azimuth_deg, q.distance_m, samplingSuffix(q.sun_zenith_deg)),
+                  q.moon);
+}
+
+std::string irradianceKey(const IrradianceQuery& q) {
+  return withMoon(fmt::format("e {} {}{}", q.altitude_m, q.sun_zenith_deg, samplingSuffix(q.sun_zenith_deg)), q.moon);
+}
 
 QueryGeometry geometryOf(const AtmosphereParameters& a, const RadianceQuery& q) {
   QueryGeometry g{cameraAtAltitude(a.bottom_radius_m, q.altitude_m),
