@@ -116,8 +116,8 @@ struct TextureSizes {
   int irradiance_r = 16;
   int scattering_r = 32;
   int scattering_mu = 128;  // even: half for rays that hit the ground
-  int scattering_mu_s = 36;
-  int scattering_nu = 8;
+  int scattering_mu_s = 41;
+  int scattering_nu = 16;
   // [resolution] iteration, r, mu, mu_s and nu: the 4D sizes the orders
   // iterate on over the whole domain when a [scene] narrows the stored
   // tables (iterationTextureSizes in baker/bake/bake_policy.h). Absent: the default
@@ -130,7 +130,7 @@ struct TextureSizes {
 enum class StoragePrecision { Float, Half };
 
 struct BakeSettings {
-  int orders = 4;  // scattering orders: 1 = single scattering only
+  int orders = 6;  // scattering orders: 1 = single scattering only
   // orders = "auto": compute orders until the last one adds less than
   // order_tolerance of the total so far (mean radiance over the scattering
   // table, worst channel), at most max_orders. Optically thick atmospheres

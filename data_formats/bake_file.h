@@ -22,9 +22,25 @@ namespace skybake {
 // versions they do not know. Version 3 names the optical-depth part for what
 // it holds and states everything a reader needs in typed attributes; version
 // 4 states what the channels hold (skybake:channels: wavelengths or CIE XYZ);
-// version 3 files (always wavelengths) and version 2 files are still read
-// (FORMAT.md, "Older versions").
-inline constexpr int kBakeFormatVersion = 4;
+// version 5 spreads the sun axis's texels split at the horizon
+// (SunAxisMapping::SplitAtHorizon). Versions 2 to 4 (Bruneton's sun axis;
+// 2 and 3 always wavelengths) are still read (FORMAT.md, "Older versions").
+inline constexpr int kBakeFormatVersion = 5;
+// The first format version whose sun axis is SunAxisMapping::SplitAtHorizon.
+inline constexpr int kFirstSplitSunAxisFormatVersion = 5;
+
+// The sun axis of a file of this format version.
+inline SunAxisMapping sunAxisOfFormatVersion(int format_version) {
+  return format_version >= kFirstSplitSunAxisFormatVersion ? SunAxisMapping::SplitAtHorizon
+                                                           : SunAxisMapping::DistanceToTop;
+}
+// The version a file is written at: the current one, or for tables on
+// Bruneton's sun axis (a bake read from an older file and written again)
+// the last version with that axis, so that a reader maps them as they were
+// baked.
+inline int formatVersionToWrite(SunAxisMapping sun_axis) {
+  return sun_axis == SunAxisMapping::SplitAtHorizon ? kBakeFormatVersion : kFirstSplitSunAxisFormatVersion - 1;
+}
 inline constexpr int kOldestReadBakeFormatVersion = 2;
 
 struct BakeTables {

@@ -21,6 +21,14 @@ double muFromDistanceToTop(double r, double dist, double rho, double H) {
 
 double muSFromUnitCoord(const AtmosphereDomain& d, double x) {
   const MuSDistanceRange range = MuSDistanceRange::of(d);
+  const MuSUnitCoordMap map = MuSUnitCoordMap::of(d);
+  if (map.below_share > 0.0) {
+    if (x < map.below_share) {
+      return clampCosine(d.mu_s_min * SunBelowHorizonAxis::sineFromDepth(1.0 - x / map.below_share));
+    }
+    // Bruneton's coordinate over the day.
+    x = map.day_coord_at_horizon + (x - map.below_share) / (1.0 - map.below_share) * (1.0 - map.day_coord_at_horizon);
+  }
   const double A = range.fraction(d, d.mu_s_min);
   const double a = (A - x * A) / (1.0 + x * A);
   const double dist = range.d_min + std::min(a, A) * (range.d_max - range.d_min);

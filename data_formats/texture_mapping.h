@@ -6,18 +6,53 @@
 //    and maximum for that r; in 4D, rays that hit the ground take the lower
 //    half of the mu axis and the others the upper half, so no lookup ever
 //    interpolates across the horizon;
-//  - mu_s maps a distance-based coordinate that puts texels near the horizon
-//    and stops at mu_s_min;
+//  - mu_s: for a sun range that reaches below the horizon, half the axis
+//    holds the suns below it, spaced by the sine of their depression down to
+//    mu_s_min, and the other half the day, by Bruneton's distance-based
+//    coordinate (SunAxisMapping; files before format version 5 use that
+//    coordinate alone);
 //  - nu is linear in [-1, 1].
 // Texel centres land exactly on the domain ends (textureCoordFromUnitRange).
 // Lookups: the forward maps (inline, hot in the runtime). Bakes: the inverse
 // maps from a texel index to the configuration at its centre.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "atmosphere_parameters.h"
 #include "ray_sphere.h"
 
 namespace skybake {
+
+// How the sun axis of the 4D and irradiance tables spreads its texels.
+enum class SunAxisMapping {
+  // Bruneton's alone: (1 - a/A) / (1 + a) of the distance to the top toward
+  // the sun. Dense near the horizon, sparse deep below it (for the built-in
+  // Earth's 36 texels down to 108 deg: 108, 105, 102.7, 100.8 deg), where the
+  // sky falls tenfold from one texel to the next. Bake files before format
+  // version 5.
+  DistanceToTop,
+  // For a sun range reaching below the horizon: the first
+  // kSunAxisBelowHorizonShare of the axis below it, by the sine of the sun's
+  // depression (SunBelowHorizonAxis), the rest the day by Bruneton's
+  // coordinate over the day alone. Format version 5 on.
+  SplitAtHorizon,
+};
+
+// The share of the sun axis below the horizon (SplitAtHorizon): 18 of the
+// 40 intervals between the default 41 texels, so that the default axis has
+// a texel on the horizon, where the lookups' blend across mu_s changes
+// (radianceBlend). For the built-in Earth's 18 deg below the horizon that
+// takes the deepest spacing from 3 deg (DistanceToTop, 36 texels) to
+// 1.25 deg, while the day's 22 intervals keep it as finely sampled as
+// before (docs/ERROR_VS_TIME.md, "Resolution in deep twilight").
+inline constexpr double kSunAxisBelowHorizonShare = 18.0 / 40.0;
+// The spacing of the below-horizon texels at the horizon relative to their
+// mean; it grows linearly to 2 minus this at the lowest sun. Civil twilight,
+// where the sky's colour turns fastest, gets 0.75 deg texels on the default
+// axis, the deep end 1.25 deg.
+inline constexpr double kSunAxisHorizonSpacing = 0.75;
 
 // The part of the atmosphere's geometry that the parameterization needs, and
 // the part of it the 4D tables cover.
@@ -41,6 +76,8 @@ struct AtmosphereDomain {
   // first half) as well as the sky (second half), or only the sky (all of
   // it): [scene] views_below_horizon.
   bool scattering_ground_views = true;
+  // The sun axis's texel spacing (a bake file states it by its format version).
+  SunAxisMapping sun_axis = SunAxisMapping::SplitAtHorizon;
   bool operator==(const AtmosphereDomain&) const = default;
 
   // The whole domain: every altitude, every sun up to sun.max_zenith_deg.
@@ -150,26 +187,60 @@ struct MuSDistanceRange {
   }
 };
 
+// The unit coordinate of the suns below the horizon (SplitAtHorizon): with
+// t = mu_s / mu_s_min (the sine of the depression over the lowest sun's; 0
+// at the horizon, 1 at mu_s_min) and s in [0, 1] from the horizon down,
+// t = c s + (1 - c) s^2 for c = kSunAxisHorizonSpacing.
+struct SunBelowHorizonAxis {
+  static double depthFromSine(double t) {  // s for t in [0, 1]; stable as c -> 1
+    constexpr double c = kSunAxisHorizonSpacing;
+    return 2.0 * t / (c + std::sqrt(c * c + 4.0 * (1.0 - c) * t));
+  }
+  static double sineFromDepth(double s) {
+    constexpr double c = kSunAxisHorizonSpacing;
+    return c * s + (1.0 - c) * s * s;
+  }
+};
+
 // The sun coordinate over the whole sun range: 1 at the zenith, 0 at
-// mu_s_min. a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) / (1 + a)
-// compresses the high sun and spreads the horizon, where the sky changes
-// fastest.
-// muSUnitCoord with the domain's constants worked out once and no branch, so
-// that loops over many suns vectorize.
+// mu_s_min. Bruneton's: a = 0 at the zenith, a = A at mu_s_min; (1 - a/A) /
+// (1 + a) compresses the high sun and spreads the horizon, where the sky
+// changes fastest. SplitAtHorizon puts that over the day alone (from its
+// value day_coord_at_horizon at the horizon to 1) in the upper
+// 1 - below_share of the axis, and the suns below the horizon in the lower
+// below_share (SunBelowHorizonAxis). below_share is 0 for DistanceToTop and
+// for a sun range that stays above the horizon.
+// muSUnitCoord with the domain's constants worked out once.
 struct MuSUnitCoordMap {
   double bottom_radius_m, top_radius_m;
   double d_min, inverse_d_span;
   double inverse_A;
   double defined;  // 1, or 0 where the sun range is empty (A = 0): every coordinate is 0 then
+  double below_share;
+  double day_coord_at_horizon;
+  double inverse_mu_s_min;  // 1 / mu_s_min (< 0) where below_share > 0
   static MuSUnitCoordMap of(const AtmosphereDomain& d) {
     const MuSDistanceRange range = MuSDistanceRange::of(d);
     const double A = range.fraction(d, d.mu_s_min);
-    return {d.bottom_radius_m,       d.top_radius_m,     range.d_min, 1.0 / (range.d_max - range.d_min),
-            A > 0.0 ? 1.0 / A : 0.0, A > 0.0 ? 1.0 : 0.0};
+    const bool split = d.sun_axis == SunAxisMapping::SplitAtHorizon && d.mu_s_min < 0.0 && A > 1.0;
+    return {d.bottom_radius_m,
+            d.top_radius_m,
+            range.d_min,
+            1.0 / (range.d_max - range.d_min),
+            A > 0.0 ? 1.0 / A : 0.0,
+            A > 0.0 ? 1.0 : 0.0,
+            split ? kSunAxisBelowHorizonShare : 0.0,
+            split ? 0.5 * (1.0 - 1.0 / A) : 0.0,
+            split ? 1.0 / d.mu_s_min : 0.0};
   }
   double operator()(double mu_s) const {
     const double a = (distanceToOuterSphere(bottom_radius_m, mu_s, top_radius_m) - d_min) * inverse_d_span;
-    return defined * std::max(1.0 - a * inverse_A, 0.0) / (1.0 + a);
+    const double bruneton = defined * std::max(1.0 - a * inverse_A, 0.0) / (1.0 + a);
+    if (below_share == 0.0) return bruneton;
+    if (mu_s >= 0.0) {
+      return below_share + (1.0 - below_share) * (bruneton - day_coord_at_horizon) / (1.0 - day_coord_at_horizon);
+    }
+    return below_share * (1.0 - SunBelowHorizonAxis::depthFromSine(std::min(mu_s * inverse_mu_s_min, 1.0)));
   }
 };
 inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) { return MuSUnitCoordMap::of(d)(mu_s); }

@@ -99,6 +99,10 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   b.mu_s_map[1] = static_cast<float>(unit.inverse_d_span);
   b.mu_s_map[2] = static_cast<float>(unit.inverse_A);
   b.mu_s_map[3] = static_cast<float>(unit.defined);
+  b.mu_s_below[0] = static_cast<float>(unit.below_share);
+  b.mu_s_below[1] = static_cast<float>(unit.day_coord_at_horizon);
+  b.mu_s_below[2] = static_cast<float>(unit.inverse_mu_s_min);
+  b.mu_s_below[3] = static_cast<float>(kSunAxisHorizonSpacing);
   // As Sky's constructor derives its baked sun range.
   b.sun_angles[0] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_max_deg)));
   b.sun_angles[1] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_min_deg)));

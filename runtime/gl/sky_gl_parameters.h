@@ -22,6 +22,7 @@ struct SkyUniformBlock {
   float radii_m[4];                // bottom, top, H (m), sun angular radius (rad)
   float scattering_domain[4];      // rho min, rho max (m), sun coordinate min, 1 / its span
   float mu_s_map[4];               // d_min (m), 1 / (d_max - d_min) (m^-1), 1 / A, defined
+  float mu_s_below[4];             // below-horizon share, day coordinate at the horizon, 1 / mu_s_min, spacing c
   float sun_angles[4];             // baked mu_s min, max; Mie g; multiple-scattering g_ms
   float phase[4];                  // Cornette-Shanks normalisations for g, g_ms (sr^-1); sun disk chord^2
   int32_t scattering_size[4];      // r, mu, mu_s, nu texels
@@ -44,7 +45,7 @@ struct SkyUniformBlock {
   float layer_shape[3 * kMaxGlDensityLayers][4];  // width (m), exp_term, exp_scale (m^-1), linear_term (m^-1)
   float layer_constant[3 * kMaxGlDensityLayers][4];
 };
-static_assert(sizeof(SkyUniformBlock) == (22 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
+static_assert(sizeof(SkyUniformBlock) == (23 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
 
 // The block's values for a loaded bake.
 SkyUniformBlock skyUniformBlock(const Sky& sky);

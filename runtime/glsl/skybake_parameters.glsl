@@ -35,6 +35,11 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   // The unit sun coordinate's constants: x d_min (m), y 1 / (d_max - d_min)
   // (m^-1), z 1 / A, w 1 (0 where the sun range is empty).
   vec4 skybake_mu_s_map;
+  // The split of the sun axis at the horizon (SunAxisMapping): x the share of
+  // the axis below the horizon (0: Bruneton's coordinate alone), y that
+  // coordinate at the horizon, z 1 / mu_s_min, w the spacing c at the
+  // horizon (SunBelowHorizonAxis).
+  vec4 skybake_mu_s_below;
   // x, y: the lowest and highest baked sun as zenith cosines (a sun outside
   // is integrated at the nearest; x is -1, the nadir, where the tables go on
   // to every sun); z Mie phase g, w the multiple-scattering shape's g_ms.

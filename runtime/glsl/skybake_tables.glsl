@@ -170,11 +170,18 @@ vec4 skybakeTransmittanceToSun(float r, float mu_s) {
 
 // ---- scattering (4D) ----
 
-// The unit sun coordinate: 1 at the zenith, 0 at the lowest tabulated sun.
+// The unit sun coordinate: 1 at the zenith, 0 at the lowest tabulated sun
+// (MuSUnitCoordMap, SunBelowHorizonAxis).
 float skybakeMuSUnitCoord(float mu_s) {
   vec4 m = skybake_mu_s_map;
+  vec4 below = skybake_mu_s_below;
   float a = (skybakeDistanceToOuterSphere(skybake_radii_m.x, mu_s, skybake_radii_m.y) - m.x) * m.y;
-  return m.w * max(1.0 - a * m.z, 0.0) / (1.0 + a);
+  float bruneton = m.w * max(1.0 - a * m.z, 0.0) / (1.0 + a);
+  if (below.x == 0.0) return bruneton;
+  if (mu_s >= 0.0) return below.x + (1.0 - below.x) * (bruneton - below.y) / (1.0 - below.y);
+  float t = min(mu_s * below.z, 1.0);
+  float c = below.w;
+  return below.x * (1.0 - 2.0 * t / (c + sqrt(c * c + 4.0 * (1.0 - c) * t)));
 }
 
 SkybakeScatteringCoord skybakeScatteringCoord(float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {

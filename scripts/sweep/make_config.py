@@ -18,7 +18,7 @@ import tomli_w
 DEFAULT_RESOLUTION = {
     "transmittance": [256, 64],
     "irradiance": [64, 16],
-    "scattering": {"r": 32, "mu": 128, "mu_s": 36, "nu": 8},
+    "scattering": {"r": 32, "mu": 128, "mu_s": 41, "nu": 16},
 }
 # The smallest sizes the baker accepts: every axis needs two samples to
 # interpolate, and the view zenith (mu) two per half (above and below the

@@ -42,7 +42,7 @@ def test_missing_sizes_get_defaults_scaled_and_the_rest_is_kept(tmp_path):
     got = run(tmp_path, EARTH.read_text().replace("[resolution]", "[old_resolution]"), 2)
     with open(EARTH, "rb") as f:
         earth = tomllib.load(f)
-    assert got["resolution"]["scattering"] == {"r": 64, "mu": 256, "mu_s": 72, "nu": 16}
+    assert got["resolution"]["scattering"] == {"r": 64, "mu": 256, "mu_s": 82, "nu": 32}
     assert got["resolution"]["transmittance"] == [512, 128]
     # Everything but the name and sizes is the base's, value for value.
     for key, value in earth.items():

@@ -71,12 +71,12 @@ TEST(BakePolicy, SettledConfigKeepsOnlySunRangesThatNarrowTheAxis) {
   BakeConfig config = builtinEarthConfig();
   config.scene_ranges.altitude_m = std::array<double, 2>{0.0, 15000.0};
   config.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 106.0};
-  config.sizes.scattering_mu_s = 40;
+  config.sizes.scattering_mu_s = 44;
   const BakeConfig whole_sun = settledBakeConfig(config);
   EXPECT_FALSE(whole_sun.scene_ranges.sun_zenith_deg.has_value());
   EXPECT_EQ(whole_sun.scene_ranges.altitude_m, config.scene_ranges.altitude_m);
   ASSERT_TRUE(whole_sun.sizes.iteration.has_value());
-  EXPECT_EQ(*whole_sun.sizes.iteration, (std::array<int, 4>{32, 128, 40, 8}));
+  EXPECT_EQ(*whole_sun.sizes.iteration, (std::array<int, 4>{32, 128, 44, 16}));
   const AtmosphereDomain d = sceneDomain(whole_sun);
   EXPECT_EQ(d.scattering_mu_s_coord_min, 0.0);
   EXPECT_EQ(d.scattering_mu_s_coord_max, 1.0);
@@ -85,7 +85,7 @@ TEST(BakePolicy, SettledConfigKeepsOnlySunRangesThatNarrowTheAxis) {
   const BakeConfig narrow_sun = settledBakeConfig(config);
   EXPECT_EQ(narrow_sun.scene_ranges.sun_zenith_deg, config.scene_ranges.sun_zenith_deg);
   ASSERT_TRUE(narrow_sun.sizes.iteration.has_value());
-  EXPECT_EQ(*narrow_sun.sizes.iteration, (std::array<int, 4>{32, 128, 36, 8}));
+  EXPECT_EQ(*narrow_sun.sizes.iteration, (std::array<int, 4>{32, 128, 41, 16}));
 
   // An explicit iteration is kept; a config that narrows nothing is unchanged.
   config.sizes.iteration = std::array<int, 4>{16, 64, 16, 4};

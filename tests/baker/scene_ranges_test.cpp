@@ -82,10 +82,11 @@ TEST_F(SceneRangesTest, SkyExposesTheBakedRanges) {
 
 // Inside the ranges both bakes interpolate the same physics; they differ by
 // the whole-domain bake's interpolation error at these sizes, which sets the
-// tolerances: measured 0.57 % RMS and 3.7 % at worst (a low sun, near the
-// horizon) over these views, the narrowed tables being 4 to 8 times denser
-// in r; validation holds the default bake to 1 % (day) and 2 % (low sun)
-// RMS. A narrowed mapping off by one texel, or a sun axis whose horizon
+// tolerances: measured 0.72 % RMS and 5.6 % at worst (a low sun, near the
+// horizon, where the whole domain's 16 sun texels leave the day 8 of their
+// 15 intervals) over these views, the narrowed tables being 4 to 8 times
+// denser in r; validation holds the default bake to 1 % (day) and 2 % (low
+// sun) RMS. A narrowed mapping off by one texel, or a sun axis whose horizon
 // texel moved, gives tens of percent near the horizon.
 TEST_F(SceneRangesTest, LookupsInsideTheRangesMatchTheWholeDomainBake) {
   double sum_sq = 0.0;
@@ -114,7 +115,7 @@ TEST_F(SceneRangesTest, LookupsInsideTheRangesMatchTheWholeDomainBake) {
   const double rms = std::sqrt(sum_sq / n);
   RecordProperty("rms", std::to_string(rms));
   EXPECT_LT(rms, 0.01) << "worst " << worst;
-  EXPECT_LT(worst, 0.05);
+  EXPECT_LT(worst, 0.08);
 }
 
 // Outside the ranges the tables are read at their ends: a camera above the

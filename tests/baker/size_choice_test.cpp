@@ -34,12 +34,12 @@ TEST(SizeChoice, ScalesEveryDefaultSizeAsTheSweepDoes) {
   EXPECT_EQ(one.scattering_r, defaults.scattering_r);
   EXPECT_EQ(one.scattering_mu, defaults.scattering_mu);
   EXPECT_EQ(one.transmittance_mu, defaults.transmittance_mu);
-  // scripts/sweep/make_config.py at 0.75: 32 x 128 x 36 x 8 -> 24 x 96 x 27 x 6.
+  // scripts/sweep/make_config.py at 0.75: 32 x 128 x 41 x 16 -> 24 x 96 x 31 x 12.
   const TextureSizes s = scaledDefaultSizes(0.75);
   EXPECT_EQ(s.scattering_r, 24);
   EXPECT_EQ(s.scattering_mu, 96);
-  EXPECT_EQ(s.scattering_mu_s, 27);
-  EXPECT_EQ(s.scattering_nu, 6);
+  EXPECT_EQ(s.scattering_mu_s, 31);
+  EXPECT_EQ(s.scattering_nu, 12);
   EXPECT_EQ(s.irradiance_r, 12);
   // Tiny scales keep at least 2 texels per axis and an even mu of at least 4.
   const TextureSizes tiny = scaledDefaultSizes(0.01);

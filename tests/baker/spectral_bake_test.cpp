@@ -181,7 +181,7 @@ TEST_F(SpectralBakeTest, GroupsReadBackAreTheOrdinaryBakesReadBack) {
   }
 }
 
-TEST_F(SpectralBakeTest, FileHasOneChannelPerWavelengthAtFormatVersion4) {
+TEST_F(SpectralBakeTest, FileHasOneChannelPerWavelengthAtTheCurrentFormatVersion) {
   Imf::MultiPartInputFile file(path_->c_str());
   ASSERT_GE(file.parts(), 5);
   for (int p = 0; p < file.parts(); ++p) {
@@ -190,7 +190,7 @@ TEST_F(SpectralBakeTest, FileHasOneChannelPerWavelengthAtFormatVersion4) {
     for (auto it = h.channels().begin(); it != h.channels().end(); ++it) ++channels;
     EXPECT_EQ(channels, 6) << h.name();
     EXPECT_NE(h.channels().findChannel("650nm"), nullptr) << h.name();
-    EXPECT_EQ(h.typedAttribute<Imf::IntAttribute>(bake_file::kAttrFormatVersion).value(), 4);
+    EXPECT_EQ(h.typedAttribute<Imf::IntAttribute>(bake_file::kAttrFormatVersion).value(), kBakeFormatVersion);
     EXPECT_EQ(h.typedAttribute<Imf::StringAttribute>(bake_file::kAttrChannels).value(), "wavelengths");
     EXPECT_EQ(h.typedAttribute<Imf::StringAttribute>(bake_file::kAttrWavelengths).value(), "400 450 500 550 600 650");
   }

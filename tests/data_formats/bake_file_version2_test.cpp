@@ -27,8 +27,11 @@ TEST(BakeFileVersion2, WholeDomainFileReadsAsItsConfigSays) {
   EXPECT_EQ(bake.contents.atmosphere, config.atmosphere);
   EXPECT_EQ(bake.contents.sizes, config.sizes);
   EXPECT_EQ(bake.contents.outputs, config.scene);
-  // The stated ends are the whole domain's to rounding, and are read as them.
-  EXPECT_EQ(bake.contents.domain, AtmosphereDomain::fromParameters(config.atmosphere));
+  // The stated ends are the whole domain's to rounding, and are read as them,
+  // on Bruneton's sun axis.
+  AtmosphereDomain whole = AtmosphereDomain::fromParameters(config.atmosphere);
+  whole.sun_axis = SunAxisMapping::DistanceToTop;
+  EXPECT_EQ(bake.contents.domain, whole);
   EXPECT_EQ(bake.orders_computed, 3);
   EXPECT_EQ(bake.tables.optical_depth.texels.size(), 16u * 4u);
   EXPECT_GT(bake.tables.optical_depth.at(0, 0)[2], 0.0f);
@@ -57,15 +60,16 @@ TEST(BakeFileVersion2, SceneFileDomainComesFromItsStatedRanges) {
   EXPECT_NEAR(sky.bakedRanges().sun_zenith_max_deg, lowest_deg, 1e-9);
 }
 
-// Written again, a version 2 bake becomes a version 3 file that states the
-// same contents and reads back to the same lookups.
+// Written again, a version 2 bake becomes a version 4 file (the newest on
+// its sun axis) that states the same contents and reads back to the same
+// lookups.
 TEST(BakeFileVersion2, RewrittenAsVersion3KeepsContentsAndLookups) {
   const BakeFile old_file = readBakeFile(kVersion2Dir / "tiny_scene.exr");
   const fs::path path = fs::temp_directory_path() / ("skybake_v2_rewritten_" + std::to_string(getpid()) + ".exr");
   writeBakeFile(path, old_file);
   const BakeFile new_file = readBakeFile(path);
   fs::remove(path);
-  EXPECT_EQ(new_file.format_version, kBakeFormatVersion);
+  EXPECT_EQ(new_file.format_version, kFirstSplitSunAxisFormatVersion - 1);
   EXPECT_TRUE(new_file.contents == old_file.contents);
   EXPECT_EQ(new_file.tables.multiple_scattering.texels, old_file.tables.multiple_scattering.texels);
   const Sky before(old_file), after(new_file);
