@@ -234,13 +234,13 @@ struct MuSUnitCoordMap {
             split ? 1.0 / d.mu_s_min : 0.0};
   }
   double operator()(double mu_s) const {
+    if (below_share > 0.0 && mu_s < 0.0) {
+      return below_share * (1.0 - SunBelowHorizonAxis::depthFromSine(std::min(mu_s * inverse_mu_s_min, 1.0)));
+    }
     const double a = (distanceToOuterSphere(bottom_radius_m, mu_s, top_radius_m) - d_min) * inverse_d_span;
     const double bruneton = defined * std::max(1.0 - a * inverse_A, 0.0) / (1.0 + a);
     if (below_share == 0.0) return bruneton;
-    if (mu_s >= 0.0) {
-      return below_share + (1.0 - below_share) * (bruneton - day_coord_at_horizon) / (1.0 - day_coord_at_horizon);
-    }
-    return below_share * (1.0 - SunBelowHorizonAxis::depthFromSine(std::min(mu_s * inverse_mu_s_min, 1.0)));
+    return below_share + (1.0 - below_share) * (bruneton - day_coord_at_horizon) / (1.0 - day_coord_at_horizon);
   }
 };
 inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) { return MuSUnitCoordMap::of(d)(mu_s); }
