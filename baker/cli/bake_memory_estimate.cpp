@@ -40,13 +40,14 @@ uint64_t axis(int size) { return size > 0 ? static_cast<uint64_t>(size) : 0; }
 // 4D tables alive at once at the peak of bakeAtmosphere, counted from its
 // order loop. With one order: the single Rayleigh and Mie tables and the
 // zeroed multiple-scattering table and density. From order 2 on, while the
-// multiple-scattering stage builds its table, add the scattering density, the
-// last order's density and the new table; from order 3 on, also the previous
+// multiple-scattering stage builds its table, add the scattering density and
+// its logarithm (baker/stages/multiple_scattering_table.cpp), the last
+// order's density and the new table; from order 3 on, also the previous
 // order's table, still read by nothing but not yet replaced.
 int tables4DAtPeak(int orders) {
   if (orders <= 1) return 4;
-  if (orders == 2) return 7;
-  return 8;
+  if (orders == 2) return 8;
+  return 9;
 }
 
 }  // namespace

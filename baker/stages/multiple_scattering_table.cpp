@@ -1,7 +1,10 @@
 #include <omp.h>
 
+#include <algorithm>
 #include <vector>
 
+#include "baker/numerics/log_cubic.h"
+#include "baker/numerics/vector_exp.h"
 #include "baker/stages/multiple_scattering_table.h"
 #include "baker/stages/row_sun_texels.h"
 #include "runtime/atmosphere_media.h"
@@ -55,10 +58,11 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
 
 // The density table at one node's (r, mu), interpolated there once: a
 // mu_s x nu plane that every sun texel of the ray then interpolates
-// bilinearly (4 texels per lookup instead of 16).
-void interpolateAtNode(const Texture4D& density, const RayNode& n, std::vector<Spectrum>& plane) {
-  plane.resize(static_cast<size_t>(density.mu_s_size) * density.nu_size);
-  for (int i_mu_s = 0; i_mu_s < density.mu_s_size; ++i_mu_s) {
+// bilinearly (4 texels per lookup instead of 16). `rows` sun rows from the
+// lowest sun up: the whole plane, or the rows that carry logarithms.
+void interpolateAtNode(const Texture4D& density, const RayNode& n, int rows, std::vector<Spectrum>& plane) {
+  plane.resize(static_cast<size_t>(rows) * density.nu_size);
+  for (int i_mu_s = 0; i_mu_s < rows; ++i_mu_s) {
     for (int i_nu = 0; i_nu < density.nu_size; ++i_nu) {
       auto at = [&](int i_r, int i_mu) -> const Spectrum& { return density.at(i_r, i_mu, i_mu_s, i_nu); };
       const AxisLerp& r = n.density_r;
@@ -70,15 +74,44 @@ void interpolateAtNode(const Texture4D& density, const RayNode& n, std::vector<S
   }
 }
 
-// The plane at a sun (mu_s) and nu, blended across mu_s as `blend` says.
-Spectrum samplePlane(const std::vector<Spectrum>& plane, int nu_size, const AxisLerp& mu_s, const AxisLerp& nu,
-                     Blend blend) {
-  auto at = [&](int i_mu_s, int i_nu) -> const Spectrum& {
-    return plane[static_cast<size_t>(i_mu_s) * nu_size + i_nu];
+// The plane at a sun (mu_s) and nu: linear across nu, across mu_s linear
+// or, for a sun below the horizon, a cubic in the logarithm
+// (baker/numerics/log_cubic.h). `log_plane` holds the rows the cubic reads
+// (rows_with_logs), interpolated at the node from the density's logarithms
+// (so geometrically across r and mu, which the density falls along
+// exponentially too).
+Spectrum samplePlane(const std::vector<Spectrum>& plane, const std::vector<Spectrum>& log_plane, int nu_size,
+                     const AxisLerp& mu_s, const AxisLerp& nu, bool log_cubic) {
+  auto along_nu = [&](const std::vector<Spectrum>& p, int i_mu_s) {
+    const Spectrum& a = p[static_cast<size_t>(i_mu_s) * nu_size + nu.i0];
+    const Spectrum& b = p[static_cast<size_t>(i_mu_s) * nu_size + nu.i1];
+    return a + (b - a) * nu.w1;
   };
-  const Spectrum a = blendAcross(at(mu_s.i0, nu.i0), at(mu_s.i1, nu.i0), mu_s.w1, blend);
-  const Spectrum b = blendAcross(at(mu_s.i0, nu.i1), at(mu_s.i1, nu.i1), mu_s.w1, blend);
-  return a + (b - a) * nu.w1;
+  if (!log_cubic) {
+    auto at = [&](int i_mu_s, int i_nu) -> const Spectrum& {
+      return plane[static_cast<size_t>(i_mu_s) * nu_size + i_nu];
+    };
+    const Spectrum a = at(mu_s.i0, nu.i0) + (at(mu_s.i1, nu.i0) - at(mu_s.i0, nu.i0)) * mu_s.w1;
+    const Spectrum b = at(mu_s.i0, nu.i1) + (at(mu_s.i1, nu.i1) - at(mu_s.i0, nu.i1)) * mu_s.w1;
+    return a + (b - a) * nu.w1;
+  }
+  const int size = static_cast<int>(plane.size()) / nu_size;
+  const int i_before = std::max(mu_s.i0 - 1, 0), i_after = std::min(mu_s.i1 + 1, size - 1);
+  const Spectrum lower = along_nu(plane, mu_s.i0), upper = along_nu(plane, mu_s.i1);
+  const Spectrum log_before = along_nu(log_plane, i_before), log_lower = along_nu(log_plane, mu_s.i0),
+                 log_upper = along_nu(log_plane, mu_s.i1), log_after = along_nu(log_plane, i_after);
+  return blendLogCubic(
+      {lower, upper, log_before, log_lower, log_upper, log_after, i_before == mu_s.i0, i_after == mu_s.i1}, mu_s.w1);
+}
+
+// How many of the density's sun rows (from the lowest sun up) a cubic for a
+// sun below the horizon reads: those below the horizon, the first above it and
+// the one after (the texel beyond the interval).
+int rowsWithLogs(const std::vector<double>& density_texel_mu_s) {
+  int below = 0;
+  while (below < static_cast<int>(density_texel_mu_s.size()) && density_texel_mu_s[below] < 0.0) ++below;
+  // A lerp clamped to the lowest texels reads rows 0 to 2 even with none below.
+  return std::min(std::max(below, 1) + 2, static_cast<int>(density_texel_mu_s.size()));
 }
 
 }  // namespace
@@ -97,13 +130,18 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
   const ScatteringMuSCoordMap density_mu_s_coord =
       ScatteringMuSCoordMap::of(density_sampler.domain(), density_sizes.mu_s);
   const std::vector<double> texel_mu_s = scatteringTexelMuS(sampler.domain(), s);
-  const bool own_texels = &density_sampler == &sampler;
+  const int rows_with_logs = rowsWithLogs(scatteringTexelMuS(density_sampler.domain(), density_sizes));
+  // The logarithm of every texel once, rather than of each node's plane
+  // (as many logarithms per node as the plane's lookups).
+  Texture4D log_density(density.r_size, density.mu_size, density.mu_s_size, density.nu_size);
+  logOfSpectra(density.texels.data(), log_density.texels.data(), density.texels.size());
   constexpr double kBroad = MultipleScatteringPhase::kBroad;
   Texture4D table(s.r, s.mu, s.mu_s, s.nu);
 #pragma omp parallel
   {
     std::vector<RayNode> nodes;
-    std::vector<std::vector<Spectrum>> planes;  // one per node
+    std::vector<std::vector<Spectrum>> planes;      // one per node
+    std::vector<std::vector<Spectrum>> log_planes;  // their logarithms, the rows_with_logs lowest sun rows
     RowSunTexels suns;
     std::vector<AxisLerp> density_nu;   // per sun: nu is constant along a straight ray, so is its interpolation
     std::vector<double> mu_s_at_node;   // per sun: its cosine at the current node
@@ -119,7 +157,11 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
         const ScatteringTexelConfig row = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0);
         collectRayNodes(ctx, optical_depth, density_sampler, shape, row, nodes);
         if (planes.size() < nodes.size()) planes.resize(nodes.size());
-        for (size_t k = 0; k < nodes.size(); ++k) interpolateAtNode(density, nodes[k], planes[k]);
+        if (log_planes.size() < nodes.size()) log_planes.resize(nodes.size());
+        for (size_t k = 0; k < nodes.size(); ++k) {
+          interpolateAtNode(density, nodes[k], density.mu_s_size, planes[k]);
+          interpolateAtNode(log_density, nodes[k], rows_with_logs, log_planes[k]);
+        }
         suns.collect(s, texel_mu_s, row.mu);
         const size_t count = suns.size();
         density_nu.resize(count);
@@ -144,8 +186,8 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
           }
           for (size_t i = 0; i < count; ++i) {
             const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(mu_s_position[i], density_sizes.mu_s);
-            const Blend blend = own_texels ? Blend::Linear : radianceBlend(mu_s_at_node[i]);
-            const Spectrum value = samplePlane(plane, density_sizes.nu, mu_s_lerp, density_nu[i], blend);
+            const Spectrum value =
+                samplePlane(plane, log_planes[k], density_sizes.nu, mu_s_lerp, density_nu[i], mu_s_at_node[i] < 0.0);
             broad[i] += value * light;
             peaked[i] += value * light_peaked;
           }

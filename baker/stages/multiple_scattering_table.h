@@ -9,17 +9,15 @@ namespace skybake {
 
 // Radiance of order n: the scattering density integrated along each ray,
 // stored divided by the multiple-scattering shape at the texel's r and nu.
+// Along a ray the sun's zenith angle changes, so each node reads the density
+// between its sun texels. With the sun below the horizon there it reads a
+// cubic in the density's logarithm across the sun axis
+// (baker/numerics/log_cubic.h, which says why), linear elsewhere.
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
                                          const Texture4D& density, const MultipleScatteringPhase& shape);
 // The same on ctx's texels from a density table on other texels (a scene's
 // narrowed tables integrate the whole domain's density): `density_sampler`
-// says where its texels are. Its texels lie between the density's, where
-// with the sun below the horizon the density falls by up to ten times from
-// one sun texel to the next (2 to 3 deg apart in deep twilight) and a linear
-// blend overestimates it by up to 1.7 times: there the density is blended
-// across the sun axis as the runtime blends the tables (radianceBlend,
-// geometric where steep). On its own texels (the orders) the blend stays
-// linear.
+// says where its texels are; the density is blended as above.
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
                                          const TableSampler& density_sampler, const Texture4D& density,
                                          const MultipleScatteringPhase& shape);

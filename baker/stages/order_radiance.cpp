@@ -35,6 +35,7 @@ void OrderRadianceAlongNu::moveTo(double r, double mu, double mu_s, bool ray_int
   // (r, mu, mu_s) coordinates do not depend on nu.
   const ScatteringCoord c = sampler_.scatteringCoord(r, mu, mu_s, 0.0, ray_intersects_ground);
   blend_ = radianceBlend(mu_s);
+  nu_blend_ = nu_blend_choice_ == NuBlend::Linear ? Blend::Linear : blend_;
   if (order_.order == 1) {
     interpolateSlices(order_.single_rayleigh, c, blend_, rayleigh_or_multiple_);
     interpolateSlices(order_.single_mie, c, blend_, mie_);
@@ -46,8 +47,8 @@ void OrderRadianceAlongNu::moveTo(double r, double mu, double mu_s, bool ray_int
 
 Spectrum OrderRadianceAlongNu::at(double nu) const {
   const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, static_cast<int>(rayleigh_or_multiple_.size()));
-  const Spectrum mie = order_.order == 1 ? blendSlices(mie_, nu_lerp, blend_) : Spectrum(0.0f);
-  return order_.withPhase(blendSlices(rayleigh_or_multiple_, nu_lerp, blend_), mie, nu, peak_weight_, mie_g_);
+  const Spectrum mie = order_.order == 1 ? blendSlices(mie_, nu_lerp, nu_blend_) : Spectrum(0.0f);
+  return order_.withPhase(blendSlices(rayleigh_or_multiple_, nu_lerp, nu_blend_), mie, nu, peak_weight_, mie_g_);
 }
 
 }  // namespace skybake

@@ -30,12 +30,29 @@ struct OrderRadiance {
 // The radiance of one order at a fixed (r, mu, mu_s), for any nu: the tables
 // are interpolated on each of their nu slices once (moveTo), so each nu then
 // costs one blend and the phase functions instead of a 16-texel lookup.
-// at(nu) equals TableSampler::scattering of the order's tables at
-// (r, mu, mu_s, nu) through OrderRadiance::withPhase.
+// With NuBlend::AsRadiance, at(nu) equals TableSampler::scattering of the
+// order's tables at (r, mu, mu_s, nu) through OrderRadiance::withPhase.
+//
+// Across mu_s it blends as the runtime does (radianceBlend). Across nu too by
+// default; NuBlend::Linear blends nu linearly whatever the sun. The
+// scattering density, an integral over every incident direction, wants that:
+// with the sun below the horizon the incident light peaks toward the sun's
+// azimuth, and a geometric blend of a peak whose logarithm bends down
+// (log-concave) falls short of it between every two nu slices, while a
+// linear blend's errors change sign across the peak and largely cancel in
+// the integral. Measured against finer tables, the default Earth's
+// astronomical twilight sky went from -11 to -13 % mean (geometric) to +0.1
+// to +0.7 %. The ground irradiance, also an integral, measured better with
+// the runtime's blend (twilight sky irradiance 2.3 / 1.8 / 0.7 % against the
+// reference; 8.0 / 7.7 / 6.8 % with the linear one in both stages) and
+// keeps it.
+enum class NuBlend { AsRadiance, Linear };
+
 class OrderRadianceAlongNu {
  public:
-  OrderRadianceAlongNu(const OrderRadiance& order, const TableSampler& sampler, double mie_g)
-      : order_(order), sampler_(sampler), mie_g_(mie_g) {}
+  OrderRadianceAlongNu(const OrderRadiance& order, const TableSampler& sampler, double mie_g,
+                       NuBlend nu_blend = NuBlend::AsRadiance)
+      : order_(order), sampler_(sampler), mie_g_(mie_g), nu_blend_choice_(nu_blend) {}
   void moveTo(double r, double mu, double mu_s, bool ray_intersects_ground);
   Spectrum at(double nu) const;
 
@@ -43,7 +60,9 @@ class OrderRadianceAlongNu {
   const OrderRadiance& order_;
   const TableSampler& sampler_;
   double mie_g_;
-  Blend blend_ = Blend::Linear;
+  NuBlend nu_blend_choice_;
+  Blend blend_ = Blend::Linear;                 // across mu_s, at the current position
+  Blend nu_blend_ = Blend::Linear;              // across nu, at the current position
   SpectrumD peak_weight_{0.0};                  // of the multiple-scattering shape, order >= 2
   std::vector<Spectrum> rayleigh_or_multiple_;  // per nu slice
   std::vector<Spectrum> mie_;                   // per nu slice, order 1

@@ -141,7 +141,8 @@ Texture4D computeScatteringDensityTable(const StageContext& ctx, const Scatterin
 
 #pragma omp parallel
   {
-    OrderRadianceAlongNu incident(previous, previous_sampler, a.mie_phase_g);
+    // Linear across nu: see NuBlend.
+    OrderRadianceAlongNu incident(previous, previous_sampler, a.mie_phase_g, NuBlend::Linear);
     RingModes ring;
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
