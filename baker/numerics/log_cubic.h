@@ -60,22 +60,16 @@ inline Spectrum blendLogCubic(const LogCubicNeighbours& n, float t) {
   const Spectrum log_before = n.before_is_end ? 2.0f * n.log_lower - n.log_upper : n.log_before;
   const Spectrum log_after = n.after_is_end ? 2.0f * n.log_upper - n.log_lower : n.log_after;
   const CubicWeights w = CubicWeights::at(t);
-  alignas(16) float exponent[kMaxChannels], value[kMaxChannels];
-  bool finite[kMaxChannels];
-  for (int c = 0; c < kMaxChannels; ++c) {
-    finite[c] = std::isfinite(log_before[c]) && std::isfinite(n.log_lower[c]) && std::isfinite(n.log_upper[c]) &&
-                std::isfinite(log_after[c]);
-    const float cubic =
-        log_before[c] * w.before + n.log_lower[c] * w.lower + n.log_upper[c] * w.upper + log_after[c] * w.after;
-    exponent[c] = finite[c] ? std::clamp(cubic, std::min(n.log_lower[c], n.log_upper[c]),
-                                         std::max(n.log_lower[c], n.log_upper[c]))
-                            : 0.0f;
-  }
-#pragma omp simd
-  for (int c = 0; c < kMaxChannels; ++c) value[c] = expf(exponent[c]);
+  const Spectrum cubic_log =
+      log_before * w.before + n.log_lower * w.lower + n.log_upper * w.upper + log_after * w.after;
+  // Channels with a non-finite logarithm compute a value they do not use.
+  const Spectrum value =
+      expOf(glm::clamp(cubic_log, glm::min(n.log_lower, n.log_upper), glm::max(n.log_lower, n.log_upper)));
   Spectrum out = linear;
   for (int c = 0; c < kMaxChannels; ++c) {
-    if (finite[c]) out[c] = value[c];
+    const bool finite = std::isfinite(log_before[c]) && std::isfinite(n.log_lower[c]) &&
+                        std::isfinite(n.log_upper[c]) && std::isfinite(log_after[c]);
+    if (finite) out[c] = value[c];
   }
   return out;
 }

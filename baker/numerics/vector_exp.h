@@ -21,14 +21,17 @@ namespace skybake {
 
 static_assert(kMaxChannels == 4, "a Spectrum is built from 4 channels below");
 
-// exp(-x) per channel.
-inline Spectrum expOfNegated(const Spectrum& x) {
+// exp(x) per channel.
+inline Spectrum expOf(const Spectrum& x) {
   alignas(16) float in[kMaxChannels], out[kMaxChannels];
-  for (int c = 0; c < kMaxChannels; ++c) in[c] = -x[c];
+  for (int c = 0; c < kMaxChannels; ++c) in[c] = x[c];
 #pragma omp simd
   for (int c = 0; c < kMaxChannels; ++c) out[c] = expf(in[c]);
   return Spectrum(out[0], out[1], out[2], out[3]);
 }
+
+// exp(-x) per channel.
+inline Spectrum expOfNegated(const Spectrum& x) { return expOf(-x); }
 
 // log per channel of `count` spectra into `out`: -inf for a zero channel,
 // NaN for a negative one (callers test the values before they use these).
