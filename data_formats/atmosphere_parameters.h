@@ -82,7 +82,7 @@ struct AtmosphereParameters {
   double sun_angular_radius_rad = 0.0;
   // The lowest sun the scattering tables cover. Kept in degrees, as the config
   // key is, so that configs round-trip exactly; use sunMuSMin() in physics.
-  double sun_max_zenith_deg = 108.0;
+  double sun_max_zenith_deg = 111.0;
 
   Spectrum rayleigh_scattering{0.0f};  // m^-1 where density = 1
   DensityProfile rayleigh_density;

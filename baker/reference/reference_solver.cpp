@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "baker/numerics/optical_depth_integral.h"
+#include "baker/reference/lit_air_guide.h"
 #include "baker/reference/log_linear_proposal.h"
 #include "baker/reference/path_sampler.h"
 #include "runtime/atmosphere_media.h"
@@ -35,35 +36,31 @@ constexpr int kMaxPathVertices = 512;
 // Russian roulette starts after this many scattering events (0-based), so the
 // second and third orders, most of the multiple scattering, are never cut.
 constexpr int kRouletteFromEvent = 2;
-// With the sun below the horizon, the share of vertices placed by the
-// lit-air proposal (scattering times transmittance times the sun's light at
-// the point) where a ray crosses both the planet's shadow and sunlit air. The
-// rest follow the density proposal as in daylight, so every point of the ray
-// keeps a positive density (unbiasedness) and the shadowed air, which still
-// carries the higher orders, is not starved.
-constexpr double kLitVertexShare = 0.5;
-// Optical-depth segments for the sun's transmittance inside the lit-air
-// proposal: it only shapes where vertices go (any positive shape is
-// unbiased), so a coarse quadrature that keeps the proposal cheap suffices.
-constexpr int kLitProposalOpticalDepthSegments = 2;
-// At a vertex in the planet's shadow with the sun below the horizon, the
-// share of next directions drawn uniformly over a band of directions toward
-// the sunlit air (litAirBand) instead of by the phase function. Deep in twilight only
-// a few percent of the sphere of directions reaches sunlit air, so phase
-// sampling alone spends nearly every path where no light is; the phase
-// share keeps every direction possible.
-constexpr double kLitDirectionShare = 0.5;
-// The band's half-width in azimuth either side of the sun's: the sunlit air
-// past the shadow's edge is a band across the sun's azimuth some 500 km
-// away, seen over most of the sunward half of the horizon.
-constexpr double kLitBandHalfAzimuth_rad = 1.3;
-// How far above the elevation of the shadow's edge at the top the band
-// reaches (rad): the edge is a few degrees high, light from the lit air
-// above it comes from up to some 10 deg higher.
-constexpr double kLitBandAboveEdge_rad = 0.2;
-// Below this sine of the angle between the sun and a point's vertical the
-// sun has no azimuth to aim at (straight below): phase sampling only.
-constexpr double kSmallestSunwardSine = 1e-9;
+// The same with the guide (the sun below the horizon). Deep in twilight a
+// path's throughput falls as it climbs from the shadowed air toward the
+// sunlit layers while the light it can collect grows, so roulette on the
+// throughput ended the paths that were about to find light and multiplied
+// the few survivors: with 8192 paths the 440 nm zenith from the ground at
+// sun 108 deg read half its value (the fourth to seventh orders carry half
+// of that light, and few paths survived to find them), and the standard
+// errors of other deep queries were 1.4 to 7 times those without roulette.
+// From the ninth event on, where a few percent of the light is left,
+// roulette costs no measurable noise.
+constexpr int kGuidedRouletteFromEvent = 8;
+// With the sun below the horizon, the share of vertices along a ray placed
+// by the light that arrives there (scattering times transmittance times the
+// sun's light and the once-scattered light the guide expects at the point:
+// LitAirGuide). The rest follow the density proposal as in daylight, so
+// every point of the ray keeps a positive density (unbiasedness) and a ray
+// the guide sees no light along is sampled as by day.
+constexpr double kGuidedVertexShare = 0.5;
+// With the sun below the horizon, the share of next directions drawn from
+// the guide's distribution of the once-scattered light arriving at the
+// vertex instead of by the phase function. Deep in twilight that light
+// arrives from a band a few degrees wide above the sunward horizon, a few
+// thousandths of the sphere, so phase sampling alone spends nearly every
+// path where no light is; the phase share keeps every direction possible.
+constexpr double kGuidedDirectionShare = 0.5;
 
 // Any unit vector perpendicular to n, and the third axis of a frame.
 void frameAround(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
@@ -79,36 +76,14 @@ glm::dvec3 directionAround(const glm::dvec3& axis, double cos_theta, double phi)
   return glm::normalize(axis * cos_theta + t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)));
 }
 
-// Directions toward the sun's side of the sky in a band of elevations: a
-// proposal uniform in solid angle over azimuths within
-// kLitBandHalfAzimuth_rad of the sun's and sines of elevation in
-// [sin_low, sin_high].
-struct SunwardBand {
-  glm::dvec3 up, sunward, side;
-  double sin_low = 0.0, sin_high = 0.0;
-
-  glm::dvec3 direction(double u_elevation, double u_azimuth) const {
-    const double sin_e = sin_low + u_elevation * (sin_high - sin_low);
-    const double cos_e = safeSqrt(1.0 - sin_e * sin_e);
-    const double azimuth = (2.0 * u_azimuth - 1.0) * kLitBandHalfAzimuth_rad;
-    return glm::normalize(cos_e * (std::cos(azimuth) * sunward + std::sin(azimuth) * side) + sin_e * up);
-  }
-  double pdf(const glm::dvec3& d) const {
-    const double sin_e = glm::dot(d, up);
-    const double azimuth = std::atan2(glm::dot(d, side), glm::dot(d, sunward));
-    if (sin_e < sin_low || sin_e > sin_high || std::abs(azimuth) > kLitBandHalfAzimuth_rad) return 0.0;
-    return 1.0 / (2.0 * kLitBandHalfAzimuth_rad * (sin_high - sin_low));
-  }
-};
-
 class PathTracer {
  public:
-  // `toward_lit_air`: place vertices after the first partly by the lit-air
-  // proposal (sampleVertex) and, from vertices in the planet's shadow, draw
-  // part of the next directions toward sunlit air (litAirBand); for a sun
-  // below the query's horizon only.
-  PathTracer(const AtmosphereParameters& a, const Moon& moon, bool toward_lit_air)
-      : a_(a), media_(a), moon_(moon), toward_lit_air_(toward_lit_air) {}
+  // `guide` (for a sun below the query's horizon; else null): place part of
+  // the vertices along each ray by the light that arrives there
+  // (sampleVertex) and draw part of the next directions from where the
+  // once-scattered light at the vertex comes from (sampleScatteringDirection).
+  PathTracer(const AtmosphereParameters& a, const Moon& moon, const LitAirGuide* guide)
+      : a_(a), media_(a), moon_(moon), guide_(guide) {}
 
   double altitude(const glm::dvec3& p) const { return glm::length(p) - a_.bottom_radius_m; }
 
@@ -126,14 +101,6 @@ class PathTracer {
         moon_.visibleSunFraction(p, sun, a_.sun_angular_radius_rad);
     if (visible <= 0.0) return SpectrumD(0.0);
     return glm::exp(-integrateOpticalDepthToTop(media_, r, std::max(mu_s, horizon_mu), segments)) * visible;
-  }
-
-  // Whether no part of the sun disk is above p's horizon.
-  bool inPlanetShadow(const glm::dvec3& p, const glm::dvec3& sun) const {
-    const double r = std::max(glm::length(p), a_.bottom_radius_m);
-    const double mu_s = clampCosine(glm::dot(p, sun) / glm::length(p));
-    return sunDiskVisibleFraction(mu_s - tangentZenithCosine(r, a_.bottom_radius_m),
-                                  sunDiskHalfSizeAtHorizon(a_.bottom_radius_m, r, a_.sun_angular_radius_rad)) <= 0.0;
   }
 
   // Light scattered at p toward -view_dir, from the sun, per unit length.
@@ -210,14 +177,21 @@ class PathTracer {
   // Samples where the next scattering event on the ray happens, from one
   // uniform number u: a point in the air (density following scattering times
   // transmittance along the ray, mixed with a uniform share) or the ground at
-  // its end. With `toward_sun`, a ray that crosses both shadow and sunlit air
-  // mixes in a proposal that also follows the sun's light at each point
-  // (kLitVertexShare): in deep twilight the shadowed air near the viewer
-  // holds nearly all the density but none of the sunlight the next-event
-  // estimate collects, so density alone almost never puts a vertex where the
-  // light is. The density is the mixture's (one-sample multiple importance
-  // sampling with the balance heuristic), so the estimate stays unbiased.
-  Vertex sampleVertex(const AtmosphereRay& ray, bool ground_allowed, double u, const glm::dvec3* toward_sun) const {
+  // its end. With the guide (the sun below the horizon), a share
+  // kGuidedVertexShare follows scattering times transmittance times the
+  // light expected at each point: the sun's there, if `counts_sun` (the
+  // caller connects the vertex to the sun), plus the once-scattered light the
+  // guide expects to arrive (what the vertex's next ray collects). In deep
+  // twilight the shadowed air near the viewer holds nearly all the density
+  // but little of the light, which grows steeply with altitude, so density
+  // alone puts nearly every vertex where the light is not. Each channel's
+  // part is normalized before they are summed, so blue light, which reaches
+  // a shadowed point from higher and dimmer air than red, gets its share of
+  // the vertices. The density is the mixture's (one-sample multiple
+  // importance sampling with the balance heuristic), so the estimate stays
+  // unbiased.
+  Vertex sampleVertex(const AtmosphereRay& ray, bool ground_allowed, double u, const glm::dvec3& sun,
+                      bool counts_sun) const {
     Vertex v;
     if (!(ray.length > 0.0)) {
       // A ray that starts on the ground pointing into it: the ground is all it meets.
@@ -234,32 +208,39 @@ class PathTracer {
              SpectrumD(a_.mie_scattering) * media_.mieDensity(h);
     };
     std::array<double, kVertexBins + 1> node_value;
+    std::array<SpectrumD, kVertexBins + 1> node_spectrum;
     SpectrumD depth(0.0);
     SpectrumD extinction_start = extinctionAt(0.0);
     for (int i = 0; i <= kVertexBins; ++i) {
-      const SpectrumD w = scatteringAt(i * dt) * glm::exp(-depth);
-      node_value[i] = w.x + w.y + w.z + w.w;
+      node_spectrum[i] = scatteringAt(i * dt) * glm::exp(-depth);
+      node_value[i] = node_spectrum[i].x + node_spectrum[i].y + node_spectrum[i].z + node_spectrum[i].w;
       if (i == kVertexBins) break;
       const SpectrumD extinction_end = extinctionAt((i + 1) * dt);
       depth += (extinction_start + 4.0 * extinctionAt((i + 0.5) * dt) + extinction_end) * (dt / 6.0);
       extinction_start = extinction_end;
     }
     const LogLinearProposal<kVertexBins> proposal(ray.length, node_value);
-    // The lit-air proposal: the same nodes times the sun's light there; used
-    // only where some nodes are shadowed and some lit (else it adds nothing).
+    // The guided proposal: the same nodes times the light expected there,
+    // each channel normalized over the ray.
     std::array<double, kVertexBins + 1> lit_value{};
-    bool any_shadowed = false, any_lit = false;
-    if (toward_sun) {
+    if (guide_) {
+      SpectrumD channel_total(0.0);
       for (int i = 0; i <= kVertexBins; ++i) {
-        const SpectrumD sun_light =
-            sunTransmittance(ray.origin + ray.dir * (i * dt), *toward_sun, kLitProposalOpticalDepthSegments);
-        const double sun_sum = sun_light.x + sun_light.y + sun_light.z + sun_light.w;
-        lit_value[i] = node_value[i] * sun_sum;
-        (sun_sum > 0.0 ? any_lit : any_shadowed) = true;
+        const glm::dvec3 point = ray.origin + ray.dir * (i * dt);
+        SpectrumD light = guide_->meanInscatteredRadiance(guide_->siteAt(point, sun));
+        if (counts_sun) light += SpectrumD(a_.sun_irradiance) * guide_->sunTransmittance(point, sun) / (4.0 * kPi);
+        node_spectrum[i] *= light;
+        channel_total += node_spectrum[i];
+      }
+      for (int i = 0; i <= kVertexBins; ++i) {
+        for (int k = 0; k < 4; ++k) {
+          if (channel_total[k] > 0.0 && std::isfinite(channel_total[k]))
+            lit_value[i] += node_spectrum[i][k] / channel_total[k];
+        }
       }
     }
     const LogLinearProposal<kVertexBins> lit_proposal(ray.length, lit_value);
-    const double lit_share = any_shadowed && any_lit && lit_proposal.usable() ? kLitVertexShare : 0.0;
+    const double lit_share = guide_ && lit_proposal.usable() ? kGuidedVertexShare : 0.0;
     double ground_weight = 0.0;
     if (ground_allowed && ray.ends_on_ground) {
       const SpectrumD w = SpectrumD(a_.ground_albedo) * glm::exp(-depth);
@@ -286,7 +267,7 @@ class PathTracer {
                                 : proposal.sample((u_air - uniform_share) / (1.0 - uniform_share));
       pdf = (1.0 - p_ground) * ((1.0 - uniform_share) * proposal.pdf(t) + uniform_share / ray.length);
     } else {
-      // The lowest part of u picks the lit-air proposal, the rest the
+      // The lowest part of u picks the guided proposal, the rest the
       // daylight mixture, each rescaled to [0, 1).
       if (u_air < lit_share) {
         t = lit_proposal.sample(u_air / lit_share);
@@ -307,14 +288,13 @@ class PathTracer {
 
   // Samples, from two uniform numbers, the direction light came from before
   // scattering at a point in the air toward -dir, and returns the
-  // phase-weighted scattering over the direction's density. With
-  // `lit_band`, a share kLitDirectionShare of the directions is drawn
-  // uniformly over it (toward sunlit air, litAirBand); the density is the
-  // mixture's, so the estimate stays unbiased. (A cone aimed at one point
-  // past the shadow's edge did worse: the sunlit air is a band across the
-  // sun's azimuth, not a spot; docs/ERROR_VS_TIME.md, deep twilight.)
+  // phase-weighted scattering over the direction's density. With `site`
+  // (the guide's, where it proposes directions), a share
+  // kGuidedDirectionShare of the directions is drawn from where the
+  // once-scattered light arriving there comes from; the density is the
+  // mixture's, so the estimate stays unbiased.
   glm::dvec3 sampleScatteringDirection(const glm::dvec3& point, const glm::dvec3& dir, double u_cos, double u_phi,
-                                       const SunwardBand* lit_band, SpectrumD& weight) const {
+                                       const LitAirGuide::Site* site, SpectrumD& weight) const {
     const double h = altitude(point);
     const SpectrumD rayleigh = SpectrumD(a_.rayleigh_scattering) * media_.rayleighDensity(h);
     const SpectrumD mie = SpectrumD(a_.mie_scattering) * media_.mieDensity(h);
@@ -328,10 +308,10 @@ class PathTracer {
     double p_uniform = rayleigh_sum + mie_sum > 0.0 ? rayleigh_sum / (rayleigh_sum + mie_sum) : 1.0;
     if (rayleigh_sum > 0.0 && mie_sum > 0.0) p_uniform = std::clamp(p_uniform, 0.1, 0.9);
     if (g == 0.0) p_uniform = 1.0;
-    const double lit_share = lit_band ? kLitDirectionShare : 0.0;
+    const double lit_share = site ? kGuidedDirectionShare : 0.0;
     glm::dvec3 incoming;
     if (u_cos < lit_share) {
-      incoming = lit_band->direction(u_cos / lit_share, u_phi);
+      incoming = guide_->sampleDirection(*site, u_cos / lit_share, u_phi);
     } else {
       if (lit_share > 0.0) u_cos = (u_cos - lit_share) / (1.0 - lit_share);
       double cos_theta;
@@ -346,36 +326,9 @@ class PathTracer {
     }
     const double c = clampCosine(glm::dot(incoming, dir));
     double pdf = p_uniform / (4.0 * kPi) + (1.0 - p_uniform) * henyeyGreensteinPhase(g, c);
-    if (lit_share > 0.0) pdf = lit_share * lit_band->pdf(incoming) + (1.0 - lit_share) * pdf;
+    if (lit_share > 0.0) pdf = lit_share * guide_->directionPdf(*site, incoming) + (1.0 - lit_share) * pdf;
     weight = (rayleigh * rayleighPhase(c) + mie * cornetteShanksPhase(g, c)) / pdf;
     return incoming;
-  }
-
-  // Where, seen from a point in the planet's shadow, the sunlit air lies:
-  // past the shadow's edge, a band across the sun's azimuth (the terminator
-  // is a great circle, nearly straight this close), seen at elevations from
-  // the point's horizon to a little above the atmosphere's top at the
-  // shadow's edge there (the top is the first air the sun reaches). None for
-  // a sun straight below the point (no azimuth to aim at).
-  bool litAirBand(const glm::dvec3& p, const glm::dvec3& sun, SunwardBand& band) const {
-    const double r = glm::length(p);
-    band.up = p / r;
-    const double sun_up = glm::dot(sun, band.up);
-    glm::dvec3 sunward = sun - sun_up * band.up;
-    const double sunward_length = glm::length(sunward);
-    if (!(sunward_length > kSmallestSunwardSine)) return false;
-    band.sunward = sunward / sunward_length;
-    band.side = glm::cross(band.up, band.sunward);
-    const double sun_zenith = std::acos(clampCosine(sun_up));
-    const double edge_at_top = 0.5 * kPi + std::acos(a_.bottom_radius_m / a_.top_radius_m);
-    const double arc = std::max(sun_zenith - edge_at_top, 0.0);
-    const glm::dvec3 edge = a_.top_radius_m * (std::cos(arc) * band.up + std::sin(arc) * band.sunward);
-    const double edge_sin = std::clamp(glm::dot(glm::normalize(edge - p), band.up), -1.0, 1.0);
-    const double horizon_sin = -safeSqrt(1.0 - std::pow(a_.bottom_radius_m / std::max(r, a_.bottom_radius_m), 2));
-    band.sin_low = horizon_sin;
-    band.sin_high =
-        std::min(std::sin(std::max(std::asin(edge_sin), std::asin(horizon_sin)) + kLitBandAboveEdge_rad), 1.0);
-    return band.sin_high > band.sin_low;
   }
 
   // Radiance arriving along -dir at `start` from scattering events along the
@@ -388,10 +341,8 @@ class PathTracer {
     double first_event_peak = 0.0;
     SpectrumD total(0.0);
     for (int depth = 0; depth < kMaxPathVertices && ray.inside; ++depth) {
-      // The lit-air proposal serves the next-event estimate at the vertex, so
-      // not the first vertex when its sun connection is the caller's.
-      const bool lit_proposal = toward_lit_air_ && (depth > 0 || !skip_first_sun);
-      const Vertex v = sampleVertex(ray, ground_allowed, rng.next(), lit_proposal ? &sun : nullptr);
+      // The first vertex's own sun connection is the caller's, if it skips it.
+      const Vertex v = sampleVertex(ray, ground_allowed, rng.next(), sun, depth > 0 || !skip_first_sun);
       if (!v.valid) break;
       throughput *= v.weight;
       glm::dvec3 next_dir;
@@ -407,15 +358,15 @@ class PathTracer {
           total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
         SpectrumD phase_weight;
         const double u_cos = rng.next(), u_phi = rng.next();
-        // In the shadow, aim part of the directions at sunlit air.
-        SunwardBand lit_band;
-        const bool aim = toward_lit_air_ && inPlanetShadow(v.position, sun) && litAirBand(v.position, sun, lit_band);
-        next_dir =
-            sampleScatteringDirection(v.position, ray.dir, u_cos, u_phi, aim ? &lit_band : nullptr, phase_weight);
+        // Aim part of the directions where the once-scattered light comes from.
+        LitAirGuide::Site site;
+        const bool aim = guide_ && LitAirGuide::proposesDirections(site = guide_->siteAt(v.position, sun));
+        next_dir = sampleScatteringDirection(v.position, ray.dir, u_cos, u_phi, aim ? &site : nullptr, phase_weight);
         throughput *= phase_weight;
       }
-      // Russian roulette from the third event on: unbiased, bounds path
-      // length. The survival probability is the throughput relative to the
+      // Russian roulette from the third event on (the ninth with the guide,
+      // see kGuidedRouletteFromEvent): unbiased, bounds path length. The
+      // survival probability is the throughput relative to the
       // one after the first event, i.e. the share of light that each later
       // ray scatters back (<= 1, falling with the order); the first event's
       // own factor only says how much the view ray scatters and, in thin air,
@@ -423,7 +374,7 @@ class PathTracer {
       // multiply the noise.
       const double peak = std::max({throughput.x, throughput.y, throughput.z, throughput.w});
       if (depth == 0) first_event_peak = peak;
-      if (depth >= kRouletteFromEvent) {
+      if (depth >= (guide_ ? kGuidedRouletteFromEvent : kRouletteFromEvent)) {
         const double survive = first_event_peak > 0.0 ? std::min(1.0, peak / first_event_peak) : 0.0;
         if (!(survive > 0.0) || rng.nextIndependent() >= survive) break;
         throughput /= survive;
@@ -437,8 +388,8 @@ class PathTracer {
 
   const AtmosphereParameters& a_;
   AtmosphereMedia media_;
-  Moon moon_;  // none: the sun is hidden by the planet alone
-  bool toward_lit_air_;
+  Moon moon_;                 // none: the sun is hidden by the planet alone
+  const LitAirGuide* guide_;  // null: daylight sampling
 };
 
 // Estimates the mean of path(sampler) from `paths` paths split into
@@ -468,12 +419,16 @@ ReferenceEstimate estimateOverReplicates(int paths, uint64_t seed, PathFn&& path
 
 }  // namespace
 
-ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere, VertexSampling sampling)
-    : a_(atmosphere), sampling_(sampling) {}
+ReferenceSolver::ReferenceSolver(const AtmosphereParameters& atmosphere, VertexSampling sampling,
+                                 std::shared_ptr<LitAirGuide> guide)
+    : a_(atmosphere),
+      sampling_(sampling),
+      guide_(guide ? std::move(guide) : std::make_shared<LitAirGuide>(atmosphere)) {}
 
-bool ReferenceSolver::towardLitAir(double camera_sun_zenith_cosine) const {
-  return sampling_ == VertexSampling::TowardLitAirBelowHorizon &&
-         referenceSamplesTowardLitAir(camera_sun_zenith_cosine);
+const LitAirGuide* ReferenceSolver::guideFor(double camera_sun_zenith_cosine) const {
+  return sampling_ == VertexSampling::TowardLitAirBelowHorizon && referenceSamplesTowardLitAir(camera_sun_zenith_cosine)
+             ? guide_.get()
+             : nullptr;
 }
 
 namespace {
@@ -481,9 +436,9 @@ namespace {
 // The radiance estimate with each contribution through `map` (a linear map
 // of the channels, or the identity).
 template <typename MapFn>
-ReferenceEstimate radianceThrough(const AtmosphereParameters& a, bool toward_lit_air, const ReferenceRay& query,
+ReferenceEstimate radianceThrough(const AtmosphereParameters& a, const LitAirGuide* guide, const ReferenceRay& query,
                                   int paths, uint64_t seed, const Moon& moon, MapFn&& map) {
-  const PathTracer tracer(a, moon, toward_lit_air);
+  const PathTracer tracer(a, moon, guide);
   const AtmosphereRay ray =
       atmosphereRay(a.bottom_radius_m, a.top_radius_m, query.camera, query.view, query.distance_m);
   if (!ray.inside) return {SpectrumD(0.0), SpectrumD(0.0)};
@@ -503,9 +458,9 @@ glm::dvec3 upAt(const glm::dvec3& point) {
 }
 
 template <typename MapFn>
-ReferenceEstimate skyIrradianceThrough(const AtmosphereParameters& a, bool toward_lit_air, const glm::dvec3& point,
+ReferenceEstimate skyIrradianceThrough(const AtmosphereParameters& a, const LitAirGuide* guide, const glm::dvec3& point,
                                        const glm::dvec3& sun, int paths, uint64_t seed, const Moon& moon, MapFn&& map) {
-  const PathTracer tracer(a, moon, toward_lit_air);
+  const PathTracer tracer(a, moon, guide);
   const double length = glm::length(point);
   const glm::dvec3 up = upAt(point);
   const glm::dvec3 start = up * std::clamp(length, a.bottom_radius_m, a.top_radius_m);
@@ -524,13 +479,13 @@ SpectrumD unmapped(const SpectrumD& s) { return s; }
 
 ReferenceEstimate ReferenceSolver::radiance(const ReferenceRay& query, int paths, uint64_t seed,
                                             const Moon& moon) const {
-  return radianceThrough(a_, towardLitAir(glm::dot(glm::normalize(query.camera), query.sun)), query, paths, seed, moon,
+  return radianceThrough(a_, guideFor(glm::dot(glm::normalize(query.camera), query.sun)), query, paths, seed, moon,
                          unmapped);
 }
 
 ReferenceEstimate ReferenceSolver::mappedRadiance(const ReferenceRay& query, int paths, uint64_t seed,
                                                   const glm::dmat4& lanes_to_output, const Moon& moon) const {
-  return radianceThrough(a_, towardLitAir(glm::dot(glm::normalize(query.camera), query.sun)), query, paths, seed, moon,
+  return radianceThrough(a_, guideFor(glm::dot(glm::normalize(query.camera), query.sun)), query, paths, seed, moon,
                          [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 
@@ -543,13 +498,13 @@ SpectrumD ReferenceSolver::transmittance(const ReferenceRay& query) const {
 
 ReferenceEstimate ReferenceSolver::skyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
                                                  uint64_t seed, const Moon& moon) const {
-  return skyIrradianceThrough(a_, towardLitAir(glm::dot(upAt(point), sun)), point, sun, paths, seed, moon, unmapped);
+  return skyIrradianceThrough(a_, guideFor(glm::dot(upAt(point), sun)), point, sun, paths, seed, moon, unmapped);
 }
 
 ReferenceEstimate ReferenceSolver::mappedSkyIrradiance(const glm::dvec3& point, const glm::dvec3& sun, int paths,
                                                        uint64_t seed, const glm::dmat4& lanes_to_output,
                                                        const Moon& moon) const {
-  return skyIrradianceThrough(a_, towardLitAir(glm::dot(upAt(point), sun)), point, sun, paths, seed, moon,
+  return skyIrradianceThrough(a_, guideFor(glm::dot(upAt(point), sun)), point, sun, paths, seed, moon,
                               [&](const SpectrumD& s) { return lanes_to_output * s; });
 }
 

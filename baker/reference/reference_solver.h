@@ -12,12 +12,13 @@
 // Rayleigh + Cornette-Shanks Mie + absorption, Russian roulette. Only that
 // part (10 to 30 % of the radiance) is noisy, which cuts the noise several
 // fold against tracing every order. With the sun below the camera's horizon
-// the vertices and directions are drawn partly toward the sunlit air far
-// from the view ray, where deep-twilight light comes from (multiple
-// importance sampling, unbiased). Each query has its own fixed seed.
+// the vertices and directions are drawn partly where the light comes from,
+// the sunlit air far from the view ray (LitAirGuide; multiple importance
+// sampling, unbiased). Each query has its own fixed seed.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -26,6 +27,8 @@
 #include "runtime/moon_occluder.h"
 
 namespace skybake {
+
+class LitAirGuide;
 
 struct ReferenceEstimate {
   SpectrumD value;           // the estimate
@@ -39,8 +42,8 @@ struct ReferenceRay {
   double distance_m;  // > 0: up to the point at this distance; else to the ray's end
 };
 
-// Whether the reference places its path vertices partly toward sunlit air
-// (reference_solver.cpp, sampleVertex): for a sun below the horizon of the
+// Whether the reference places its path vertices and directions partly
+// where the light comes from (LitAirGuide): for a sun below the horizon of the
 // query's camera (the cosine of its zenith angle there below 0), where the
 // light scattered more than once comes from sunlit air far from the view
 // ray. Daylight queries keep their sampling, and so their values, bit for
@@ -54,8 +57,12 @@ class ReferenceSolver {
   // estimator everywhere: slower to converge in twilight, kept to check the
   // other against).
   enum class VertexSampling { TowardLitAirBelowHorizon, DensityOnly };
+  // `guide`: the guide of this atmosphere to share (its tables fill as
+  // paths need them, so solvers made again and again for one atmosphere
+  // share one); null: the solver makes its own.
   explicit ReferenceSolver(const AtmosphereParameters& atmosphere,
-                           VertexSampling sampling = VertexSampling::TowardLitAirBelowHorizon);
+                           VertexSampling sampling = VertexSampling::TowardLitAirBelowHorizon,
+                           std::shared_ptr<LitAirGuide> guide = nullptr);
 
   // The radiance the viewer receives along the ray, W m^-2 sr^-1 nm^-1:
   // in-scattering of all orders plus, for a ray that ends on the ground (and
@@ -87,10 +94,14 @@ class ReferenceSolver {
                                         const glm::dmat4& lanes_to_output, const Moon& moon = Moon{}) const;
 
  private:
-  bool towardLitAir(double camera_sun_zenith_cosine) const;
+  // The guide for a query whose camera sees the sun at this zenith cosine;
+  // null for daylight sampling.
+  const LitAirGuide* guideFor(double camera_sun_zenith_cosine) const;
 
   const AtmosphereParameters& a_;
   VertexSampling sampling_;
+  // Shared by the solver's copies; its tables fill as paths need them.
+  std::shared_ptr<LitAirGuide> guide_;
 };
 
 }  // namespace skybake

@@ -17,20 +17,33 @@ namespace {
 constexpr int kPhaseTransformAzimuths = 4 * kAzimuthModes;
 
 // Gauss-Legendre nodes in theta on the sky side [0, horizon] and on the
-// ground side [horizon, pi], half on each. The incident radiance jumps at
-// the horizon (sky to lit ground) and peaks on both sides of it, where
-// paths through the air are longest; a grid that straddles the horizon
-// smears that peak, and in twilight, when the light reaching a point comes
-// mostly from the horizon toward the sun, it is the largest error a uniform
-// grid leaves (docs/MEASUREMENTS.md, "Scattering density").
+// ground side [horizon, pi], each side split into the band next to the
+// horizon (kDensityHorizonBand_rad wide, at most half the side) and the
+// rest. The incident radiance jumps at the horizon (sky to lit ground) and
+// peaks on both sides of it, where paths through the air are longest; a
+// grid that straddles the horizon smears that peak, and in twilight, when
+// the light reaching a point comes mostly from the horizon toward the sun,
+// it is the largest error a uniform grid leaves (docs/MEASUREMENTS.md,
+// "Scattering density"). Deep in twilight that light arrives within a
+// degree or two of the horizon, hence the band's own nodes.
 std::vector<IncidentZenithNode> zenithNodes(const StageContext& ctx, const Texture2D& optical_depth, double r) {
-  static const GaussLegendreRule rule = gaussLegendreRule(kDensityZenithNodes / 2);
+  static const GaussLegendreRule side_rule = gaussLegendreRule(kDensitySideNodes);
+  static const GaussLegendreRule band_rule = gaussLegendreRule(kDensityHorizonBandNodes);
   const AtmosphereParameters& a = ctx.atmosphere;
   const double horizon_theta = std::acos(tangentZenithCosine(r, a.bottom_radius_m));
+  const double sky_band = std::min(kDensityHorizonBand_rad, 0.5 * horizon_theta);
+  const double ground_band = std::min(kDensityHorizonBand_rad, 0.5 * (kPi - horizon_theta));
   const double d_phi = 2.0 * kPi / kDensityAzimuths;
   std::vector<IncidentZenithNode> nodes;
-  for (const auto& [from, to] : {std::pair{0.0, horizon_theta}, std::pair{horizon_theta, kPi}}) {
-    forEachGaussLegendreNode(rule, from, to, [&](double theta, double weight) {
+  struct Piece {
+    double from, to;
+    const GaussLegendreRule& rule;
+  };
+  for (const Piece& piece :
+       {Piece{0.0, horizon_theta - sky_band, side_rule}, Piece{horizon_theta - sky_band, horizon_theta, band_rule},
+        Piece{horizon_theta, horizon_theta + ground_band, band_rule},
+        Piece{horizon_theta + ground_band, kPi, side_rule}}) {
+    forEachGaussLegendreNode(piece.rule, piece.from, piece.to, [&](double theta, double weight) {
       IncidentZenithNode n;
       n.cos_theta = std::cos(theta);
       n.sin_theta = std::sin(theta);

@@ -22,13 +22,19 @@
 
 namespace skybake {
 
-// Incident directions: 32 zenith angles (half on each side of the horizon,
-// Gauss-Legendre in theta) x 64 azimuths. Bruneton's reference implementation
-// uses 16 x 32, which misses the aureole and horizon structure of the
-// incident light (docs/MEASUREMENTS.md, "Scattering density").
-inline constexpr int kDensityZenithNodes = 32;
-inline constexpr int kDensityAzimuths = 2 * kDensityZenithNodes;
-static_assert(kDensityZenithNodes % 2 == 0, "half the zenith nodes on each side of the horizon");
+// Incident directions: 48 zenith angles x 64 azimuths. On each side of the
+// horizon, 16 Gauss-Legendre angles in theta over the sky (or the ground)
+// and 8 more within kDensityHorizonBand_rad of the horizon. Bruneton's
+// reference implementation uses 16 x 32, which misses the aureole and
+// horizon structure of the incident light (docs/MEASUREMENTS.md,
+// "Scattering density"); in deep twilight the light reaching a point comes
+// from sunlit air seen within a degree or two above its horizon, which 16
+// angles spread over the whole sky resolved with one (docs/ERROR_VS_TIME.md).
+inline constexpr int kDensitySideNodes = 16;
+inline constexpr int kDensityHorizonBandNodes = 8;
+inline constexpr double kDensityHorizonBand_rad = 5.0 * 3.14159265358979323846 / 180.0;
+inline constexpr int kDensityZenithNodes = 2 * (kDensitySideNodes + kDensityHorizonBandNodes);
+inline constexpr int kDensityAzimuths = 64;
 
 // Cosine modes 0 .. kAzimuthModes - 1 of the azimuth: all the 64 equally
 // spaced azimuths resolve (their Nyquist mode, 32, vanishes on midpoint

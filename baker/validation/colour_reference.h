@@ -21,12 +21,14 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
 
+#include "baker/reference/lit_air_guide.h"
 #include "baker/reference/reference_solver.h"
 #include "baker/stages/progress.h"
 #include "baker/validation/reference_cache.h"
@@ -46,6 +48,9 @@ struct ColourReferenceAtmospheres {
   std::vector<double> wavelengths_nm;          // 380, 390, ..., 780
   std::vector<AtmosphereParameters> groups;    // group g: wavelengths g, g + G, g + 2G, ...
   std::vector<glm::dmat4> group_lanes_to_xyz;  // column c: X, Y, Z (nm) of one unit of channel c
+  // Each group's reference guide, shared by every solver of the group (its
+  // tables are computed once, not once per query).
+  std::vector<std::shared_ptr<LitAirGuide>> group_guides;
 };
 
 // The config's atmosphere at the 41 wavelengths. Throws Error(BadInput)

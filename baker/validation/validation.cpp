@@ -53,7 +53,7 @@ namespace {
 // so values cached before it (other seeds, more noise) are never mistaken
 // for them, while the daylight keys, and values, stay as they were.
 std::string samplingSuffix(double sun_zenith_deg) {
-  return referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(sun_zenith_deg, 0.0).z) ? " lit-air" : "";
+  return referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(sun_zenith_deg, 0.0).z) ? " guided" : "";
 }
 
 // An eclipse's value is not the plain sky's: its key names the moon.

@@ -27,8 +27,8 @@ TEST(BakeMemoryEstimate, CountsEveryTableAliveAtThePeak) {
   const BakeMemoryEstimate three = estimateBakeMemory(config);
   EXPECT_EQ(three.table_4d_bytes, table_4d);
   EXPECT_EQ(three.tables_4d_at_peak, 9);
-  // The density stage's kernel: 32 zenith nodes x 35 azimuthal modes of 4 bytes per (r, mu).
-  const uint64_t kernel = 8 * 32 * 32 * 35 * 4;
+  // The density stage's kernel: 48 zenith nodes x 35 azimuthal modes of 4 bytes per (r, mu).
+  const uint64_t kernel = 8 * 32 * 48 * 35 * 4;
   EXPECT_EQ(three.density_kernel_bytes, kernel);
   EXPECT_EQ(three.peak_bytes, 9 * table_4d + 64 * 16 * texel + 3 * 16 * 8 * texel + kernel);
   EXPECT_EQ(three.kept_bytes, 4 * table_4d + 64 * 16 * texel + 16 * 8 * texel);

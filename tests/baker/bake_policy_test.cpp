@@ -63,14 +63,15 @@ TEST(BakePolicy, NarrowedScatteringAxesRoundTripAndEndOnTheSceneRanges) {
 }
 
 // A sun range that would not make the sun axis a texel finer is dropped
-// (0 to 106 deg plus the margin is 99.1 % of Earth's 0 to 108 deg axis: a
-// third of a texel at 40); one that does (0 to 90 deg, about 22 texels) stays.
+// (0 to 109 deg plus the 1 deg margin stops 1 deg short of Earth's 0 to
+// 111 deg axis, under one of its 1.46 deg texels there); one that does (0
+// to 90 deg, about 22 texels) stays.
 // Either way a narrowed bake gets its iteration sizes written out, with the
 // stored mu_s where the sun axis is whole and that is larger than the default.
 TEST(BakePolicy, SettledConfigKeepsOnlySunRangesThatNarrowTheAxis) {
   BakeConfig config = builtinEarthConfig();
   config.scene_ranges.altitude_m = std::array<double, 2>{0.0, 15000.0};
-  config.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 106.0};
+  config.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 109.0};
   config.sizes.scattering_mu_s = 44;
   const BakeConfig whole_sun = settledBakeConfig(config);
   EXPECT_FALSE(whole_sun.scene_ranges.sun_zenith_deg.has_value());

@@ -240,7 +240,7 @@ TEST(Config, MinimalConfigGetsDefaults) {
   EXPECT_EQ(c.atmosphere.rayleigh_scattering[0], 0.0f);
   EXPECT_TRUE(c.atmosphere.mie_density.empty());
   EXPECT_EQ(c.bake.orders, 6);
-  EXPECT_DOUBLE_EQ(c.atmosphere.sun_max_zenith_deg, 108.0);
+  EXPECT_DOUBLE_EQ(c.atmosphere.sun_max_zenith_deg, 111.0);
 }
 
 TEST(Config, RejectsSyntaxErrorsWithLine) { expectRejected(kMinimal + "\n[bake\n", {"test.toml:", "syntax"}); }

@@ -191,7 +191,7 @@ TEST(NightSky, NoStepAtTheLowestBakedSun) {
 
 // Through civil, nautical and astronomical twilight and on into the night
 // (sun zenith 90 to 120 deg in 0.01 deg steps, across the lowest baked sun
-// at 108 deg and the switch to the night continuation there), at several
+// at 111 deg and the switch to the night continuation there), at several
 // views and cameras and every wavelength, no step in the sky: the change
 // from one 0.01 deg step to the next is at most kNeighbourStepRatio times
 // the larger change of the two steps beside it, plus float rounding. For a
