@@ -50,8 +50,8 @@ ColourReferenceAtmospheres atmospheresFrom(ReadAt&& read_at) {
     }
     out.groups.push_back(read_at(wavelengths).atmosphere);
     out.group_lanes_to_xyz.push_back(lanes_to_xyz);
-    out.group_guides.push_back(std::make_shared<LitAirGuide>(out.groups.back()));
   }
+  out.guide = std::make_shared<LitAirGuide>(out.groups.front());
   return out;
 }
 
@@ -69,7 +69,7 @@ ColourEstimate sumOverGroups(const ColourReferenceAtmospheres& colour, EstimateF
     for (size_t g = 0; g < colour.groups.size(); ++g) {
       const ReferenceEstimate e =
           estimate(ReferenceSolver(colour.groups[g], ReferenceSolver::VertexSampling::TowardLitAirBelowHorizon,
-                                   colour.group_guides[g]),
+                                   colour.guide),
                    colour.group_lanes_to_xyz[g], static_cast<int>(g), h);
       half[h] += e.value;
       variance += e.standard_error * e.standard_error;  // groups and halves trace independent paths

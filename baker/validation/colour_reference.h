@@ -48,9 +48,12 @@ struct ColourReferenceAtmospheres {
   std::vector<double> wavelengths_nm;          // 380, 390, ..., 780
   std::vector<AtmosphereParameters> groups;    // group g: wavelengths g, g + G, g + 2G, ...
   std::vector<glm::dmat4> group_lanes_to_xyz;  // column c: X, Y, Z (nm) of one unit of channel c
-  // Each group's reference guide, shared by every solver of the group (its
-  // tables are computed once, not once per query).
-  std::vector<std::shared_ptr<LitAirGuide>> group_guides;
+  // The reference's guide toward twilight light, made from the first group
+  // (its wavelengths span 380 to 780 nm) and shared by every solver of
+  // every group: its tables are computed once, not once per group and
+  // query. A guide only shapes where paths go, so one made for other
+  // wavelengths leaves each group's estimate unbiased.
+  std::shared_ptr<LitAirGuide> guide;
 };
 
 // The config's atmosphere at the 41 wavelengths. Throws Error(BadInput)
