@@ -112,7 +112,7 @@ struct AtmosphereParameters {
 struct TextureSizes {
   int transmittance_mu = 256;
   int transmittance_r = 64;
-  int irradiance_mu_s = 61;  // 0.45 x 60 = 27 intervals below the horizon: a texel on it
+  int irradiance_mu_s = 81;  // 0.45 x 80 = 36 intervals below the horizon: a texel on it
   int irradiance_r = 16;
   int scattering_r = 32;
   int scattering_mu = 128;  // even: half for rays that hit the ground
