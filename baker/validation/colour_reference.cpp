@@ -67,10 +67,9 @@ ColourEstimate sumOverGroups(const ColourReferenceAtmospheres& colour, EstimateF
   SpectrumD variance(0.0);
   for (int h = 0; h < 2; ++h) {
     for (size_t g = 0; g < colour.groups.size(); ++g) {
-      const ReferenceEstimate e =
-          estimate(ReferenceSolver(colour.groups[g], ReferenceSolver::VertexSampling::TowardLitAirBelowHorizon,
-                                   colour.guide),
-                   colour.group_lanes_to_xyz[g], static_cast<int>(g), h);
+      const ReferenceEstimate e = estimate(
+          ReferenceSolver(colour.groups[g], ReferenceSolver::VertexSampling::TowardLitAirBelowHorizon, colour.guide),
+          colour.group_lanes_to_xyz[g], static_cast<int>(g), h);
       half[h] += e.value;
       variance += e.standard_error * e.standard_error;  // groups and halves trace independent paths
     }
