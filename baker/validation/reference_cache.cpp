@@ -83,6 +83,7 @@ namespace {
 // defaults are now: the defaults when the key was introduced.
 constexpr double kKeySunMaxZenith_deg = 102.0;
 constexpr int kKeyScatteringMuS = 32;
+constexpr int kKeyIrradianceMuS = 64;
 
 // The text of an atmosphere that enters a cache key: its config with fixed
 // sizes and default settings, so that only the atmosphere counts.
@@ -97,6 +98,7 @@ std::string atmosphereKeyText(const AtmosphereParameters& atmosphere) {
   physics_only.atmosphere.sun_max_zenith_deg = kKeySunMaxZenith_deg;
   physics_only.sizes = TextureSizes{};
   physics_only.sizes.scattering_mu_s = kKeyScatteringMuS;
+  physics_only.sizes.irradiance_mu_s = kKeyIrradianceMuS;
   return configToToml(physics_only);
 }
 

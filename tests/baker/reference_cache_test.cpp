@@ -41,6 +41,15 @@ class ReferenceCacheTest : public ::testing::Test {
   AtmosphereParameters atmosphere_ = builtinEarthConfig().atmosphere;
 };
 
+// The built-in Earth's cache directory keeps its name when a table-size or
+// sun-domain default changes (the key pins them): a new default must not
+// throw away every reference computed before it. The name is the one the
+// built-in Earth's references have had since the key pinned them.
+TEST_F(ReferenceCacheTest, BuiltinEarthKeyOutlivesChangesOfTheDefaults) {
+  const ReferenceCache cache(dir_, atmosphere_, 32768);
+  EXPECT_EQ(cache.directory().filename().string(), "reference-be39150a22785cbe");
+}
+
 // Two jobs open the cache before either has saved (as a sweep's validate
 // jobs or a cluster's reference pieces do) and each adds its own queries:
 // neither overwrites the other.
