@@ -49,14 +49,14 @@ constexpr int kRouletteFromEvent = 2;
 constexpr int kGuidedRouletteFromEvent = 8;
 // With the sun below the horizon, the share of vertices along a ray placed
 // by the light that arrives there (scattering times transmittance times the
-// sun's light and the once-scattered light the guide expects at the point:
-// LitAirGuide). The rest follow the density proposal as in daylight, so
+// sun's light and the once- and twice-scattered light the guide expects at
+// the point: LitAirGuide). The rest follow the density proposal as in daylight, so
 // every point of the ray keeps a positive density (unbiasedness) and a ray
 // the guide sees no light along is sampled as by day.
 constexpr double kGuidedVertexShare = 0.5;
 // With the sun below the horizon, the share of next directions drawn from
-// the guide's distribution of the once-scattered light arriving at the
-// vertex instead of by the phase function. Deep in twilight that light
+// the guide's distribution of the once- and twice-scattered light arriving
+// at the vertex instead of by the phase function. Deep in twilight that light
 // arrives from a band a few degrees wide above the sunward horizon, a few
 // thousandths of the sphere, so phase sampling alone spends nearly every
 // path where no light is; the phase share keeps every direction possible.
@@ -81,7 +81,8 @@ class PathTracer {
   // `guide` (for a sun below the query's horizon; else null): place part of
   // the vertices along each ray by the light that arrives there
   // (sampleVertex) and draw part of the next directions from where the
-  // once-scattered light at the vertex comes from (sampleScatteringDirection).
+  // light scattered once or twice at the vertex comes from
+  // (sampleScatteringDirection).
   PathTracer(const AtmosphereParameters& a, const Moon& moon, const LitAirGuide* guide)
       : a_(a), media_(a), moon_(moon), guide_(guide) {}
 
@@ -180,7 +181,7 @@ class PathTracer {
   // its end. With the guide (the sun below the horizon), a share
   // kGuidedVertexShare follows scattering times transmittance times the
   // light expected at each point: the sun's there, if `counts_sun` (the
-  // caller connects the vertex to the sun), plus the once-scattered light the
+  // caller connects the vertex to the sun), plus the scattered light the
   // guide expects to arrive (what the vertex's next ray collects). In deep
   // twilight the shadowed air near the viewer holds nearly all the density
   // but little of the light, which grows steeply with altitude, so density
@@ -291,7 +292,7 @@ class PathTracer {
   // phase-weighted scattering over the direction's density. With `site`
   // (the guide's, where it proposes directions), a share
   // kGuidedDirectionShare of the directions is drawn from where the
-  // once-scattered light arriving there comes from; the density is the
+  // scattered light arriving there comes from; the density is the
   // mixture's, so the estimate stays unbiased.
   glm::dvec3 sampleScatteringDirection(const glm::dvec3& point, const glm::dvec3& dir, double u_cos, double u_phi,
                                        const LitAirGuide::Site* site, SpectrumD& weight) const {
@@ -358,7 +359,7 @@ class PathTracer {
           total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
         SpectrumD phase_weight;
         const double u_cos = rng.next(), u_phi = rng.next();
-        // Aim part of the directions where the once-scattered light comes from.
+        // Aim part of the directions where the scattered light comes from.
         LitAirGuide::Site site;
         const bool aim = guide_ && LitAirGuide::proposesDirections(site = guide_->siteAt(v.position, sun));
         next_dir = sampleScatteringDirection(v.position, ray.dir, u_cos, u_phi, aim ? &site : nullptr, phase_weight);
