@@ -287,6 +287,42 @@ class PathTracer {
     return v;
   }
 
+  // Samples, from two uniform numbers, a direction over the sky seen from
+  // `point` (the hemisphere above `up`, its vertical), for light that
+  // reaches a horizontal surface there: cosine-weighted by day; with the
+  // guide (the sun below the horizon), a share kGuidedDirectionShare drawn
+  // from where the scattered light arriving there comes from, since in deep
+  // twilight a band a few degrees above the sunward horizon lights the
+  // ground and cosine weighting puts few directions there. Returns the
+  // direction and, in `cosine_over_pi_pdf`, cos/pi over the direction's
+  // density (1 for cosine weighting; 0 for a guide direction below the
+  // plane, which carries no light to the surface).
+  glm::dvec3 sampleHemisphereDirection(const glm::dvec3& point, const glm::dvec3& up, const glm::dvec3& sun,
+                                       double u_cos, double u_phi, double& cosine_over_pi_pdf) const {
+    LitAirGuide::Site site;
+    const double lit_share =
+        guide_ && LitAirGuide::proposesDirections(site = guide_->siteAt(point, sun)) ? kGuidedDirectionShare : 0.0;
+    glm::dvec3 dir;
+    if (u_cos < lit_share) {
+      dir = guide_->sampleDirection(site, u_cos / lit_share, u_phi);
+    } else {
+      if (lit_share > 0.0) u_cos = (u_cos - lit_share) / (1.0 - lit_share);
+      dir = directionAround(up, std::sqrt(u_cos), 2.0 * kPi * u_phi);
+    }
+    const double cosine = glm::dot(dir, up);
+    if (lit_share == 0.0) {
+      cosine_over_pi_pdf = 1.0;
+      return dir;
+    }
+    if (!(cosine > 0.0)) {
+      cosine_over_pi_pdf = 0.0;
+      return dir;
+    }
+    const double pdf = lit_share * guide_->directionPdf(site, dir) + (1.0 - lit_share) * cosine / kPi;
+    cosine_over_pi_pdf = cosine / kPi / pdf;
+    return dir;
+  }
+
   // Samples, from two uniform numbers, the direction light came from before
   // scattering at a point in the air toward -dir, and returns the
   // phase-weighted scattering over the direction's density. With `site`
@@ -350,10 +386,11 @@ class PathTracer {
       if (v.ground) {
         if (depth > 0 || !skip_first_sun)
           total += throughput * groundSunRadiance(v.position, sun, kPathOpticalDepthSegments);
-        const glm::dvec3 normal = glm::normalize(v.position);
         const double u_cos = rng.next(), u_phi = rng.next();
-        next_dir = directionAround(normal, std::sqrt(u_cos), 2.0 * kPi * u_phi);  // cosine-weighted
-        throughput *= SpectrumD(a_.ground_albedo);                                // (albedo/pi) cos / (cos/pi)
+        double reflected_share;
+        next_dir = sampleHemisphereDirection(v.position, glm::normalize(v.position), sun, u_cos, u_phi, reflected_share);
+        if (!(reflected_share > 0.0)) break;  // a guide direction below the ground: no light
+        throughput *= SpectrumD(a_.ground_albedo) * reflected_share;  // (albedo/pi) cos / pdf
       } else {
         if (depth > 0 || !skip_first_sun)
           total += throughput * sunScatteringSource(v.position, ray.dir, sun, kPathOpticalDepthSegments);
@@ -466,11 +503,14 @@ ReferenceEstimate skyIrradianceThrough(const AtmosphereParameters& a, const LitA
   const glm::dvec3 up = upAt(point);
   const glm::dvec3 start = up * std::clamp(length, a.bottom_radius_m, a.top_radius_m);
   return estimateOverReplicates(paths, seed, [&](PathSampler& sampler) {
-    // Cosine-weighted directions: irradiance = pi x mean radiance.
+    // Irradiance = pi x the mean over directions of radiance x cos/(pi pdf).
     const double u_cos = sampler.next(), u_phi = sampler.next();
-    const glm::dvec3 dir = directionAround(up, std::sqrt(u_cos), 2.0 * kPi * u_phi);
+    double cosine_over_pi_pdf;
+    const glm::dvec3 dir = tracer.sampleHemisphereDirection(start, up, sun, u_cos, u_phi, cosine_over_pi_pdf);
+    if (!(cosine_over_pi_pdf > 0.0)) return SpectrumD(0.0);
     const AtmosphereRay ray = atmosphereRay(a.bottom_radius_m, a.top_radius_m, start, dir, 0.0);
-    return ray.inside ? map(tracer.tracePath(ray, sun, true, false, sampler) * kPi) : SpectrumD(0.0);
+    return ray.inside ? map(tracer.tracePath(ray, sun, true, false, sampler) * (kPi * cosine_over_pi_pdf))
+                      : SpectrumD(0.0);
   });
 }
 

@@ -51,9 +51,12 @@ namespace {
 // Queries with the sun below the camera's horizon are sampled partly toward
 // sunlit air (referenceSamplesTowardLitAir): their keys name that sampling,
 // so values cached before it (other seeds, more noise) are never mistaken
-// for them, while the daylight keys, and values, stay as they were.
+// for them, while the daylight keys, and values, stay as they were. The 2
+// marks the sampling that guides the ground's reflection and the sky
+// irradiance's first direction as well; values keyed " guided" came from
+// the one before it, which drew those directions by the cosine alone.
 std::string samplingSuffix(double sun_zenith_deg) {
-  return referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(sun_zenith_deg, 0.0).z) ? " guided" : "";
+  return referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(sun_zenith_deg, 0.0).z) ? " guided2" : "";
 }
 
 // An eclipse's value is not the plain sky's: its key names the moon.

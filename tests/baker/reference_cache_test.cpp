@@ -196,8 +196,8 @@ TEST(SunBands, StandardSetCoversEveryTwilightBandAndKeepsDaylightKeys) {
   EXPECT_EQ(radianceKey({0.0, 30.0, 60.0, 90.0, 0.0}), "r 0 30 60 90 0");
   EXPECT_EQ(radianceKey({0.0, 90.0, 60.0, 90.0, 0.0}), "r 0 90 60 90 0");
   EXPECT_EQ(irradianceKey({1000.0, 88.0}), "e 1000 88");
-  EXPECT_EQ(radianceKey({0.0, 100.0, 60.0, 90.0, 0.0}), "r 0 100 60 90 0 guided");
-  EXPECT_EQ(irradianceKey({1000.0, 92.0}), "e 1000 92 guided");
+  EXPECT_EQ(radianceKey({0.0, 100.0, 60.0, 90.0, 0.0}), "r 0 100 60 90 0 guided2");
+  EXPECT_EQ(irradianceKey({1000.0, 92.0}), "e 1000 92 guided2");
 }
 
 }  // namespace
