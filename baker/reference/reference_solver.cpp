@@ -388,8 +388,9 @@ class PathTracer {
           total += throughput * groundSunRadiance(v.position, sun, kPathOpticalDepthSegments);
         const double u_cos = rng.next(), u_phi = rng.next();
         double reflected_share;
-        next_dir = sampleHemisphereDirection(v.position, glm::normalize(v.position), sun, u_cos, u_phi, reflected_share);
-        if (!(reflected_share > 0.0)) break;  // a guide direction below the ground: no light
+        next_dir =
+            sampleHemisphereDirection(v.position, glm::normalize(v.position), sun, u_cos, u_phi, reflected_share);
+        if (!(reflected_share > 0.0)) break;                          // a guide direction below the ground: no light
         throughput *= SpectrumD(a_.ground_albedo) * reflected_share;  // (albedo/pi) cos / pdf
       } else {
         if (depth > 0 || !skip_first_sun)
