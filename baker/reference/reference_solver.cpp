@@ -60,6 +60,9 @@ constexpr double kGuidedVertexShare = 0.5;
 // arrives from a band a few degrees wide above the sunward horizon, a few
 // thousandths of the sphere, so phase sampling alone spends nearly every
 // path where no light is; the phase share keeps every direction possible.
+// The same share serves the directions leaving the ground and a sky
+// irradiance query's first ones, against cosine weighting there (80 %
+// measured noisier in nautical twilight and no better at 108 deg).
 constexpr double kGuidedDirectionShare = 0.5;
 
 // Any unit vector perpendicular to n, and the third axis of a frame.
