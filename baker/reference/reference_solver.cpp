@@ -312,11 +312,11 @@ class PathTracer {
       if (lit_share > 0.0) u_cos = (u_cos - lit_share) / (1.0 - lit_share);
       dir = directionAround(up, std::sqrt(u_cos), 2.0 * kPi * u_phi);
     }
-    const double cosine = glm::dot(dir, up);
     if (lit_share == 0.0) {
-      cosine_over_pi_pdf = 1.0;
+      cosine_over_pi_pdf = 1.0;  // cosine-weighted: cos/pi over a density of cos/pi
       return dir;
     }
+    const double cosine = glm::dot(dir, up);
     if (!(cosine > 0.0)) {
       cosine_over_pi_pdf = 0.0;
       return dir;
