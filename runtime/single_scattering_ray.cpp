@@ -5,8 +5,14 @@
 
 #include "runtime/atmosphere_media.h"
 #include "runtime/ray_quadrature.h"
+#include "runtime/sky_lookup_constants.h"
 
 namespace skybake {
+
+double integratedSingleScatteringWeight(double mu_s) {
+  const double x = std::clamp(1.0 - mu_s / kIntegratedSingleScatteringTopCosine, 0.0, 1.0);
+  return x * x * (3.0 - 2.0 * x);
+}
 
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,

@@ -43,4 +43,12 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
                                            double t_end, int segments, const MoonAlongRay* moon = nullptr);
 
+// How much of a lookup's single scattering comes from this integral rather
+// than the tables, for a sun at zenith cosine mu_s: 1 from the horizon
+// down, 0 above kIntegratedSingleScatteringTopCosine
+// (sky_lookup_constants.h), a smoothstep between so no step shows as the
+// sun sets. The sky lookups and the bake's sky irradiance table weigh the
+// two the same way.
+double integratedSingleScatteringWeight(double mu_s);
+
 }  // namespace skybake

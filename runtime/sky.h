@@ -337,7 +337,6 @@ class Sky {
   // `ray` with a sun outside the baked sun angles moved to the nearest one,
   // as the tables take it (see the geometry conventions above).
   SunlitRay withBakedSun(const SunlitRay& ray) const;
-  static double integratedSingleScatteringWeight(double mu_s);
   void blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, double weight,
                                          SingleScattering& s) const;
 

@@ -42,7 +42,7 @@ SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& n
   }
   const SurfacePoint p = surfacePoint(sampler_.domain(), point);
   const double mu_s = clampCosine(glm::dot(p.up, sun_dir));
-  const Spectrum sky = sampler_.irradiance(bake_.tables.irradiance, p.r, mu_s) *
+  const Spectrum sky = sampler_.irradiance(bake_.tables.irradiance, bake_.tables.optical_depth, p.r, mu_s) *
                        static_cast<float>(0.5 * (1.0 + glm::dot(normal, p.up)));
   return {sunIrradiance(point, normal, sun_dir), sky};
 }

@@ -15,11 +15,6 @@
 
 namespace skybake {
 
-double Sky::integratedSingleScatteringWeight(double mu_s) {
-  const double x = std::clamp(1.0 - mu_s / kIntegratedSingleScatteringTopCosine, 0.0, 1.0);
-  return x * x * (3.0 - 2.0 * x);
-}
-
 void Sky::blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, double weight,
                                             SingleScattering& s) const {
   const SingleScattering integrated = integrateSingleScattering(sampler_, bake_.tables.optical_depth, atmosphere(), ray,

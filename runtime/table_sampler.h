@@ -174,7 +174,8 @@ class TableSampler {
         scattering_sizes_(ScatteringSizes::fromTextureSizes(sizes)),
         H_(domain.horizonToTopDistance()),
         night_(night),
-        night_4d_(domain.scattering_mu_s_coord_min <= 0.0) {}
+        night_4d_(domain.scattering_mu_s_coord_min <= 0.0),
+        irradiance_horizon_unit_(muSUnitCoord(domain, 0.0)) {}
 
   const AtmosphereDomain& domain() const { return domain_; }
   const NightContinuation& night() const { return night_; }
@@ -284,19 +285,31 @@ class TableSampler {
     return sample4D(table, c, axisLerpNu(c.u_nu, table.nu_size), radianceBlend(mu_s)) * nightScale4D(mu_s);
   }
 
-  // Linear in mu_s, geometric in r: irradiance falls off with altitude
-  // roughly exponentially (scale heights of kilometres), and linear
-  // interpolation between rows 4 km apart is 3 % high midway; log-linear
-  // interpolation follows an exponential exactly. Where a neighbour is 0
-  // (night), linear.
-  Spectrum irradiance(const Texture2D& irradiance, double r, double mu_s) const {
+  // Sky irradiance on a horizontal surface at radius r.
+  // Across mu_s: linear with the sun above the horizon. Below it, where the
+  // irradiance falls about tenfold per degree of depression, geometric (both
+  // neighbours positive): linear read up to 6 % high between texels 0.5 deg
+  // apart in twilight, geometric within 0.5 % (docs/ERROR_VS_TIME.md). The
+  // interval holding the horizon takes the geometric blend in proportion to
+  // its part below it, so the lookup is continuous for any table size.
+  // Across r: geometric, as irradiance falls off with altitude roughly
+  // exponentially (scale heights of kilometres; linear between rows 4 km
+  // apart is 3 % high midway), or linear where a neighbour is 0 (night).
+  // Between the last row below the top and the top, where the sky above
+  // thins to nothing and the top row holds 0, the lower row's irradiance
+  // scaled by the vertical optical depth above r over that above the row: a
+  // thin layer's sky glows in proportion to the air in it. Linear in r read
+  // 27 % high 100 m below the default Earth's top, this within 8 %.
+  Spectrum irradiance(const Texture2D& irradiance, const Texture2D& optical_depth, double r, double mu_s) const {
     const TextureCoord2D uv = irradianceCoordFromRMuS(domain_, sizes_.irradiance_mu_s, sizes_.irradiance_r, r, mu_s);
     const AxisLerp x = axisLerpFromTextureCoord(uv.u, irradiance.width);
     const AxisLerp y = axisLerpFromTextureCoord(uv.v, irradiance.height);
-    auto row = [&](int i_r) {
-      return irradiance.at(x.i0, i_r) + (irradiance.at(x.i1, i_r) - irradiance.at(x.i0, i_r)) * x.w1;
-    };
-    const Spectrum low = row(y.i0), high = row(y.i1);
+    const Spectrum low = irradianceRow(irradiance, x, y.i0);
+    if (y.i1 == irradiance.height - 1 && y.i1 > y.i0) {
+      const double row_r = irradianceTexelConfig(domain_, irradiance.width, irradiance.height, 0, y.i0).r;
+      return low * thinningToTop(optical_depth, r, row_r) * nightScale(mu_s);
+    }
+    const Spectrum high = irradianceRow(irradiance, x, y.i1);
     Spectrum out;
     for (int c = 0; c < kMaxChannels; ++c) {
       out[c] =
@@ -304,14 +317,49 @@ class TableSampler {
     }
     return out * nightScale(mu_s);
   }
+  // The sky irradiance on the ground (the table's lowest row), blended
+  // across mu_s as irradiance() does.
+  Spectrum groundIrradiance(const Texture2D& irradiance, double mu_s) const {
+    const TextureCoord2D uv =
+        irradianceCoordFromRMuS(domain_, sizes_.irradiance_mu_s, sizes_.irradiance_r, domain_.bottom_radius_m, mu_s);
+    return irradianceRow(irradiance, axisLerpFromTextureCoord(uv.u, irradiance.width), 0) * nightScale(mu_s);
+  }
 
  private:
+  // Row i_r of the irradiance table at the mu_s position x (see irradiance).
+  Spectrum irradianceRow(const Texture2D& irradiance, const AxisLerp& x, int i_r) const {
+    const Spectrum a = irradiance.at(x.i0, i_r), b = irradiance.at(x.i1, i_r);
+    Spectrum out = a + (b - a) * x.w1;
+    const float below_horizon =
+        std::clamp(1.0f + static_cast<float>(irradiance_horizon_unit_ * (irradiance.width - 1)) - x.i1, 0.0f, 1.0f);
+    if (below_horizon <= 0.0f) return out;
+    for (int c = 0; c < kMaxChannels; ++c) {
+      if (a[c] > 0.0f && b[c] > 0.0f) {
+        out[c] = out[c] * (1.0f - below_horizon) + geometricBlend(a[c], b[c], x.w1) * below_horizon;
+      }
+    }
+    return out;
+  }
+  // The vertical optical depth above r over that above r_row (r_row < top),
+  // per channel: 1 at r_row, 0 at the top. Kept within [0, 1] against the
+  // table's interpolation; 1 where no air is above r_row.
+  Spectrum thinningToTop(const Texture2D& optical_depth, double r, double r_row) const {
+    const Spectrum above_r = opticalDepthToTop(optical_depth, std::min(r, domain_.top_radius_m), 1.0);
+    const Spectrum above_row = opticalDepthToTop(optical_depth, r_row, 1.0);
+    Spectrum ratio(1.0f);
+    for (int c = 0; c < kMaxChannels; ++c) {
+      if (above_row[c] > 0.0f) ratio[c] = std::clamp(above_r[c] / above_row[c], 0.0f, 1.0f);
+    }
+    return ratio;
+  }
+
   AtmosphereDomain domain_;
   TextureSizes sizes_;
   ScatteringSizes scattering_sizes_;
   double H_;  // domain_.horizonToTopDistance()
   NightContinuation night_;
-  bool night_4d_;  // the 4D tables' sun axis reaches the domain's lowest sun
+  bool night_4d_;                   // the 4D tables' sun axis reaches the domain's lowest sun
+  double irradiance_horizon_unit_;  // the irradiance table's unit mu_s coordinate of the horizon
 };
 
 }  // namespace skybake

@@ -283,7 +283,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                   scene->sum);
     }
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r,
-                                 [&] { return computeIndirectIrradianceTable(ctx, previous); });
+                                 [&] { return computeIndirectIrradianceTable(ctx, optical_depth, previous); });
     addScaled(tables.irradiance.texels, delta_irradiance.texels, Spectrum(1.0f));
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 

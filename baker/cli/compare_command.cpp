@@ -361,7 +361,8 @@ Command addCompareCommand(CLI::App& app) {
       "compare", "Error against the reference and cost of the bake at several resolutions and of the simpler methods.");
   cmd->add_option("config", o->config_path, "Atmosphere config (default: the built-in Earth).");
   cmd->add_option("--queries", o->queries, "standard, quick or a CSV (see validate).")->capture_default_str();
-  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples, "Monte Carlo paths per reference query.")
+  requireWholeIn(cmd->add_option("--reference-samples", o->reference_samples,
+                                 "Monte Carlo paths per reference query (see validate).")
                      ->capture_default_str(),
                  1, kMaxReferencePaths);
   CLI::Option* resolutions =

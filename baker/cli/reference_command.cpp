@@ -97,11 +97,14 @@ void runReference(const ReferenceOptions& o) {
   const size_t total = queries.radiance.size() + queries.irradiance.size();
   if (o.estimate) {
     size_t missing = 0;
+    double missing_paths = 0.0;
     nlohmann::ordered_json lane_groups = nlohmann::ordered_json::array();
     std::string directory;
     for (const AtmosphereParameters& group : groups) {
       const ReferenceCache cache(settings.cache_directory, group, settings.paths);
-      const size_t group_missing = queriesMissingFromCache(cache, queries).size();
+      const std::vector<size_t> group_items = queriesMissingFromCache(cache, queries);
+      const size_t group_missing = group_items.size();
+      for (size_t item : group_items) missing_paths += referencePathsFor(queries, item, settings.paths);
       missing += group_missing;
       directory = cache.directory().string();
       lane_groups.push_back({{"wavelengths_nm", group.wavelengths_nm},
@@ -110,15 +113,14 @@ void runReference(const ReferenceOptions& o) {
                              {"cache_directory", directory}});
     }
     // Counted over every lane group's reference: a spectral source's queries are computed once per group.
-    nlohmann::ordered_json j{
-        {"source", source},
-        {"query_set", queries.name},
-        {"piece", fmt::format("{}/{}", piece.index, piece.count)},
-        {"paths_per_query", settings.paths},
-        {"queries", total * groups.size()},
-        {"cached", total * groups.size() - missing},
-        {"to_compute", missing},
-        {"estimated_core_seconds", std::ceil(missing * double(settings.paths) * kReferenceCoreSecondsPerPath)}};
+    nlohmann::ordered_json j{{"source", source},
+                             {"query_set", queries.name},
+                             {"piece", fmt::format("{}/{}", piece.index, piece.count)},
+                             {"paths_per_query", settings.paths},
+                             {"queries", total * groups.size()},
+                             {"cached", total * groups.size() - missing},
+                             {"to_compute", missing},
+                             {"estimated_core_seconds", std::ceil(missing_paths * kReferenceCoreSecondsPerPath)}};
     if (groups.size() == 1) {
       j["cache_directory"] = directory;
     } else {
@@ -133,14 +135,16 @@ void runReference(const ReferenceOptions& o) {
         groups.size() == 1 ? "reference" : fmt::format("reference, lane group {}/{}", g + 1, groups.size());
     const ReferenceValues reference = computeReferenceValues(groups[g], queries, settings, progress, stage);
     fmt::print(
-        "reference for {}{} ({} paths per query), query set '{}' piece {} of {}: {} radiance and {} irradiance "
-        "queries ({} from the cache, {} computed in {:.1f} s) in {}\n",
+        "reference for {}{} ({} paths per query, {} times that for rays to points with the sun below the "
+        "horizon), query set '{}' piece {} of {}: {} radiance and {} irradiance queries ({} from the cache, {} "
+        "computed in {:.1f} s) in {}\n",
         source,
         groups.size() == 1
             ? ""
             : fmt::format(", lane group {} of {} ({} nm)", g + 1, groups.size(), wavelengthList(groups[g])),
-        settings.paths, queries.name, piece.index, piece.count, queries.radiance.size(), queries.irradiance.size(),
-        reference.cached, reference.computed, reference.seconds, settings.cache_directory.string());
+        settings.paths, kTwilightPointRayPathFactor, queries.name, piece.index, piece.count, queries.radiance.size(),
+        queries.irradiance.size(), reference.cached, reference.computed, reference.seconds,
+        settings.cache_directory.string());
   }
 }
 

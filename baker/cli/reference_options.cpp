@@ -14,8 +14,9 @@ void addReferenceOptions(CLI::App& command, std::string& queries, int& reference
       ->capture_default_str();
   requireWholeIn(command
                      .add_option("--reference-samples", reference_samples,
-                                 "Monte Carlo paths per reference query (0: single scattering alone, the "
-                                 "reference's deterministic part, to compare a bake of one order with).")
+                                 "Monte Carlo paths per reference query, twice that for a ray to a point with the "
+                                 "sun below the camera's horizon (0: single scattering alone, the reference's "
+                                 "deterministic part, to compare a bake of one order with).")
                      ->capture_default_str(),
                  0, kMaxReferencePaths);
   command.add_option("--cache-dir", cache_dir,

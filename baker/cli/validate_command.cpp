@@ -159,9 +159,10 @@ void runValidate(const ValidateOptions& o) {
   const double value_scale = report.smallest_compared_value / kSmallestComparedValue;
   const int groups = sky.laneGroupCount();
   fmt::print(
-      "validate {} against the reference ({} paths per query{}), query set '{}': {} radiance and {} "
-      "irradiance queries ({} from the cache, {} computed in {:.1f} s)\n",
-      o.bake_path, settings.paths,
+      "validate {} against the reference ({} paths per query, {} times that for rays to points with the sun "
+      "below the horizon{}), query set '{}': {} radiance and {} irradiance queries ({} from the cache, {} computed "
+      "in {:.1f} s)\n",
+      o.bake_path, settings.paths, kTwilightPointRayPathFactor,
       groups > 1 ? fmt::format("; {} lane groups of up to 4 wavelengths, each against its own reference", groups) : "",
       queries.name, queries.radiance.size(), queries.irradiance.size(), reference.cached, reference.computed,
       reference.seconds);

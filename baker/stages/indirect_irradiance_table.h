@@ -7,6 +7,9 @@
 namespace skybake {
 
 // Irradiance on a horizontal surface from the sky radiance of one order.
-Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const OrderRadiance& order);
+// `optical_depth` is the transmittance stage's table, for order 1's single
+// scattering integrated along the view rays with the sun below the horizon.
+Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const Texture2D& optical_depth,
+                                         const OrderRadiance& order);
 
 }  // namespace skybake

@@ -62,8 +62,8 @@ void incidentRingModes(const StageContext& ctx, const DensityKernelAltitude& ker
         // through the air between the ground point and x.
         const double ground_mu_s =
             clampCosine(node.ground_up_horizontal * cosines.cos_phi[j] * sun_x + node.ground_up_vertical * mu_s);
-        radiance += node.ground_transmittance * ground_brdf *
-                    ctx.sampler.irradiance(ground_irradiance, a.bottom_radius_m, ground_mu_s);
+        radiance +=
+            node.ground_transmittance * ground_brdf * ctx.sampler.groundIrradiance(ground_irradiance, ground_mu_s);
       }
       for (int c = 0; c < kMaxChannels; ++c) {
         const float weighted = static_cast<float>(radiance[c] * node.solid_angle_sr);

@@ -179,8 +179,9 @@ ColourReferenceValues computeColourReference(const ColourReferenceAtmospheres& c
     if (item < queries.radiance.size()) {
       const RadianceQuery& q = queries.radiance[item];
       const QueryGeometry g = geometryOf(a, q);
-      const ColourEstimate e = colourRadianceReference(colour, {g.camera, g.view, g.sun, q.distance_m}, settings.paths,
-                                                       stableHash(radianceKey(q)), g.moon);
+      const ColourEstimate e =
+          colourRadianceReference(colour, {g.camera, g.view, g.sun, q.distance_m}, referencePathsFor(q, settings.paths),
+                                  stableHash(radianceKey(q)), g.moon);
       out.radiance[item] = {e.value, e.standard_error, SpectrumD(0.0), e.half_difference};
     } else {
       const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];

@@ -75,9 +75,23 @@ Moon moonOf(const glm::dvec3& camera, const glm::dvec3& sun, const MoonQuery& q)
 
 }  // namespace
 
+int referencePathsFor(const RadianceQuery& q, int paths) {
+  const bool twilight_point =
+      q.distance_m > 0.0 && referenceSamplesTowardLitAir(directionFromZenithAzimuthDeg(q.sun_zenith_deg, 0.0).z);
+  return twilight_point ? paths * kTwilightPointRayPathFactor : paths;
+}
+
+int referencePathsFor(const QuerySet& queries, size_t item, int paths) {
+  return item < queries.radiance.size() ? referencePathsFor(queries.radiance[item], paths) : paths;
+}
+
 std::string radianceKey(const RadianceQuery& q) {
-  return withMoon(fmt::format("r {} {} {} {} {}{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
-                              q.view_azimuth_deg, q.distance_m, samplingSuffix(q.sun_zenith_deg)),
+  // A query given more paths than the set's names the factor, so its value
+  // is never mistaken for one from fewer.
+  const std::string more_paths =
+      referencePathsFor(q, 1) > 1 ? fmt::format(" paths x{}", referencePathsFor(q, 1)) : std::string();
+  return withMoon(fmt::format("r {} {} {} {} {}{}{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
+                              q.view_azimuth_deg, q.distance_m, samplingSuffix(q.sun_zenith_deg), more_paths),
                   q.moon);
 }
 
@@ -178,7 +192,8 @@ ReferenceValues computeReferenceValues(const AtmosphereParameters& a, const Quer
       const RadianceQuery& q = queries.radiance[item];
       const QueryGeometry g = geometryOf(a, q);
       const ReferenceRay ray{g.camera, g.view, g.sun, q.distance_m};
-      const ReferenceEstimate e = solver.radiance(ray, settings.paths, stableHash(radianceKey(q)), g.moon);
+      const ReferenceEstimate e =
+          solver.radiance(ray, referencePathsFor(q, settings.paths), stableHash(radianceKey(q)), g.moon);
       out.radiance[item] = {e.value, e.standard_error, solver.transmittance(ray)};
     } else {
       const IrradianceQuery& q = queries.irradiance[item - queries.radiance.size()];

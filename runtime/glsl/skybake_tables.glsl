@@ -246,18 +246,50 @@ vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
 
 // ---- irradiance (2D: u = mu_s, v = r) ----
 
-// Sky irradiance on a horizontal surface at radius r: linear in mu_s,
-// geometric in r where both rows are positive.
+// Row `row` of the irradiance table at the mu_s position x: linear with the
+// sun above the horizon, geometric below it where both texels are positive,
+// the interval holding the horizon in proportion to its part below
+// (TableSampler::irradianceRow).
+vec4 skybakeIrradianceRow(SkybakeAxisLerp x, int row) {
+  vec4 a = texelFetch(skybake_irradiance, ivec2(x.i0, row), 0);
+  vec4 b = texelFetch(skybake_irradiance, ivec2(x.i1, row), 0);
+  vec4 linear_blend = a + (b - a) * x.w1;
+  float horizon_texel = skybakeMuSUnitCoord(0.0) * float(skybake_table_2d_size.z - 1);
+  float below_horizon = clamp(1.0 + horizon_texel - float(x.i1), 0.0, 1.0);
+  bvec4 positive = bvec4(vec4(greaterThan(a, vec4(0.0))) * vec4(greaterThan(b, vec4(0.0))));
+  // Logarithms of 1 where a texel is 0, so no log(0) is taken.
+  vec4 safe_a = mix(vec4(1.0), a, positive);
+  vec4 safe_b = mix(vec4(1.0), b, positive);
+  vec4 geometric = exp((1.0 - x.w1) * log(safe_a) + x.w1 * log(safe_b));
+  return mix(linear_blend, geometric, below_horizon * vec4(positive));
+}
+
+// Sky irradiance on a horizontal surface at radius r: across mu_s as
+// skybakeIrradianceRow, geometric in r where both rows are positive; between
+// the last row below the top and the top, the lower row's times the
+// vertical optical depth above r over that above the row
+// (TableSampler::irradiance).
 vec4 skybakeIrradianceTable(float r, float mu_s) {
   int size_mu_s = skybake_table_2d_size.z;
   int size_r = skybake_table_2d_size.w;
   float bottom = skybake_radii_m.x;
+  float top = skybake_radii_m.y;
   float u = skybakeTextureCoordFromUnitRange(skybakeMuSUnitCoord(mu_s), size_mu_s);
-  float v = skybakeTextureCoordFromUnitRange((r - bottom) / (skybake_radii_m.y - bottom), size_r);
+  float v = skybakeTextureCoordFromUnitRange((r - bottom) / (top - bottom), size_r);
   SkybakeAxisLerp x = skybakeAxisLerp(u, size_mu_s);
   SkybakeAxisLerp y = skybakeAxisLerp(v, size_r);
-  vec4 low = skybakeSampleRow(skybake_irradiance, x, y.i0);
-  vec4 high = skybakeSampleRow(skybake_irradiance, x, y.i1);
+  vec4 low = skybakeIrradianceRow(x, y.i0);
+  if (y.i1 == size_r - 1 && y.i1 > y.i0) {
+    float row_r = bottom + float(y.i0) / float(size_r - 1) * (top - bottom);
+    vec4 above_r = skybakeOpticalDepthToTop(min(r, top), 1.0);
+    vec4 above_row = skybakeOpticalDepthToTop(row_r, 1.0);
+    // The floor keeps the discarded quotient finite where no air is above
+    // the row (mix would carry a NaN through).
+    vec4 thinning = mix(vec4(1.0), clamp(above_r / max(above_row, vec4(1e-30)), 0.0, 1.0),
+                        vec4(greaterThan(above_row, vec4(0.0))));
+    return low * thinning * skybakeNightScale(mu_s);
+  }
+  vec4 high = skybakeIrradianceRow(x, y.i1);
   bvec4 positive = bvec4(vec4(greaterThan(low, vec4(0.0))) * vec4(greaterThan(high, vec4(0.0))));
   vec4 safe_low = mix(vec4(1.0), low, positive);
   vec4 safe_high = mix(vec4(1.0), high, positive);

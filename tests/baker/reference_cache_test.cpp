@@ -200,5 +200,24 @@ TEST(SunBands, StandardSetCoversEveryTwilightBandAndKeepsDaylightKeys) {
   EXPECT_EQ(irradianceKey({1000.0, 92.0}), "e 1000 92 guided2");
 }
 
+// Rays to a point with the sun below the camera's horizon take more paths
+// than the set's, and their keys say so; every other query takes the set's.
+TEST(ReferencePaths, TwilightRaysToPointsTakeMorePathsAndNameThemInTheirKeys) {
+  const RadianceQuery twilight_point{0.0, 95.0, 80.0, 90.0, 10000.0};
+  EXPECT_EQ(referencePathsFor(twilight_point, 32768), 32768 * kTwilightPointRayPathFactor);
+  EXPECT_EQ(radianceKey(twilight_point),
+            fmt::format("r 0 95 80 90 10000 guided2 paths x{}", kTwilightPointRayPathFactor));
+  const RadianceQuery day_point{0.0, 60.0, 80.0, 90.0, 10000.0};
+  EXPECT_EQ(referencePathsFor(day_point, 32768), 32768);
+  EXPECT_EQ(radianceKey(day_point), "r 0 60 80 90 10000");
+  const RadianceQuery twilight_sky{0.0, 95.0, 80.0, 90.0, 0.0};
+  EXPECT_EQ(referencePathsFor(twilight_sky, 32768), 32768);
+  EXPECT_EQ(radianceKey(twilight_sky), "r 0 95 80 90 0 guided2");
+  const QuerySet set{"t", {twilight_sky, twilight_point}, {{1000.0, 95.0}}};
+  EXPECT_EQ(referencePathsFor(set, 0, 64), 64);
+  EXPECT_EQ(referencePathsFor(set, 1, 64), 64 * kTwilightPointRayPathFactor);
+  EXPECT_EQ(referencePathsFor(set, 2, 64), 64);  // the irradiance query
+}
+
 }  // namespace
 }  // namespace skybake

@@ -538,10 +538,15 @@ TEST_F(GlParity, IrradianceAndTransmittance) {
   const Sky sky = Sky::load(bakePath("gl_earth.exr"));
   const GlLookups gl(sky);
   const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  const float top = static_cast<float>(sky.atmosphere().top_radius_m);
   std::vector<Query> irradiance, transmittance;
   int i = 0;
   for (const glm::vec3& d : directions(512, 3)) {
-    const glm::vec3 point(0.0f, 0.0f, bottom + 500.0f * static_cast<float>(i % 9));
+    // Every fourth point in the last 4 km below the top, where the sky
+    // irradiance follows the air above (TableSampler::irradiance).
+    const float radius =
+        i % 4 == 3 ? top - 137.0f * static_cast<float>(i % 29) : bottom + 500.0f * static_cast<float>(i % 9);
+    const glm::vec3 point(0.0f, 0.0f, radius);
     const glm::vec3 normal = glm::normalize(d + glm::vec3(0.0f, 0.0f, 1.0f));
     irradiance.push_back({Kind::Irradiance, point, normal, sunAt(5.0 + 0.2 * (i % 470))});
     const glm::vec3 a(0.0f, 0.0f, bottom + (i % 3 == 0 ? 500000.0f : 100.0f * (i % 7)));

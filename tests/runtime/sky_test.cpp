@@ -392,6 +392,87 @@ TEST(Sky, IrradianceLookupsEqualTheTableAtTexelCentres) {
   }
 }
 
+// The sky irradiance on a horizontal surface by summing the sky radiance
+// lookups over the upper hemisphere: 256 zenith rings (midpoints) x 32
+// azimuths over half the circle, counted twice (the sky is mirror
+// symmetric about the sun's azimuth). 1024 rings move it by under 0.2 %.
+Spectrum skyIrradianceFromRadiance(const Sky& sky, double r, const glm::dvec3& sun) {
+  constexpr int kRings = 256, kAzimuths = 32;
+  const double d_theta = kPi / 2.0 / kRings, d_phi = kPi / kAzimuths;
+  SpectrumD sum(0.0);
+  for (int i = 0; i < kRings; ++i) {
+    const double theta = (i + 0.5) * d_theta;
+    const double weight = 2.0 * std::cos(theta) * std::sin(theta) * d_theta * d_phi;
+    for (int j = 0; j < kAzimuths; ++j) {
+      const double phi = (j + 0.5) * d_phi;
+      const glm::dvec3 view(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      sum += SpectrumD(sky.skyRadiance({0.0, 0.0, r}, view, sun).radiance) * weight;
+    }
+  }
+  return Spectrum(sum);
+}
+
+// With the sun below the horizon the sky irradiance lookup is the sum of
+// the sky radiance lookups over the hemisphere: the bake integrates single
+// scattering along each of its directions as the lookups do, with a band
+// of directions just above the horizon, where the twilight glow is, and the
+// lookup blends the sun axis geometrically. Measured on the default Earth
+// up to 30 km, suns 90.5 to 107 deg: within 4.0 % (30 km, 95 deg, 680 nm,
+// just above that height's horizon, between texels), 1.5 % RMS. Before,
+// with the tables' single scattering, 32 even zenith rings and a linear
+// sun axis, 30 km read 12.8 % high at 98 deg and the ground 4.5 % high
+// between texels at 95.5 deg. Cameras higher up, whose own sunset falls
+// between two rows 4 km apart, are not covered: 44 km reads 9 % low at
+// 96.5 deg, 56 km 31 % high at 98 deg (docs/ERROR_VS_TIME.md).
+TEST(Sky, TwilightSkyIrradianceIsTheHemisphereSumOfTheSkyRadiance) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  double sum_sq = 0.0, worst = 0.0;
+  int n = 0;
+  for (double altitude : {0.0, 1000.0, 10000.0, 28000.0, 30000.0}) {
+    for (double sun_zenith = 90.5; sun_zenith < 107.5; sun_zenith += 1.5) {
+      const double r = a.bottom_radius_m + altitude;
+      const glm::dvec3 sun = direction(sun_zenith, 0.0);
+      const Spectrum table = sky.irradiance({0.0, 0.0, r}, {0.0, 0.0, 1.0}, sun).sky;
+      const Spectrum summed = skyIrradianceFromRadiance(sky, r, sun);
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_GT(summed[c], 0.0f) << altitude << " m, sun " << sun_zenith;
+        const double e = table[c] / summed[c] - 1.0;
+        sum_sq += e * e;
+        worst = std::max(worst, std::abs(e));
+        ++n;
+      }
+    }
+  }
+  const double rms = std::sqrt(sum_sq / n);
+  RecordProperty("rms", std::to_string(rms));
+  RecordProperty("worst", std::to_string(worst));
+  // A quarter above the measured figures.
+  EXPECT_LT(worst, 0.05);
+  EXPECT_LT(rms, 0.02);
+}
+
+// 100 m below the top of the atmosphere the sky above is a thin layer: the
+// lookup scales the last row below the top by the air above (the vertical
+// optical depth). Measured 2.4 to 3.6 % below the hemisphere sum by day
+// and 7.7 % above it with the sun at 90.5 to 93.5 deg (the slant paths'
+// share changes across the last 4 km); linear in altitude to the top
+// row's 0 it read 27 % high.
+TEST(Sky, SkyIrradianceJustBelowTheTopFollowsTheAirAbove) {
+  const Sky& sky = bakedSky("earth.exr");
+  const AtmosphereParameters& a = sky.atmosphere();
+  const double r = a.top_radius_m - 100.0;
+  for (double sun_zenith : {30.0, 60.0, 90.5, 92.0}) {
+    const glm::dvec3 sun = direction(sun_zenith, 0.0);
+    const Spectrum table = sky.irradiance({0.0, 0.0, r}, {0.0, 0.0, 1.0}, sun).sky;
+    const Spectrum summed = skyIrradianceFromRadiance(sky, r, sun);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(table[c] / summed[c], 1.0, 0.1) << "sun " << sun_zenith << ", " << c;
+  }
+  // And at the top itself, nothing above: none.
+  const Spectrum at_top = sky.irradiance({0.0, 0.0, a.top_radius_m}, {0.0, 0.0, 1.0}, direction(30.0, 0.0)).sky;
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(at_top[c], 0.0f);
+}
+
 TEST(Sky, SunBelowBakedRangeAndOddCamerasGiveFiniteValues) {
   const Sky& sky = bakedSky("earth.exr");
   const AtmosphereParameters& a = sky.atmosphere();
