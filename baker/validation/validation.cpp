@@ -88,8 +88,8 @@ int referencePathsFor(const QuerySet& queries, size_t item, int paths) {
 std::string radianceKey(const RadianceQuery& q) {
   // A query given more paths than the set's names the factor, so its value
   // is never mistaken for one from fewer.
-  const std::string more_paths =
-      referencePathsFor(q, 1) > 1 ? fmt::format(" paths x{}", referencePathsFor(q, 1)) : std::string();
+  const int path_factor = referencePathsFor(q, 1);
+  const std::string more_paths = path_factor > 1 ? fmt::format(" paths x{}", path_factor) : std::string();
   return withMoon(fmt::format("r {} {} {} {} {}{}{}", q.altitude_m, q.sun_zenith_deg, q.view_zenith_deg,
                               q.view_azimuth_deg, q.distance_m, samplingSuffix(q.sun_zenith_deg), more_paths),
                   q.moon);
