@@ -241,7 +241,11 @@ FirstPart findFirstPart(const Reader& in) {
   in.fail(fmt::format("part '{}' is missing", kPartOpticalDepth));
 }
 
-BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t file_bytes) {
+// What a read fills in: everything, or the headers alone (every attribute and
+// part checked, the tables' sizes set, no texels read).
+enum class ReadTables { All, None };
+
+BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t file_bytes, ReadTables read) {
   Reader in(stream, source);
   // The optical-depth part is in every version and carries every attribute
   // (the others carry all but the config and the report since version 4).
@@ -329,6 +333,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
                     "bytes can hold: the header is corrupt",
                     stored_bytes, file_bytes));
   }
+  if (read == ReadTables::None) return bake;
   for (size_t i = 0; i < layouts.size(); ++i) {
     std::vector<Reader::LaneGroupTexels> groups;
     for (size_t g = 0; g < group_tables.size(); ++g) {
@@ -348,10 +353,11 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
 // Opens the stream inside the error conversion: OpenEXR reports truncated and
 // corrupt files through its own exceptions, which become Error(BadInput).
 template <typename OpenStream>
-BakeFile readConverted(const std::string& source, uint64_t file_bytes, OpenStream open) {
+BakeFile readConverted(const std::string& source, uint64_t file_bytes, OpenStream open,
+                       ReadTables read = ReadTables::All) {
   try {
     auto stream = open();
-    return readChecked(*stream, source, file_bytes);
+    return readChecked(*stream, source, file_bytes, read);
   } catch (const Error&) {
     throw;
   } catch (const std::bad_alloc&) {
@@ -363,7 +369,9 @@ BakeFile readConverted(const std::string& source, uint64_t file_bytes, OpenStrea
 
 }  // namespace
 
-BakeFile readBakeFile(const std::filesystem::path& path) {
+namespace {
+
+BakeFile readBakeFileFrom(const std::filesystem::path& path, ReadTables read) {
   std::error_code error;
   const std::string source = path.string();
   if (std::filesystem::is_directory(path, error)) {
@@ -374,11 +382,20 @@ BakeFile readBakeFile(const std::filesystem::path& path) {
   }
   const uintmax_t file_bytes = std::filesystem::file_size(path, error);
   if (error) throwBadInput(fmt::format("{}: cannot read the file size: {}", source, error.message()));
-  return readConverted(source, file_bytes, [&] {
-    checkExrHeaders(path, source);
-    return std::make_unique<Imf::StdIFStream>(source.c_str());
-  });
+  return readConverted(
+      source, file_bytes,
+      [&] {
+        checkExrHeaders(path, source);
+        return std::make_unique<Imf::StdIFStream>(source.c_str());
+      },
+      read);
 }
+
+}  // namespace
+
+BakeFile readBakeFile(const std::filesystem::path& path) { return readBakeFileFrom(path, ReadTables::All); }
+
+BakeFile readBakeFileHeader(const std::filesystem::path& path) { return readBakeFileFrom(path, ReadTables::None); }
 
 BakeFile readBakeFileFromMemory(std::span<const std::byte> bytes, const std::string& source_name) {
   return readConverted(source_name, bytes.size(), [&] {

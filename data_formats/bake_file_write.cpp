@@ -13,6 +13,7 @@
 #include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
 #include <fmt/format.h>
 
 #include "atomic_file.h"
@@ -175,6 +176,8 @@ std::string table4DSizeText(const Texture4D& t) {
 }
 
 }  // namespace
+
+void setBakeFileWriteThreads(int threads) { Imf::setGlobalThreadCount(std::max(threads, 0)); }
 
 void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
                    const std::function<void(const std::filesystem::path& temp)>& before_rename) {

@@ -23,6 +23,8 @@ constexpr double kRangeSunZenithTolerance_deg = 1e-6;
 
 double degreesOfCosine(double cosine) { return degreesFromRadians(std::acos(clampCosine(cosine))); }
 
+}  // namespace
+
 // Tables whose sun axis reaches the domain's lowest sun go on below it to
 // the nadir (the night continuation, runtime/night_sky.h): every sun.
 BakedRanges bakedRangesOf(const AtmosphereDomain& d) {
@@ -35,6 +37,8 @@ BakedRanges bakedRangesOf(const AtmosphereDomain& d) {
       d.scattering_mu_s_coord_min <= 0.0 ? 180.0 : degreesOfCosine(muSFromUnitCoord(d, d.scattering_mu_s_coord_min)),
       thickness_m};
 }
+
+namespace {
 
 // A spectral bake's lane groups as ordinary Skies, their tables moved out
 // of `bake`, which keeps the file's contents and, for the night

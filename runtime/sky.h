@@ -80,6 +80,10 @@ struct BakedRanges {
   }
 };
 
+// The ranges of a bake whose tables cover `domain` (BakeContents::domain):
+// what Sky::bakedRanges gives, without loading the tables.
+BakedRanges bakedRangesOf(const AtmosphereDomain& domain);
+
 struct SunAndSkyIrradiance {
   Spectrum sun;  // direct sun, W m^-2 nm^-1
   Spectrum sky;  // scattered skylight, W m^-2 nm^-1

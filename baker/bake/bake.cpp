@@ -100,32 +100,22 @@ TailEstimate tableTailRatio(const std::vector<OrderContribution>& orders, int ch
   return tail;
 }
 
-// Adds the orders after the last computed one to the tables, each slice's
-// as its own multiple of the last order (SliceTail); the SliceTail, or none
-// where the table's ratio allows no tail (tail.reason says why).
+// Adds the orders after the last computed one to the stored density, each
+// slice's as its own multiple of the last order (SliceTail); the stored
+// multiple scattering and sky irradiance, integrated from that density
+// afterwards, then hold them too. The SliceTail, or none where the table's
+// ratio allows no tail (tail.reason says why).
 std::optional<SliceTail> addTailEstimate(const TableSampler& sampler, const std::vector<OrderContribution>& orders,
                                          const OrderConvergence& convergence, int channels,
-                                         const Texture4D& last_radiance, const Texture4D& last_density,
-                                         const MultipleScatteringPhase& last_shape,
-                                         const MultipleScatteringPhase& stored_shape, const Texture2D& last_irradiance,
-                                         BakeTables& tables, TailEstimate& tail) {
+                                         const Texture4D& last_density, const MultipleScatteringPhase& last_shape,
+                                         const MultipleScatteringPhase& stored_shape, BakeTables& tables,
+                                         TailEstimate& tail) {
   tail = tableTailRatio(orders, channels);
   if (!tail.applied) return std::nullopt;
   std::optional<SliceTail> slices(std::in_place, sampler, convergence.sliceMeans(2), convergence.sliceMeans(1),
                                   convergence.sliceMeans(0), tail.ratio, kMaxTailRatio);
-  addReshaped(sampler, TexelLayout::Scattering, last_radiance, last_shape, stored_shape, slices->scales(),
-              tables.multiple_scattering);
   addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, slices->scales(),
               tables.multiple_density);
-  // The sky irradiance holds orders 1 .. N-1; the rest follow the same series
-  // from order N - 1 on, at each texel's altitude and sun.
-  const Texture2D& e = last_irradiance;
-  for (int i_r = 0; i_r < e.height; ++i_r) {
-    for (int i_mu_s = 0; i_mu_s < e.width; ++i_mu_s) {
-      const RMuS texel = irradianceTexelConfig(sampler.domain(), e.width, e.height, i_mu_s, i_r);
-      tables.irradiance.at(i_mu_s, i_r) += e.at(i_mu_s, i_r) * slices->scaleAt(texel.r, texel.mu_s);
-    }
-  }
   tail.reason = fmt::format(
       "applied after order {}: the remaining orders as a series whose ratio relaxes from each slice's last toward "
       "the table's (at most {:.3g} times the last order)",
@@ -232,17 +222,26 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     report.orders.push_back({1, meanOfSlices(single), Spectrum(0.0f)});
   }
 
-  // Orders 2..N, each texel divided by the multiple-scattering shape at its
-  // r and nu (runtime/multiple_scattering_phase.h): while iterating, each
-  // order by its own; summed into the file, by the stored one, which a lookup
+  // Orders 2..N. Each order's scattering density is computed on the stored
+  // density's texels and summed there; its radiance, which only feeds the
+  // next order's density (an integral over every direction, which smooths
+  // it), on coarser view and view-sun axes (orderRadianceSizes). The stored
+  // multiple scattering is then the summed density, tail included,
+  // integrated along each ray once, rather than every order's integrated
+  // and summed: the integral is linear in the density. Texels are divided by
+  // the multiple-scattering shape at their r and nu
+  // (runtime/multiple_scattering_phase.h): while iterating, each order's by
+  // its own; summed into the file, by the stored one, which a lookup
   // multiplies back.
+  const TableSampler order_sampler(sampler.domain(), orderRadianceSizes(sampler.sizes()));
+  const StageContext order_ctx{a, order_sampler, progress};
+  const ScatteringSizes& os = order_sampler.scatteringSizes();
   const MultipleScatteringPhase stored_shape(a);
   std::optional<MultipleScatteringPhase> previous_shape;  // the last computed order's
-  tables.multiple_scattering = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
   tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
-  Texture4D delta_multiple;
-  Texture4D last_density;  // the last order's density at the stored texels
+  Texture4D delta_multiple;  // the last order's radiance, on order_sampler's texels
+  Texture4D last_density;    // the last order's density at the stored texels
   const BakeSettings& settings = config.bake;
   const int last_order = settings.auto_orders ? settings.max_orders : settings.orders;
   report.orders_decision.automatic = settings.auto_orders;
@@ -267,32 +266,35 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     const MultipleScatteringPhase order_shape(a, order);
     const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple,
                                  previous_shape ? *previous_shape : stored_shape};
-    const Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
-      return computeScatteringDensityTable(ctx, *density_kernel, previous, sampler, order_shape, delta_irradiance);
+    // Order 1 is read from the single-scattering tables, later orders from order_sampler's.
+    const StageContext& previous_ctx = order == 2 ? ctx : order_ctx;
+    Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
+      return computeScatteringDensityTable(ctx, *density_kernel, previous, previous_ctx.sampler, order_shape,
+                                           delta_irradiance);
     });
     addReshaped(sampler, TexelLayout::Density, density, order_shape, stored_shape, Spectrum(1.0f),
                 tables.multiple_density);
-    last_density = density;
     if (scene) {
       const ScatteringSizes& ss = scene->sampler.scatteringSizes();
       scene->last = stage.run("scene_density", order, static_cast<size_t>(ss.r) * ss.mu_s, [&] {
-        return computeScatteringDensityTable(scene->ctx, scene->kernel, previous, sampler, order_shape,
+        return computeScatteringDensityTable(scene->ctx, scene->kernel, previous, previous_ctx.sampler, order_shape,
                                              delta_irradiance);
       });
       addReshaped(scene->sampler, TexelLayout::Density, scene->last, order_shape, stored_shape, Spectrum(1.0f),
                   scene->sum);
     }
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r,
-                                 [&] { return computeIndirectIrradianceTable(ctx, optical_depth, previous); });
-    addScaled(tables.irradiance.texels, delta_irradiance.texels, Spectrum(1.0f));
+                                 [&] { return computeIndirectIrradianceTable(previous_ctx, optical_depth, previous); });
+    // Order 1's sky irradiance is stored; the later orders' come from the stored multiple scattering below.
+    if (order == 2) tables.irradiance = delta_irradiance;
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
 
-    delta_multiple = stage.run("multiple_scattering", order, rows_4d, [&] {
-      return computeMultipleScatteringTable(ctx, optical_depth, density, order_shape);
+    last_density = std::move(density);  // the previous order's is needed no longer
+    delta_multiple = stage.run("order_radiance", order, static_cast<size_t>(os.r) * os.mu, [&] {
+      return computeMultipleScatteringTable(order_ctx, optical_depth, sampler, last_density, order_shape,
+                                            kOrderRadianceRaySegments);
     });
-    addReshaped(sampler, TexelLayout::Scattering, delta_multiple, order_shape, stored_shape, Spectrum(1.0f),
-                tables.multiple_scattering);
-    const std::vector<SpectrumD> order_slices = sliceMeanShapedRadiance(sampler, delta_multiple, order_shape);
+    const std::vector<SpectrumD> order_slices = sliceMeanShapedRadiance(order_sampler, delta_multiple, order_shape);
     convergence.add(order_slices);
     report.orders.push_back({order, meanOfSlices(order_slices), Spectrum(0.0f)});
     previous_shape = order_shape;
@@ -311,8 +313,8 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   if (config.bake.tail_estimate) {
     const MultipleScatteringPhase& last_shape = previous_shape ? *previous_shape : stored_shape;
     const std::optional<SliceTail> slice_tail =
-        addTailEstimate(sampler, report.orders, convergence, a.channelCount(), delta_multiple, last_density, last_shape,
-                        stored_shape, delta_irradiance, tables, report.tail);
+        addTailEstimate(sampler, report.orders, convergence, a.channelCount(), last_density, last_shape, stored_shape,
+                        tables, report.tail);
     if (scene && slice_tail) {
       // The scene's texels take the whole domain's tail at their altitude and sun.
       addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape,
@@ -320,6 +322,23 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     }
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";
+  }
+  delta_multiple = Texture4D();  // no longer needed: free it before the stored table is integrated
+  last_density = Texture4D();
+  if (last_order < 2) {
+    tables.multiple_scattering = Texture4D(s.r, s.mu, s.mu_s, s.nu);
+  } else {
+    tables.multiple_scattering = stage.run("multiple_scattering", 0, rows_4d, [&] {
+      return computeMultipleScatteringTable(ctx, optical_depth, sampler, tables.multiple_density, stored_shape,
+                                            kStoredRaySegments);
+    });
+    // The sky irradiance of orders 2 and up, from the stored table: the same
+    // light the sky radiance lookups give (its orders' own tables are coarser).
+    const OrderRadiance stored{2, tables.single_rayleigh, tables.single_mie, tables.multiple_scattering, stored_shape};
+    const Texture2D multiple_irradiance = stage.run("indirect_irradiance", 0, config.sizes.irradiance_r, [&] {
+      return computeIndirectIrradianceTable(ctx, optical_depth, stored);
+    });
+    addScaled(tables.irradiance.texels, multiple_irradiance.texels, Spectrum(1.0f));
   }
 
   if (scene) {

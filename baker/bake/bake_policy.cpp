@@ -109,6 +109,16 @@ TextureSizes iterationTextureSizes(const BakeConfig& config) {
   return sizes;
 }
 
+TextureSizes orderRadianceSizes(const TextureSizes& iteration) {
+  // The smallest axes a table may have (data_formats/config_validate.cpp):
+  // mu even and at least 4 (two rows each side of the horizon), nu at least 2.
+  constexpr int kMinMu = 4, kMinNu = 2;
+  TextureSizes sizes = iteration;
+  sizes.scattering_mu = std::max(kMinMu, 2 * (iteration.scattering_mu / 4));
+  sizes.scattering_nu = std::max(kMinNu, (3 * iteration.scattering_nu + 3) / 4);
+  return sizes;
+}
+
 BakeContents bakeContents(const BakeConfig& settled) { return storedContents(settled, sceneDomain(settled)); }
 
 }  // namespace skybake

@@ -21,6 +21,15 @@ AtmosphereDomain sceneDomain(const BakeConfig& config);
 // resolution.iteration (default: the default scattering sizes).
 TextureSizes iterationTextureSizes(const BakeConfig& config);
 
+// The sizes each order's radiance is computed on while the orders iterate
+// (baker/bake/bake.cpp): the iteration sizes with half the view (mu) and
+// view-sun (nu) texels. That radiance only feeds the next order's density,
+// an integral over every direction that smooths it; the stored multiple
+// scattering is integrated once, on the iteration sizes, from every order's
+// density. The altitude and sun axes stay, so its slices are the stored
+// tables' (the per-slice convergence and tail read them).
+TextureSizes orderRadianceSizes(const TextureSizes& iteration);
+
 // The config as the bake uses and stores it: a sun range that would add less
 // than a texel's worth of resolution to the sun axis is dropped (the tables
 // keep the whole axis, on the iteration's own sun texels), and a scene that

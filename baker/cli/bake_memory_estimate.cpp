@@ -37,18 +37,19 @@ uint64_t sum(std::initializer_list<uint64_t> terms) {
 
 uint64_t axis(int size) { return size > 0 ? static_cast<uint64_t>(size) : 0; }
 
-// 4D tables alive at once at the peak of bakeAtmosphere, counted from its
-// order loop. With one order: the single Rayleigh and Mie tables and the
-// zeroed multiple-scattering table and density. From order 2 on, while the
-// multiple-scattering stage builds its table, add the scattering density and
-// its logarithm (baker/stages/multiple_scattering_table.cpp), the last
-// order's density and the new table; from order 3 on, also the previous
-// order's table, still read by nothing but not yet replaced.
-int tables4DAtPeak(int orders) {
-  if (orders <= 1) return 4;
-  if (orders == 2) return 8;
-  return 9;
-}
+// Tables of the stored 4D size alive at once at the peak of bakeAtmosphere,
+// counted from its order loop. With one order: the single Rayleigh and Mie
+// tables, the zeroed density sum and multiple-scattering table. From order
+// 2 on, while an order's radiance is integrated (on the smaller
+// orderRadianceSizes, counted apart): the single tables, the density sum,
+// the order's density and its logarithm
+// (baker/stages/multiple_scattering_table.cpp); the stored multiple
+// scattering is integrated after the loop with fewer alive.
+int tables4DAtPeak(int orders) { return orders <= 1 ? 4 : 5; }
+
+// Order radiance tables (orderRadianceSizes) alive at once: the new one and,
+// from order 3 on, the one before it, still read until it is replaced.
+int orderRadianceTablesAtPeak(int orders) { return orders <= 1 ? 0 : orders == 2 ? 1 : 2; }
 
 }  // namespace
 
@@ -72,6 +73,8 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   e.table_4d_bytes = std::max(iteration_bytes, stored_bytes);
   const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
   e.tables_4d_at_peak = tables4DAtPeak(orders) + (narrowed ? 4 : 0);
+  e.order_radiance_bytes =
+      product({static_cast<uint64_t>(orderRadianceTablesAtPeak(orders)), table4DBytes(orderRadianceSizes(iteration))});
   // Alive from before order 2 to the end of the order loop; a narrowing
   // scene has a second one on its own texels (its density is computed there).
   auto kernelBytes = [&](const TextureSizes& t) {
@@ -80,8 +83,8 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   e.density_kernel_bytes = orders >= 2 ? sum({kernelBytes(iteration), narrowed ? kernelBytes(s) : 0}) : 0;
   // 2D: the transmittance table, the summed sky irradiance, and the last
   // order's irradiance beside the one being computed.
-  e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), transmittance,
-                      product({3, irradiance}), e.density_kernel_bytes});
+  e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), e.order_radiance_bytes,
+                      transmittance, product({3, irradiance}), e.density_kernel_bytes});
   // The file's tables: single Rayleigh, single Mie, multiple scattering,
   // multiple-scattering density, transmittance and irradiance.
   e.kept_bytes = sum({product({4, stored_bytes}), transmittance, irradiance});
@@ -134,11 +137,16 @@ void requireMemoryForBake(const BakeConfig& config, const std::string& source) {
   const std::string kernel = memory.density_kernel_bytes > 0 ? fmt::format(" and the scattering density's {} kernel",
                                                                            formatBytes(memory.density_kernel_bytes))
                                                              : "";
-  requireMemoryAvailable(fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {} "
-                                     "alive at once{})",
-                                     source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
-                                     memory.tables_4d_at_peak, formatBytes(memory.table_4d_bytes), kernel),
-                         memory.peak_bytes);
+  const std::string order_radiance =
+      memory.order_radiance_bytes > 0
+          ? fmt::format(" and the orders' radiance, {},", formatBytes(memory.order_radiance_bytes))
+          : "";
+  requireMemoryAvailable(
+      fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {}{} "
+                  "alive at once{})",
+                  source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu, memory.tables_4d_at_peak,
+                  formatBytes(memory.table_4d_bytes), order_radiance, kernel),
+      memory.peak_bytes);
 }
 
 }  // namespace skybake

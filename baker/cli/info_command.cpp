@@ -53,7 +53,7 @@ void printBakeTime(const std::string& report_json, const std::string& path) {
 }
 
 void runInfo(const std::string& path) {
-  const BakeFile bake = readBakeFile(path);
+  const BakeFile bake = readBakeFileHeader(path);
   const BakeContents& c = bake.contents;
   const TextureSizes& s = c.sizes;
   // How the bake was made (its name, the sizes its orders iterated on) is in
@@ -93,7 +93,7 @@ void runInfo(const std::string& path) {
              s.scattering_nu);
   const AtmosphereDomain& d = c.domain;
   if (d.narrowed()) {
-    const BakedRanges ranges = Sky(bake).bakedRanges();
+    const BakedRanges ranges = bakedRangesOf(d);
     const TextureSizes it = iterationTextureSizes(made_from);
     fmt::print(
         "scene ranges:  altitude {:g} to {:g} m, sun zenith {:g} to {:.2f} deg (the scattering tables; the "

@@ -7,8 +7,6 @@
 #include <cstdlib>
 #include <optional>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -16,6 +14,7 @@
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/render/image_colour.h"
+#include "baker/render/image_encoder.h"
 #include "baker/render/sky_image.h"
 #include "baker/render/sun_disk_pixels.h"
 #ifdef SKYBAKE_HAVE_GL
@@ -128,43 +127,53 @@ bool isExrOutput(const std::string& path) {
 // The header attributes of an EXR image (data_formats/FORMAT.md, "Images"):
 // its colour space and units, the bake's wavelengths, the camera and the
 // sun, whether the sun disk is in the pixels or not.
-void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, bool spectral) {
+std::vector<ImageAttribute> exrAttributes(const Sky& sky, const SkyView& view, bool spectral) {
+  using Kind = ImageAttribute::Kind;
+  std::vector<ImageAttribute> out;
+  auto text = [&](const char* name, std::string value) { out.push_back({name, Kind::Text, std::move(value), {}, 0}); };
+  auto number = [&](const char* name, double value) {
+    out.push_back({name, Kind::Float, {}, {static_cast<float>(value)}, 0});
+  };
   const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
   if (spectral) {
-    spec.attribute("skybake:units", "W m^-2 sr^-1 nm^-1");
-    spec.attribute("skybake:content",
-                   "spectral radiance, one channel per wavelength of the bake, named after it (680nm)");
+    text("skybake:units", "W m^-2 sr^-1 nm^-1");
+    text("skybake:content", "spectral radiance, one channel per wavelength of the bake, named after it (680nm)");
   } else {
     const colour::RgbChromaticities& c = colour::kSrgbChromaticities;
-    const float chromaticities[8] = {static_cast<float>(c.red.x),   static_cast<float>(c.red.y),
-                                     static_cast<float>(c.green.x), static_cast<float>(c.green.y),
-                                     static_cast<float>(c.blue.x),  static_cast<float>(c.blue.y),
-                                     static_cast<float>(c.white.x), static_cast<float>(c.white.y)};
-    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chromaticities);
+    out.push_back({"chromaticities",
+                   Kind::Chromaticities,
+                   {},
+                   {static_cast<float>(c.red.x), static_cast<float>(c.red.y), static_cast<float>(c.green.x),
+                    static_cast<float>(c.green.y), static_cast<float>(c.blue.x), static_cast<float>(c.blue.y),
+                    static_cast<float>(c.white.x), static_cast<float>(c.white.y)},
+                   0});
     // OpenEXR's whiteLuminance: the luminance, cd m^-2, of RGB (1, 1, 1).
-    spec.attribute("whiteLuminance", 1.0f);
-    spec.attribute("skybake:units", "cd m^-2");
-    spec.attribute("skybake:content",
-                   sky.atmosphere().storesCieXyz()
-                       ? "linear sRGB (Rec. 709 primaries, D65 white) of the bake's CIE 1931 X, Y, Z (integrated "
-                         "at bake time over skybake:wavelengths_nm), in cd m^-2: Y = 0.2126 R + 0.7152 G + "
-                         "0.0722 B is luminance"
-                       : "linear sRGB (Rec. 709 primaries, D65 white) of spectral radiance through the CIE 1931 "
-                         "observer, in cd m^-2: Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance");
+    number("whiteLuminance", 1.0);
+    text("skybake:units", "cd m^-2");
+    text("skybake:content",
+         sky.atmosphere().storesCieXyz()
+             ? "linear sRGB (Rec. 709 primaries, D65 white) of the bake's CIE 1931 X, Y, Z (integrated "
+               "at bake time over skybake:wavelengths_nm), in cd m^-2: Y = 0.2126 R + 0.7152 G + "
+               "0.0722 B is luminance"
+             : "linear sRGB (Rec. 709 primaries, D65 white) of spectral radiance through the CIE 1931 "
+               "observer, in cd m^-2: Y = 0.2126 R + 0.7152 G + 0.0722 B is luminance");
   }
-  spec.attribute("skybake:wavelengths_nm", fmt::format("{}", fmt::join(wavelengths, " ")));
-  spec.attribute("skybake:bake_channels", sky.atmosphere().storesCieXyz() ? "cie_xyz" : "wavelengths");
-  spec.attribute("skybake:projection", view.projection == Projection::LatLong   ? "latlong"
-                                       : view.projection == Projection::Fisheye ? "fisheye"
-                                                                                : "perspective");
-  spec.attribute("skybake:camera_altitude_m", static_cast<float>(view.altitude_m));
+  text("skybake:wavelengths_nm", fmt::format("{}", fmt::join(wavelengths, " ")));
+  text("skybake:bake_channels", sky.atmosphere().storesCieXyz() ? "cie_xyz" : "wavelengths");
+  text("skybake:projection", view.projection == Projection::LatLong   ? "latlong"
+                             : view.projection == Projection::Fisheye ? "fisheye"
+                                                                      : "perspective");
+  number("skybake:camera_altitude_m", view.altitude_m);
   const glm::dvec3 sun = sunDirection(view);
-  const float sun_direction[3] = {static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z)};
-  spec.attribute("skybake:sun_direction", OIIO::TypeVector, sun_direction);
-  spec.attribute("skybake:sun_zenith_deg", static_cast<float>(view.sun_zenith_deg));
-  spec.attribute("skybake:sun_azimuth_deg", static_cast<float>(view.sun_azimuth_deg));
-  spec.attribute("skybake:sun_angular_radius_rad", static_cast<float>(sky.atmosphere().sun_angular_radius_rad));
-  spec.attribute("skybake:sun_in_image", view.sun_disk ? 1 : 0);
+  out.push_back({"skybake:sun_direction",
+                 Kind::Vector3,
+                 {},
+                 {static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z)},
+                 0});
+  number("skybake:sun_zenith_deg", view.sun_zenith_deg);
+  number("skybake:sun_azimuth_deg", view.sun_azimuth_deg);
+  number("skybake:sun_angular_radius_rad", sky.atmosphere().sun_angular_radius_rad);
+  out.push_back({"skybake:sun_in_image", Kind::Int, {}, {}, view.sun_disk ? 1 : 0});
   // The sun at the camera, on a surface facing it (the part the moon leaves),
   // every lane group's channels.
   std::vector<float> irradiance;
@@ -175,17 +184,20 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
   }
   if (view.moon.present()) {
     const glm::dvec3 m = view.moon.centre_m;
-    spec.attribute("skybake:moon_centre_m", fmt::format("{} {} {}", m.x, m.y, m.z));
-    spec.attribute("skybake:moon_radius_m", static_cast<float>(view.moon.radius_m));
+    text("skybake:moon_centre_m", fmt::format("{} {} {}", m.x, m.y, m.z));
+    number("skybake:moon_radius_m", view.moon.radius_m);
   }
-  // Text, as the wavelengths: OpenImageIO would store a float array as a
-  // v2f, a v3f or a floatvector depending on the number of channels.
+  // Text, as the wavelengths: a float array would be stored as a v2f, a v3f
+  // or a floatvector depending on the number of channels.
   // W m^-2 nm^-1 per wavelength; a colour bake's X, Y, Z in W m^-2.
-  spec.attribute("skybake:sun_irradiance_W_m2_nm", fmt::format("{}", fmt::join(irradiance, " ")));
+  text("skybake:sun_irradiance_W_m2_nm", fmt::format("{}", fmt::join(irradiance, " ")));
   const SpectralImage sun_spectrum{1, 1, sky.channelCount(), irradiance};
-  const std::vector<float> illuminance =
-      linearSrgbImage(sun_spectrum, sky.atmosphere(), colour::kMaxLuminousEfficacy_lm_per_W);
-  spec.attribute("skybake:sun_illuminance_rgb_lx", OIIO::TypeColor, illuminance.data());
+  out.push_back({"skybake:sun_illuminance_rgb_lx",
+                 Kind::Colour3,
+                 {},
+                 linearSrgbImage(sun_spectrum, sky.atmosphere(), colour::kMaxLuminousEfficacy_lm_per_W),
+                 0});
+  return out;
 }
 
 // Encodes the image in memory, then writes it out in one checked write: the
@@ -194,36 +206,30 @@ void describeExr(OIIO::ImageSpec& spec, const Sky& sky, const SkyView& view, boo
 void writeImage(const std::string& path, const Sky& sky, const SkyView& view, const SpectralImage& image, bool spectral,
                 double exposure, ToneMap tone_map) {
   const bool exr = isExrOutput(path);
-  std::vector<unsigned char> encoded;
-  OIIO::Filesystem::IOVecOutput memory(encoded);
-  auto out = OIIO::ImageOutput::create(path, &memory);
-  if (!out || !out->supports("ioproxy")) {
-    throw Error(ErrorKind::Internal, fmt::format("{}: no in-memory image writer: {}", path, OIIO::geterror()));
-  }
-  const std::vector<double>& wavelengths = sky.atmosphere().wavelengths_nm;
-  OIIO::ImageSpec spec(view.width, view.height, spectral ? image.channels : 3,
-                       exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  ImageToEncode encode;
+  encode.path = path;
+  encode.width = view.width;
+  encode.height = view.height;
+  encode.channels = spectral ? image.channels : 3;
+  encode.float_pixels = exr;
+  std::vector<float> rgb;
+  std::vector<unsigned char> display;
   if (exr) {
-    spec.attribute("compression", "zip");
-    describeExr(spec, sky, view, spectral);
+    encode.compression = "zip";
+    encode.attributes = exrAttributes(sky, view, spectral);
     if (spectral) {
-      spec.channelnames.clear();
-      for (double w : wavelengths) spec.channelnames.push_back(channelName(w));
+      for (double w : sky.atmosphere().wavelengths_nm) encode.channel_names.push_back(channelName(w));
+      encode.pixels = image.radiance.data();
+    } else {
+      rgb = linearSrgbImage(image, sky.atmosphere(), colour::kMaxLuminousEfficacy_lm_per_W);
+      encode.pixels = rgb.data();
     }
   } else {
-    spec.attribute("oiio:ColorSpace", "sRGB");  // the PNG's sRGB chunk
+    encode.srgb = true;  // the PNG's sRGB chunk
+    display = encodeForDisplay(linearSrgbImage(image, sky.atmosphere(), previewScalePerExposure()), exposure, tone_map);
+    encode.pixels = display.data();
   }
-  bool ok = out->set_ioproxy(&memory) && out->open(path, spec);
-  if (ok && exr) {
-    std::vector<float> rgb;
-    if (!spectral) rgb = linearSrgbImage(image, sky.atmosphere(), colour::kMaxLuminousEfficacy_lm_per_W);
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, spectral ? image.radiance.data() : rgb.data());
-  } else if (ok) {
-    const std::vector<unsigned char> display =
-        encodeForDisplay(linearSrgbImage(image, sky.atmosphere(), previewScalePerExposure()), exposure, tone_map);
-    ok = out->write_image(OIIO::TypeDesc::UINT8, display.data());
-  }
-  if (!ok || !out->close()) throw Error(ErrorKind::Internal, fmt::format("{}: {}", path, out->geterror()));
+  const std::vector<unsigned char> encoded = encodeImage(encode);
   writeFileContentsAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 

@@ -175,6 +175,7 @@ py::object bake(const py::object& config_source, const std::string& output, int 
     py::gil_scoped_release release;
     BakeOutput out = bakeAtmosphere(config, threads, *sink);
     setStoredReport(out, !reproducible);
+    setBakeFileWriteThreads(out.report.threads);
     writeBakeFile(output, out.file);
     report = out.report.toJson(!reproducible);
   }

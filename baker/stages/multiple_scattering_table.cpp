@@ -14,10 +14,6 @@
 namespace skybake {
 namespace {
 
-// Same ray rule as single scattering: the density falls off with the
-// constituents' scale heights, like the single-scattering integrand.
-constexpr int kMultipleScatteringSegments = 8;
-
 // A quadrature node on a view ray and what along the ray does not depend on
 // the sun: shared by every (mu_s, nu) texel of the ray's (r, mu).
 struct RayNode {
@@ -31,7 +27,7 @@ struct RayNode {
 };
 
 void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, const TableSampler& density_sampler,
-                     const MultipleScatteringPhase& shape, const ScatteringTexelConfig& c,
+                     const MultipleScatteringPhase& shape, const ScatteringTexelConfig& c, int ray_segments,
                      std::vector<RayNode>& nodes) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const AtmosphereMedia media(a);
@@ -40,7 +36,7 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
   auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(c.r, c.mu, t), a.bottom_radius_m, a.top_radius_m); };
   nodes.clear();
   forEachOpticallyThinNode(
-      0.0, length, kMultipleScatteringSegments, -c.r * c.mu,
+      0.0, length, ray_segments, -c.r * c.mu,
       [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
       [&](double t, double w) {
         const double r_t = radiusAt(t);
@@ -117,13 +113,8 @@ int rowsWithLogs(const std::vector<double>& density_texel_mu_s) {
 }  // namespace
 
 Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
-                                         const Texture4D& density, const MultipleScatteringPhase& shape) {
-  return computeMultipleScatteringTable(ctx, optical_depth, ctx.sampler, density, shape);
-}
-
-Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2D& optical_depth,
                                          const TableSampler& density_sampler, const Texture4D& density,
-                                         const MultipleScatteringPhase& shape) {
+                                         const MultipleScatteringPhase& shape, int ray_segments) {
   const TableSampler& sampler = ctx.sampler;
   const ScatteringSizes& s = sampler.scatteringSizes();
   const ScatteringSizes& density_sizes = density_sampler.scatteringSizes();
@@ -155,7 +146,7 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
     for (int i_r = 0; i_r < s.r; ++i_r) {
       for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
         const ScatteringTexelConfig row = scatteringTexelConfig(sampler.domain(), s, i_r, i_mu, 0, 0);
-        collectRayNodes(ctx, optical_depth, density_sampler, shape, row, nodes);
+        collectRayNodes(ctx, optical_depth, density_sampler, shape, row, ray_segments, nodes);
         if (planes.size() < nodes.size()) planes.resize(nodes.size());
         if (log_planes.size() < nodes.size()) log_planes.resize(nodes.size());
         for (size_t k = 0; k < nodes.size(); ++k) {

@@ -17,7 +17,7 @@ void BM_DefaultEarthBake(benchmark::State& state) {
     last = bake.report;
   }
   for (const char* stage : {"transmittance", "direct_irradiance", "single_scattering", "density_kernel",
-                            "scattering_density", "indirect_irradiance", "multiple_scattering"}) {
+                            "scattering_density", "indirect_irradiance", "order_radiance", "multiple_scattering"}) {
     state.counters[std::string(stage) + "_s"] = last.stageSeconds(stage);
   }
   state.counters["threads"] = last.threads;

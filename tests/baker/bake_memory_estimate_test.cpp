@@ -26,21 +26,26 @@ TEST(BakeMemoryEstimate, CountsEveryTableAliveAtThePeak) {
   const uint64_t table_4d = 8 * 32 * 8 * 4 * texel;
   const BakeMemoryEstimate three = estimateBakeMemory(config);
   EXPECT_EQ(three.table_4d_bytes, table_4d);
-  EXPECT_EQ(three.tables_4d_at_peak, 9);
+  EXPECT_EQ(three.tables_4d_at_peak, 5);
+  // Two order radiance tables of half the mu and nu texels (orderRadianceSizes).
+  const uint64_t order_radiance = 2 * (8 * 16 * 8 * 2 * texel);
+  EXPECT_EQ(three.order_radiance_bytes, order_radiance);
   // The density stage's kernel: 48 zenith nodes x 35 azimuthal modes of 4 bytes per (r, mu).
   const uint64_t kernel = 8 * 32 * 48 * 35 * 4;
   EXPECT_EQ(three.density_kernel_bytes, kernel);
-  EXPECT_EQ(three.peak_bytes, 9 * table_4d + 64 * 16 * texel + 3 * 16 * 8 * texel + kernel);
+  EXPECT_EQ(three.peak_bytes, 5 * table_4d + order_radiance + 64 * 16 * texel + 3 * 16 * 8 * texel + kernel);
   EXPECT_EQ(three.kept_bytes, 4 * table_4d + 64 * 16 * texel + 16 * 8 * texel);
   config.bake.orders = 1;
   EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 4);
+  EXPECT_EQ(estimateBakeMemory(config).order_radiance_bytes, 0u);
   EXPECT_EQ(estimateBakeMemory(config).density_kernel_bytes, 0u);  // one order needs no density
   config.bake.orders = 2;
-  EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 8);
+  EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 5);
+  EXPECT_EQ(estimateBakeMemory(config).order_radiance_bytes, order_radiance / 2);  // no earlier order's
   // Automatic orders may run to the cap.
   config.bake.auto_orders = true;
   config.bake.max_orders = 3;
-  EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 9);
+  EXPECT_EQ(estimateBakeMemory(config).order_radiance_bytes, order_radiance);
 }
 
 TEST(BakeMemoryEstimate, SaturatesInsteadOfWrappingRound) {

@@ -37,6 +37,10 @@ expected=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i ~ /^radiance_/) k
   NR == 2 { out = ""; for (i = 1; i <= NF; ++i) if (i in keep) out = out (out == "" ? "" : ",") $i; print out }' \
   "$work/lookup.csv")
 echo "skybake lookup radiance: $expected"
+# The installed command finds its image encoder module (lib/skybake).
+"$prefix/bin/skybake" render "$bake" --altitude-m 0 --sun-zenith-deg 60 --size 16x8 -o "$work/installed.png" ||
+  fail "the installed skybake cannot write an image"
+[ -s "$work/installed.png" ] || fail "the installed skybake wrote no image"
 
 # find_package(skybake)
 cmake -S "$source_dir/tests/install/find_package_consumer" -B "$work/find_package" \
