@@ -112,6 +112,7 @@ TextureSizes iterationTextureSizes(const BakeConfig& config) {
 TextureSizes orderRadianceSizes(const TextureSizes& iteration) {
   // The smallest axes a table may have (data_formats/config_validate.cpp):
   // mu even and at least 4 (two rows each side of the horizon), nu at least 2.
+  // Three quarters of nu, rounded up: 16 -> 12.
   constexpr int kMinMu = 4, kMinNu = 2;
   TextureSizes sizes = iteration;
   sizes.scattering_mu = std::max(kMinMu, 2 * (iteration.scattering_mu / 4));

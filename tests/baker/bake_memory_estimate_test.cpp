@@ -27,8 +27,8 @@ TEST(BakeMemoryEstimate, CountsEveryTableAliveAtThePeak) {
   const BakeMemoryEstimate three = estimateBakeMemory(config);
   EXPECT_EQ(three.table_4d_bytes, table_4d);
   EXPECT_EQ(three.tables_4d_at_peak, 5);
-  // Two order radiance tables of half the mu and nu texels (orderRadianceSizes).
-  const uint64_t order_radiance = 2 * (8 * 16 * 8 * 2 * texel);
+  // Two order radiance tables of half the mu and three quarters of the nu texels, rounded up (orderRadianceSizes).
+  const uint64_t order_radiance = 2 * (8 * 16 * 8 * 3 * texel);
   EXPECT_EQ(three.order_radiance_bytes, order_radiance);
   // The density stage's kernel: 48 zenith nodes x 35 azimuthal modes of 4 bytes per (r, mu).
   const uint64_t kernel = 8 * 32 * 48 * 35 * 4;
