@@ -22,7 +22,7 @@ presets=$PWD/data_formats/presets
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-sed -e 's/^scattering = .*/scattering = { r = 32, mu = 128, mu_s = 32, nu = 8 }/' -e 's/^orders = .*/orders = 4/' \
+sed -e 's/^scattering = { r = .*/scattering = { r = 32, mu = 128, mu_s = 32, nu = 8 }/' -e 's/^orders = .*/orders = 4/' \
   -e 's/^name = .*/name = "earth_bruneton_sizes"/' "$presets/earth.toml" >"$work/bruneton.toml"
 names=(default bruneton_sizes_4_orders colour)
 configs=("" "$work/bruneton.toml" "$presets/earth_colour.toml")
