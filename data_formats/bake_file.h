@@ -23,9 +23,14 @@ namespace skybake {
 // it holds and states everything a reader needs in typed attributes; version
 // 4 states what the channels hold (skybake:channels: wavelengths or CIE XYZ);
 // version 5 spreads the sun axis's texels split at the horizon
-// (SunAxisMapping::SplitAtHorizon). Versions 2 to 4 (Bruneton's sun axis;
-// 2 and 3 always wavelengths) are still read (FORMAT.md, "Older versions").
-inline constexpr int kBakeFormatVersion = 5;
+// (SunAxisMapping::SplitAtHorizon); version 6 stores HALF 4D parts scaled by
+// a power of two per (r, mu_s) slice (half_slices.h), the density part
+// included, and the irradiance always FLOAT. Versions 2 to 5 (2 to 4 on
+// Bruneton's sun axis; 2 and 3 always wavelengths) are still read (FORMAT.md,
+// "Older versions").
+inline constexpr int kBakeFormatVersion = 6;
+// The first format version whose HALF 4D parts carry slice exponents.
+inline constexpr int kFirstHalfSliceExponentsFormatVersion = 6;
 // The first format version whose sun axis is SunAxisMapping::SplitAtHorizon.
 inline constexpr int kFirstSplitSunAxisFormatVersion = 5;
 

@@ -49,6 +49,9 @@ inline constexpr const char* kAttrOutputs = "skybake:outputs";
 inline constexpr const char* kAttrCombinedSingleMie = "skybake:combined_single_mie";
 // The fraction bits every FLOAT value but the optical depths' keeps
 // (stored_float_bits.h); absent: all 23.
+// A HALF 4D part's power-of-two exponent per (r, mu_s) slice (half_slices.h),
+// index r * mu_s_size + mu_s: a value is its half times 2^exponent.
+inline constexpr const char* kAttrHalfSliceExponents = "skybake:half_slice_exponents";
 inline constexpr const char* kAttrStoredFractionBits = "skybake:stored_fraction_bits";
 
 // The domain the 4D tables cover.

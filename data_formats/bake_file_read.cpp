@@ -10,11 +10,13 @@
 #include <functional>
 #include <memory>
 #include <new>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatVectorAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputPart.h>
@@ -32,6 +34,7 @@
 #include "error.h"
 #include "exr_header_check.h"
 #include "exr_memory_stream.h"
+#include "half_slices.h"
 #include "table_values.h"
 #include "texture_mapping.h"
 
@@ -59,6 +62,11 @@ struct PartLayout {
   int height = 0;
   uint64_t stored_bytes = 0;  // its channels' pixel data, uncompressed
   std::string extra_channel;  // read into the first lane of other texels (combined single Mie), or ""
+  // A HALF 4D part's slice layout and exponents (half_slices.h); empty
+  // exponents for FLOAT parts and for half parts of files before version 6,
+  // which stored values unscaled.
+  HalfSliceLayout layout_4d;
+  std::vector<int> slice_exponents;
 };
 
 class Reader {
@@ -97,8 +105,9 @@ class Reader {
   // Finds a part and checks its window and channels against the table size
   // the config gives it. Allocates nothing.
   PartLayout checkPart(const char* name, int width, int height, const AtmosphereParameters& a,
-                       const std::string& extra_channel = {}) const {
-    PartLayout layout{name, findPart(name), width, height, 0, extra_channel};
+                       const std::string& extra_channel, const std::optional<HalfSliceLayout>& layout_4d,
+                       int format_version, size_t lane_groups) const {
+    PartLayout layout{name, findPart(name), width, height, 0, extra_channel, {}, {}};
     const Imf::Header& h = file_.header(layout.index);
     const Imath::Box2i window = h.dataWindow();
     const long long w = 1LL * window.max.x - window.min.x + 1;
@@ -123,7 +132,38 @@ class Reader {
       bytes_per_texel += pixelBytes(found->type);
     }
     layout.stored_bytes = bytes_per_texel * static_cast<uint64_t>(width) * static_cast<uint64_t>(height);
+    const bool half = h.channels().findChannel(channels.front())->type == Imf::HALF;
+    // A file before version 6 stored half values unscaled; one on Bruneton's
+    // sun axis written since (formatVersionToWrite) states its exponents.
+    const bool states_exponents = h.findTypedAttribute<Imf::FloatVectorAttribute>(kAttrHalfSliceExponents) != nullptr;
+    if (layout_4d && half && (states_exponents || format_version >= kFirstHalfSliceExponentsFormatVersion)) {
+      layout.layout_4d = *layout_4d;
+      layout.slice_exponents = sliceExponents(layout.index, name, *layout_4d, lane_groups);
+    }
     return layout;
+  }
+
+  // A HALF 4D part's slice exponents, one set per lane group, each an
+  // integer in the range a writer makes (half_slices.h).
+  std::vector<int> sliceExponents(int part, const char* name, const HalfSliceLayout& layout,
+                                  size_t lane_groups) const {
+    const std::vector<float>& stated = attribute<Imf::FloatVectorAttribute>(part, kAttrHalfSliceExponents).value();
+    if (stated.size() != layout.sliceCount() * lane_groups) {
+      fail(fmt::format("part '{}' attribute {} holds {} exponents; its {} x {} (r, mu_s) slices in {} lane group(s) "
+                       "need {}",
+                       name, kAttrHalfSliceExponents, stated.size(), layout.r_size, layout.mu_s_size, lane_groups,
+                       layout.sliceCount() * lane_groups));
+    }
+    std::vector<int> exponents(stated.size());
+    for (size_t s = 0; s < stated.size(); ++s) {
+      const float e = stated[s];
+      if (!(e >= kMinHalfSliceExponent && e <= kMaxHalfSliceExponent) || e != std::floor(e)) {
+        fail(fmt::format("part '{}' attribute {} holds {} at slice {}: exponents are integers in [{}, {}]", name,
+                         kAttrHalfSliceExponents, e, s, kMinHalfSliceExponent, kMaxHalfSliceExponent));
+      }
+      exponents[s] = static_cast<int>(e);
+    }
+    return exponents;
   }
 
   // Reads a checked part into each lane group's `texels` (width * height
@@ -155,12 +195,25 @@ class Reader {
     Imf::InputPart in(file_, part.index);
     in.setFrameBuffer(frame);
     in.readPixels(0, part.height - 1);
+    if (!part.slice_exponents.empty()) {
+      for (size_t g = 0; g < groups.size(); ++g) scaleBySlice(part, g, *groups[g].texels);
+      if (!part.extra_channel.empty()) scaleBySlice(part, 0, *extra_texels);
+    }
     for (const LaneGroupTexels& g : groups)
       checkTableValues(source_, part.name, *g.texels, g.atmosphere->channelCount());
     if (!part.extra_channel.empty()) checkTableValues(source_, part.name, *extra_texels, 1);
   }
 
  private:
+  // Restores a half part's values: each half times its slice's 2^exponent.
+  static void scaleBySlice(const PartLayout& part, size_t group, std::vector<Spectrum>& texels) {
+    const size_t first = group * part.layout_4d.sliceCount();
+    for (size_t t = 0; t < texels.size(); ++t) {
+      const int exponent = part.slice_exponents[first + part.layout_4d.sliceOfTexel(t)];
+      for (int c = 0; c < kMaxChannels; ++c) texels[t][c] = std::ldexp(texels[t][c], exponent);
+    }
+  }
+
   std::string source_;
   Imf::MultiPartInputFile file_;
 };
@@ -303,17 +356,19 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
     int width;
     int height;
     std::function<std::vector<Spectrum>&(BakeTables&)> texels;
+    std::optional<HalfSliceLayout> layout_4d = std::nullopt;
   };
   std::vector<TableTexels> tables = {
       {optical_depth_part, t.optical_depth.width, t.optical_depth.height, texelsOf(&BakeTables::optical_depth)},
       {kPartIrradiance, t.irradiance.width, t.irradiance.height, texelsOf(&BakeTables::irradiance)},
       {kPartSingleRayleigh, t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(),
-       texelsOf(&BakeTables::single_rayleigh)},
-      {kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), texelsOf(&BakeTables::single_mie)},
+       texelsOf(&BakeTables::single_rayleigh), HalfSliceLayout::of(t.single_rayleigh)},
+      {kPartSingleMie, t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), texelsOf(&BakeTables::single_mie),
+       HalfSliceLayout::of(t.single_mie)},
       {kPartMultipleScattering, t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(),
-       texelsOf(&BakeTables::multiple_scattering)},
+       texelsOf(&BakeTables::multiple_scattering), HalfSliceLayout::of(t.multiple_scattering)},
       {kPartMultipleDensity, t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(),
-       texelsOf(&BakeTables::multiple_density)},
+       texelsOf(&BakeTables::multiple_density), HalfSliceLayout::of(t.multiple_density)},
   };
   std::erase_if(tables, [&](const TableTexels& table) { return leavesOut(bake.contents, table.part); });
   // Single Mie scattering combined into single_rayleigh: its first channel
@@ -324,7 +379,8 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
   for (const TableTexels& table : tables) {
     const bool with_mie = combined_mie && std::string_view(table.part) == kPartSingleRayleigh;
     layouts.push_back(in.checkPart(table.part, table.width, table.height, a,
-                                   with_mie ? combinedSingleMieChannelName(a) : std::string()));
+                                   with_mie ? combinedSingleMieChannelName(a) : std::string(), table.layout_4d,
+                                   first.version, group_tables.size()));
     stored_bytes += layouts.back().stored_bytes;
   }
   if (stored_bytes / kMaxExrExpansion > file_bytes) {

@@ -1,11 +1,14 @@
 // Bake file writer. OpenEXR writes straight from the tables' float4 storage
 // (a stride of one Spectrum per texel), converting to half on request.
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatVectorAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIntAttribute.h>
@@ -21,6 +24,7 @@
 #include "bake_file_attributes.h"
 #include "bake_file_contents.h"
 #include "error.h"
+#include "half_slices.h"
 #include "table_values.h"
 
 namespace skybake {
@@ -77,21 +81,34 @@ struct PartToWrite {
   // (single Mie scattering combined into single_rayleigh), or none.
   std::string extra_channel = {};
   const std::vector<Spectrum>* extra_texels = nullptr;
-  // Stored as FLOAT whatever bake.precision says (FORMAT.md).
-  bool always_float = false;
+  // A 4D table's layout; the 2D tables (optical depth, irradiance) have
+  // none and are stored as FLOAT whatever bake.precision says (FORMAT.md).
+  std::optional<HalfSliceLayout> layout_4d = std::nullopt;
 };
 
-// The multiple-scattering density is light per metre: 1e-6 to 1e-7 W m^-3
-// nm^-1 by day and far less in twilight, where half's normal range ends
-// (6e-5) and its subnormals keep a few bits or round to 0. Stored as half,
-// radiance toward a point in twilight came out 25 to 55 % off.
 bool storedAsHalf(const BakeFile& bake, const PartToWrite& part) {
-  return bake.contents.precision == StoragePrecision::Half && !part.always_float;
+  return bake.contents.precision == StoragePrecision::Half && part.layout_4d.has_value();
+}
+
+// A half part's (r, mu_s) slice exponents (half_slices.h), one set per lane
+// group, each over that group's channels (and the extra channel, which only
+// an ordinary bake has): every group's values are those of the ordinary bake
+// of its wavelengths.
+std::vector<int> sliceExponentsOf(const PartToWrite& part, const std::vector<LaneGroup>& groups) {
+  std::vector<int> exponents;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    std::vector<HalfSliceLanes> lanes = {{part.texels[g], groups[g].atmosphere->channelCount()}};
+    if (part.extra_texels != nullptr) lanes.push_back({part.extra_texels, 1});
+    const std::vector<int> group = halfSliceExponents(*part.layout_4d, lanes);
+    exponents.insert(exponents.end(), group.begin(), group.end());
+  }
+  return exponents;
 }
 
 // Parts of a multi-part file must share one display window; each part's data
 // window is its own table size.
-Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imath::Box2i& display_window) {
+Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imath::Box2i& display_window,
+                       const std::vector<int>& slice_exponents) {
   const AtmosphereParameters& a = bake.contents.atmosphere;
   Imf::Header header(display_window, Imath::Box2i({0, 0}, {part.width - 1, part.height - 1}));
   header.setName(part.name);
@@ -104,6 +121,10 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imat
   header.insert(kAttrContent, Imf::StringAttribute(part.content));
   header.insert(kAttrUnits, Imf::StringAttribute(part.units));
   header.insert(kAttrTableSize, Imf::StringAttribute(part.size_text));
+  if (storedAsHalf(bake, part)) {
+    header.insert(kAttrHalfSliceExponents,
+                  Imf::FloatVectorAttribute(std::vector<float>(slice_exponents.begin(), slice_exponents.end())));
+  }
   insertContentsAttributes(bake.contents, header);
   header.insert(kAttrOrders, Imf::IntAttribute(bake.orders_computed));
   // The provenance (a few kilobytes of config and report) once, in the part
@@ -121,20 +142,29 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
   for (const PartToWrite& part : parts) {
     display_window.extendBy(Imath::V2i(part.width - 1, part.height - 1));
   }
-  std::vector<Imf::Header> headers;
-  for (const PartToWrite& part : parts) headers.push_back(makeHeader(bake, part, display_window));
-  Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
   const std::vector<LaneGroup> groups = laneGroupsOf(bake);
+  std::vector<std::vector<int>> slice_exponents;
+  std::vector<Imf::Header> headers;
+  for (const PartToWrite& part : parts) {
+    slice_exponents.push_back(storedAsHalf(bake, part) ? sliceExponentsOf(part, groups) : std::vector<int>());
+    headers.push_back(makeHeader(bake, part, display_window, slice_exponents.back()));
+  }
+  Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
   for (size_t i = 0; i < parts.size(); ++i) {
     const PartToWrite& part = parts[i];
     const bool half = storedAsHalf(bake, part);
     Imf::OutputPart out(file, static_cast<int>(i));
     Imf::FrameBuffer frame;
-    // Half storage: convert here, one half4 per texel, same layout as the floats.
-    auto toHalves = [](const std::vector<Spectrum>& texels) {
+    // Half storage: each value scaled by its slice's power of two and
+    // converted here, one half4 per texel, same layout as the floats.
+    auto toHalves = [&](const std::vector<Spectrum>& texels, size_t group) {
       std::vector<Imath::half> halves(texels.size() * kMaxChannels);
+      const size_t first = group * part.layout_4d->sliceCount();
       for (size_t t = 0; t < texels.size(); ++t) {
-        for (int c = 0; c < kMaxChannels; ++c) halves[t * kMaxChannels + c] = texels[t][c];
+        const int exponent = slice_exponents[i][first + part.layout_4d->sliceOfTexel(t)];
+        for (int c = 0; c < kMaxChannels; ++c) {
+          halves[t * kMaxChannels + c] = Imath::half(std::ldexp(texels[t][c], -exponent));
+        }
       }
       return halves;
     };
@@ -144,8 +174,8 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
     const size_t value_bytes = half ? sizeof(Imath::half) : sizeof(float);
     const size_t texel_bytes = value_bytes * kMaxChannels;
     const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
-    auto baseOf = [&](const std::vector<Spectrum>& texels, std::vector<Imath::half>& as_halves) {
-      if (half) as_halves = toHalves(texels);
+    auto baseOf = [&](const std::vector<Spectrum>& texels, std::vector<Imath::half>& as_halves, size_t group) {
+      if (half) as_halves = toHalves(texels, group);
       return half ? reinterpret_cast<char*>(as_halves.data())
                   : const_cast<char*>(reinterpret_cast<const char*>(texels.data()));
     };
@@ -156,7 +186,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
         zeros.assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
       }
       const std::vector<Spectrum>& texels = part.texels[g]->empty() ? zeros : *part.texels[g];
-      char* base = baseOf(texels, halves[g]);
+      char* base = baseOf(texels, halves[g], g);
       const std::vector<std::string> channel_names = channelNames(*groups[g].atmosphere);
       for (size_t c = 0; c < channel_names.size(); ++c) {
         frame.insert(channel_names[c], Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
@@ -164,7 +194,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
     }
     if (part.extra_texels != nullptr) {
       frame.insert(part.extra_channel,
-                   Imf::Slice(type, baseOf(*part.extra_texels, extra_halves), texel_bytes, texel_bytes * part.width));
+                   Imf::Slice(type, baseOf(*part.extra_texels, extra_halves, 0), texel_bytes, texel_bytes * part.width));
     }
     out.setFrameBuffer(frame);
     out.writePixels(part.height);
@@ -193,27 +223,51 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
       {kPartOpticalDepth, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
        "dimensionless", texels(&BakeTables::optical_depth), t.optical_depth.width, t.optical_depth.height,
        fmt::format("mu={} r={}", t.optical_depth.width, t.optical_depth.height)},
-      {kPartSingleRayleigh, "single Rayleigh scattering radiance divided by the Rayleigh phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", texels(&BakeTables::single_rayleigh),
-       t.single_rayleigh.atlasWidth(), t.single_rayleigh.atlasHeight(), table4DSizeText(t.single_rayleigh)},
-      {kPartSingleMie, "single Mie scattering radiance divided by the Mie phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", texels(&BakeTables::single_mie),
-       t.single_mie.atlasWidth(), t.single_mie.atlasHeight(), table4DSizeText(t.single_mie)},
+      {kPartSingleRayleigh,
+       "single Rayleigh scattering radiance divided by the Rayleigh phase function",
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)",
+       texels(&BakeTables::single_rayleigh),
+       t.single_rayleigh.atlasWidth(),
+       t.single_rayleigh.atlasHeight(),
+       table4DSizeText(t.single_rayleigh),
+       {},
+       nullptr,
+       HalfSliceLayout::of(t.single_rayleigh)},
+      {kPartSingleMie,
+       "single Mie scattering radiance divided by the Mie phase function",
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)",
+       texels(&BakeTables::single_mie),
+       t.single_mie.atlasWidth(),
+       t.single_mie.atlasHeight(),
+       table4DSizeText(t.single_mie),
+       {},
+       nullptr,
+       HalfSliceLayout::of(t.single_mie)},
       {kPartMultipleScattering,
        "scattering orders 2 and up, radiance divided by the multiple-scattering shape at the texel's r and nu",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)", texels(&BakeTables::multiple_scattering),
-       t.multiple_scattering.atlasWidth(), t.multiple_scattering.atlasHeight(), table4DSizeText(t.multiple_scattering)},
+       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)",
+       texels(&BakeTables::multiple_scattering),
+       t.multiple_scattering.atlasWidth(),
+       t.multiple_scattering.atlasHeight(),
+       table4DSizeText(t.multiple_scattering),
+       {},
+       nullptr,
+       HalfSliceLayout::of(t.multiple_scattering)},
       {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded", "W m^-2 nm^-1",
        texels(&BakeTables::irradiance), t.irradiance.width, t.irradiance.height,
        fmt::format("mu_s={} r={}", t.irradiance.width, t.irradiance.height)},
       {kPartMultipleDensity,
        "scattering density of orders 2 and up: light scattered per unit length toward the viewer, "
        "divided by the multiple-scattering shape at the texel's r and nu",
-       "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", texels(&BakeTables::multiple_density),
-       t.multiple_density.atlasWidth(), t.multiple_density.atlasHeight(), table4DSizeText(t.multiple_density)},
+       "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)",
+       texels(&BakeTables::multiple_density),
+       t.multiple_density.atlasWidth(),
+       t.multiple_density.atlasHeight(),
+       table4DSizeText(t.multiple_density),
+       {},
+       nullptr,
+       HalfSliceLayout::of(t.multiple_density)},
   };
-  auto is_density = [](const PartToWrite& p) { return p.name == std::string_view(kPartMultipleDensity); };
-  std::find_if(parts.begin(), parts.end(), is_density)->always_float = true;
   if (bake.contents.combined_single_mie) {
     auto is_rayleigh = [](const PartToWrite& p) { return p.name == std::string_view(kPartSingleRayleigh); };
     PartToWrite& rayleigh = *std::find_if(parts.begin(), parts.end(), is_rayleigh);

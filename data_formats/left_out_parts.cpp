@@ -55,9 +55,7 @@ std::vector<LeftOutPart> leftOutParts(const BakeContents& c) {
   // Rays toward the ground are integrated over the density when the 4D
   // tables leave them out ([scene] views_below_horizon), so it stays then.
   if (!c.outputs.radiance_to_points && c.domain.scattering_ground_views) {
-    // Always stored as float (FORMAT.md).
-    const uint64_t float_table_4d = table_4d / value_bytes * (4 * c.atmosphere.channelCount());
-    out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", float_table_4d});
+    out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", table_4d});
   }
   if (!c.outputs.ground_irradiance) {
     out.push_back({bake_file::kPartIrradiance, "scene.outputs without ground_irradiance",

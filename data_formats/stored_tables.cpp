@@ -1,5 +1,6 @@
 // The tables a bake keeps as its file stores them (bake_file.h).
 #include "bake_file.h"
+#include "half_slices.h"
 #include "stored_float_bits.h"
 
 namespace skybake {
@@ -11,16 +12,42 @@ void roundTexels(std::vector<Spectrum>& texels, int fraction_bits) {
   }
 }
 
+// A 4D table rounded as a half file stores it; `shared` holds lanes stored
+// in the same part (a combined single Mie channel), rounded with its
+// exponents too.
+void roundToScaledHalf(Texture4D& table, const HalfSliceLanes* shared, std::vector<Spectrum>* shared_texels) {
+  std::vector<HalfSliceLanes> lanes = {{&table.texels, kMaxChannels}};
+  if (shared != nullptr) lanes.push_back(*shared);
+  const HalfSliceLayout layout = HalfSliceLayout::of(table);
+  const std::vector<int> exponents = halfSliceExponents(layout, lanes);
+  roundToScaledHalf(layout, exponents, table.texels, kMaxChannels);
+  if (shared_texels != nullptr) roundToScaledHalf(layout, exponents, *shared_texels, shared->channels);
+}
+
 }  // namespace
 
 void settleStoredTables(const BakeContents& contents, BakeTables& tables) {
   // The optical depths keep every bit: a transmittance exp(-depth) would
   // multiply their rounding by the depth, and their 2D table is too small
-  // for its size to matter.
-  for (std::vector<Spectrum>* texels :
-       {&tables.single_rayleigh.texels, &tables.single_mie.texels, &tables.multiple_scattering.texels,
-        &tables.irradiance.texels, &tables.multiple_density.texels}) {
-    roundTexels(*texels, contents.stored_fraction_bits);
+  // for its size to matter. The irradiance, as small, is always FLOAT.
+  roundTexels(tables.irradiance.texels, contents.stored_fraction_bits);
+  if (contents.precision == StoragePrecision::Half) {
+    // A combined bake stores single Mie's first lane in the single Rayleigh
+    // part, with that part's exponents; its single Mie part is not written.
+    if (contents.combined_single_mie) {
+      const HalfSliceLanes mie_first_lane{&tables.single_mie.texels, 1};
+      roundToScaledHalf(tables.single_rayleigh, &mie_first_lane, &tables.single_mie.texels);
+    } else {
+      roundToScaledHalf(tables.single_rayleigh, nullptr, nullptr);
+      roundToScaledHalf(tables.single_mie, nullptr, nullptr);
+    }
+    roundToScaledHalf(tables.multiple_scattering, nullptr, nullptr);
+    roundToScaledHalf(tables.multiple_density, nullptr, nullptr);
+  } else {
+    for (std::vector<Spectrum>* texels : {&tables.single_rayleigh.texels, &tables.single_mie.texels,
+                                          &tables.multiple_scattering.texels, &tables.multiple_density.texels}) {
+      roundTexels(*texels, contents.stored_fraction_bits);
+    }
   }
   clearLeftOutTables(contents, tables);
 }

@@ -9,7 +9,8 @@
 # bake: the median wall seconds of the whole process with the min and max,
 # the median CPU seconds and peak memory (GNU time), the file size, and the
 # median seconds of each stage from the bake's report (`skybake bake`
-# writes it beside the file). Build first (scripts/setup.sh).
+# writes it beside the file), and the GPU upload `skybake info` states for
+# the file. Build first (scripts/setup.sh).
 #
 # Usage: scripts/bench_bake.sh [REPETITIONS] [THREADS] [SKYBAKE]
 set -euo pipefail
@@ -39,6 +40,9 @@ for ((i = 0; i < repetitions; ++i)); do
     cp "${out%.exr}.report.json" "$work/${names[b]}.$i.json"
   done
 done
+for name in "${names[@]}"; do
+  "$skybake" info "$work/$name.exr" | grep '^GPU upload:' >"$work/$name.gpu"
+done
 
 "$python" - "$work" "$repetitions" "${names[@]}" <<'EOF'
 import json, statistics, sys
@@ -56,4 +60,5 @@ for name in names:
         for stage, seconds in report.get("stage_seconds", {}).items():
             stages.setdefault(stage, []).append(seconds)
     print("  " + ", ".join(f"{stage} {statistics.median(s):.2f} s" for stage, s in stages.items()))
+    print("  " + open(f"{work}/{name}.gpu").read().strip())
 EOF

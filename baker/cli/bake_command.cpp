@@ -241,7 +241,9 @@ Command addBakeCommand(CLI::App& app) {
                                   "of the total (overrides bake.order_tolerance)."),
                   kMinOrderTolerance, kMaxOrderTolerance);
   addThreadsOption(*cmd, options->threads);
-  cmd->add_option("--precision", options->precision, "Storage precision in the file (overrides bake.precision).")
+  cmd->add_option(
+         "--precision", options->precision,
+         "Storage of the 4D tables in the file (overrides bake.precision; default half, scaled per (r, mu_s) slice).")
       ->check(CLI::IsMember({"half", "float"}));
   cmd->add_option("--outputs", options->outputs,
                   "What the scene uses, comma separated: sky_radiance (always), radiance_to_points, "

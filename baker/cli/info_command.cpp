@@ -11,6 +11,7 @@
 #include "data_formats/config.h"
 #include "data_formats/error.h"
 #include "data_formats/texture_mapping.h"
+#include "runtime/gpu_tables.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {
@@ -116,6 +117,15 @@ void runInfo(const std::string& path) {
           "toward the ground are integrated at lookup (about 20 times slower)\n");
     }
   }
+  // What skybake_gl uploads, each choice (runtime/gpu_tables.h).
+  constexpr double kMiB = 1024.0 * 1024.0;
+  const GpuUploadBytes half = gpuUploadBytes(c, GpuTablePrecision::Half);
+  const GpuUploadBytes full = gpuUploadBytes(c, GpuTablePrecision::Float);
+  fmt::print(
+      "GPU upload:    {:.1f} MiB half (the default: 4D tables {} scaled per (r, mu_s) slice, {:.1f} MiB), "
+      "{:.1f} MiB float (4D tables RGBA32F, {:.1f} MiB)\n",
+      half.total() / kMiB, c.atmosphere.channelCount() <= 3 ? "RGB16F" : "RGBA16F", half.tables_4d / kMiB,
+      full.total() / kMiB, full.tables_4d / kMiB);
   double left_out_mib = 0.0;
   for (const LeftOutPart& p : leftOutParts(c)) {
     fmt::print("left out:      {} ({}), {:.1f} MiB uncompressed\n", p.part, p.reason, p.bytes / (1024.0 * 1024.0));

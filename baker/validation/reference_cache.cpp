@@ -84,6 +84,7 @@ namespace {
 constexpr double kKeySunMaxZenith_deg = 102.0;
 constexpr int kKeyScatteringMuS = 32;
 constexpr int kKeyIrradianceMuS = 64;
+constexpr StoragePrecision kKeyPrecision = StoragePrecision::Float;
 
 // The text of an atmosphere that enters a cache key: its config with fixed
 // sizes and default settings, so that only the atmosphere counts.
@@ -92,13 +93,15 @@ std::string atmosphereKeyText(const AtmosphereParameters& atmosphere) {
   physics_only.name = "reference";
   physics_only.atmosphere = atmosphere;
   // The lowest tabulated sun is the tables' domain, not physics: bakes that
-  // differ only in it share their reference. It and the sizes are pinned to
+  // differ only in it share their reference. It, the sizes and the storage
+  // precision are pinned to
   // the values the keys were first made with (not the current defaults), so
   // that a change of a default keeps every cached reference.
   physics_only.atmosphere.sun_max_zenith_deg = kKeySunMaxZenith_deg;
   physics_only.sizes = TextureSizes{};
   physics_only.sizes.scattering_mu_s = kKeyScatteringMuS;
   physics_only.sizes.irradiance_mu_s = kKeyIrradianceMuS;
+  physics_only.bake.precision = kKeyPrecision;
   return configToToml(physics_only);
 }
 

@@ -1,23 +1,27 @@
-// A loaded bake on the GPU: its tables as RGBA32F textures laid out as the
-// file lays them out (2D tables as 2D textures, u across and r down; 4D
-// tables as 3D textures of their atlas, x = nu * mu_s_size + mu_s, y = mu,
-// z = r), and its constants in a uniform buffer (SkyUniformBlock). Lanes
-// are the bake's channels in its channel order. Needs a current OpenGL 3.3
-// core context; everything is deleted with this object.
+// A loaded bake on the GPU: its tables as textures laid out as the file lays
+// them out (2D tables as 2D textures, u across and r down; 4D tables as 3D
+// textures of their atlas, x = nu * mu_s_size + mu_s, y = mu, z = r), and
+// its constants in a uniform buffer (SkyUniformBlock). The 4D tables are
+// half floats with a power of two per (r, mu_s) slice by default, or
+// RGBA32F on request (runtime/gpu_tables.h: formats and sizes); the 2D
+// tables and the slice scales are RGBA32F. Lanes are the bake's channels in
+// its channel order. Needs a current OpenGL 3.3 core context; everything is
+// deleted with this object.
 #pragma once
 
 #include <array>
 
 #include "runtime/gl/sky_gl_parameters.h"
+#include "runtime/gpu_tables.h"
 #include "runtime/sky.h"
 
 namespace skybake::gl {
 
 // The tables' sampler names in the GLSL, in texture-unit order from the
 // first unit bind() is given.
-inline constexpr std::array<const char*, 6> kSkySamplerNames = {
-    "skybake_optical_depth",       "skybake_single_rayleigh",  "skybake_single_mie",
-    "skybake_multiple_scattering", "skybake_multiple_density", "skybake_irradiance"};
+inline constexpr std::array<const char*, 7> kSkySamplerNames = {
+    "skybake_optical_depth",    "skybake_single_rayleigh", "skybake_single_mie",  "skybake_multiple_scattering",
+    "skybake_multiple_density", "skybake_irradiance",      "skybake_slice_scales"};
 inline constexpr const char* kSkyUniformBlockName = "SkybakeAtmosphere";
 
 class SkyGlResources {
@@ -25,13 +29,13 @@ class SkyGlResources {
   // Uploads the tables (a part the bake left out becomes one texel of 0)
   // and the constants. Throws Error(BadInput) for a bake whose tables exceed
   // the context's texture limits or whose profiles have too many layers.
-  explicit SkyGlResources(const Sky& sky);
+  explicit SkyGlResources(const Sky& sky, GpuTablePrecision precision = GpuTablePrecision::Half);
   ~SkyGlResources();
   SkyGlResources(const SkyGlResources&) = delete;
   SkyGlResources& operator=(const SkyGlResources&) = delete;
 
   // Makes `program` current and binds the tables to texture units
-  // first_unit .. first_unit + 5 and the constants to uniform-buffer
+  // first_unit .. first_unit + 6 and the constants to uniform-buffer
   // binding point `block_binding`.
   void bind(unsigned program, int first_unit = 0, unsigned block_binding = 0) const;
 
@@ -39,8 +43,8 @@ class SkyGlResources {
 
  private:
   SkyUniformBlock constants_;
-  std::array<unsigned, 6> textures_{};  // in kSkySamplerNames' order
-  std::array<unsigned, 6> targets_{};   // GL_TEXTURE_2D or GL_TEXTURE_3D
+  std::array<unsigned, 7> textures_{};  // in kSkySamplerNames' order
+  std::array<unsigned, 7> targets_{};   // GL_TEXTURE_2D or GL_TEXTURE_3D
   unsigned uniform_buffer_ = 0;
 };
 

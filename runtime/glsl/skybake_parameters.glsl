@@ -84,16 +84,26 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   vec4 skybake_layer_constant[3 * SKYBAKE_MAX_DENSITY_LAYERS];
 };
 
-// The tables, RGBA32F, read with texelFetch only (the library interpolates
-// itself, with the CPU's weights). 2D: x = mu (or mu_s), y = r. 4D tables are
-// 3D textures of the file's atlas: x = nu * mu_s_size + mu_s, y = mu, z = r.
-// A table the file leaves out is a 1-texel texture of zeros.
+// The tables, read with texelFetch only (the library interpolates itself,
+// with the CPU's weights). 2D: x = mu (or mu_s), y = r, RGBA32F. 4D tables
+// are 3D textures of the file's atlas: x = nu * mu_s_size + mu_s, y = mu,
+// z = r, as half floats (RGB16F, RGBA16F for 4 channels) each texel of which
+// is its value over its (r, mu_s) slice's scale, or RGBA32F with scales of 1
+// (runtime/gpu_tables.h). A table the file leaves out is a 1-texel texture
+// of zeros.
 SKYBAKE_SAMPLER_LAYOUT(1) uniform sampler2D skybake_optical_depth;      // dimensionless, to the top
 SKYBAKE_SAMPLER_LAYOUT(2) uniform sampler3D skybake_single_rayleigh;    // W m^-2 nm^-1 (over the phase)
 SKYBAKE_SAMPLER_LAYOUT(3) uniform sampler3D skybake_single_mie;         // W m^-2 nm^-1 (over the phase)
 SKYBAKE_SAMPLER_LAYOUT(4) uniform sampler3D skybake_multiple_scattering;  // W m^-2 nm^-1 (over the shape)
 SKYBAKE_SAMPLER_LAYOUT(5) uniform sampler3D skybake_multiple_density;   // W m^-3 nm^-1 (over the shape)
 SKYBAKE_SAMPLER_LAYOUT(6) uniform sampler2D skybake_irradiance;         // W m^-2 nm^-1, horizontal surface
+// The 4D tables' slice scales, RGBA32F, x = mu_s, y = r: lane
+// SKYBAKE_SCALE_* of a texel is that table's scale in slice (r, mu_s).
+SKYBAKE_SAMPLER_LAYOUT(7) uniform sampler2D skybake_slice_scales;
+#define SKYBAKE_SCALE_SINGLE_RAYLEIGH 0
+#define SKYBAKE_SCALE_SINGLE_MIE 1
+#define SKYBAKE_SCALE_MULTIPLE_SCATTERING 2
+#define SKYBAKE_SCALE_MULTIPLE_DENSITY 3
 
 // Radiance (W m^-2 sr^-1 nm^-1) and transmittance (dimensionless) along one path.
 struct SkybakeRadianceAndTransmittance {

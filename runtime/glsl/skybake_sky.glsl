@@ -103,13 +103,17 @@ SkybakeSkyRadianceParts skybakeSkyRadianceParts(vec3 camera_m, vec3 view_dir, ve
   float weight = skybakeIntegratedSingleScatteringWeight(baked_mu_s);
   SkybakeSingleScattering single = SkybakeSingleScattering(vec4(0.0), vec4(0.0));
   if (weight < 1.0) {
-    single.rayleigh = skybakeScattering(skybake_single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+    single.rayleigh = skybakeScattering(skybake_single_rayleigh, SKYBAKE_SCALE_SINGLE_RAYLEIGH, r_p, mu_p, mu_s_p, nu,
+                                        ground) *
+                      shadow_transmittance;
     if (skybake_parts.y != 0)
-      single.mie = skybakeScattering(skybake_single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance;
+      single.mie = skybakeScattering(skybake_single_mie, SKYBAKE_SCALE_SINGLE_MIE, r_p, mu_p, mu_s_p, nu, ground) *
+                   shadow_transmittance;
   }
   parts.single =
       skybakeBlendInIntegratedSingleScattering(single, r, mu, baked_mu_s, nu, ground, shadow, start.length_m, weight);
-  parts.multiple = skybakeScattering(skybake_multiple_scattering, r_p, mu_p, mu_s_p, nu, ground) *
+  parts.multiple = skybakeScattering(skybake_multiple_scattering, SKYBAKE_SCALE_MULTIPLE_SCATTERING, r_p, mu_p, mu_s_p,
+                                     nu, ground) *
                    skybakeMultipleShape(r_p - bottom, nu) * shadow_transmittance;
   return parts;
 }
@@ -187,20 +191,25 @@ SkybakeSegmentScattering skybakeSegmentScattering(float r, float mu, float mu_s,
   vec4 shadow_transmittance =
       shadow == 0.0 ? transmittance : exp(-skybakeOpticalDepthAlongRay(r, mu, d_p, ground));
   SkybakeSegmentScattering s;
-  s.rayleigh = max(skybakeScattering(skybake_single_rayleigh, r, mu, mu_s, nu, ground) -
-                       shadow_transmittance * skybakeScattering(skybake_single_rayleigh, r_p, mu_p, mu_s_p, nu, ground),
-                   vec4(0.0));
+  s.rayleigh =
+      max(skybakeScattering(skybake_single_rayleigh, SKYBAKE_SCALE_SINGLE_RAYLEIGH, r, mu, mu_s, nu, ground) -
+              shadow_transmittance * skybakeScattering(skybake_single_rayleigh, SKYBAKE_SCALE_SINGLE_RAYLEIGH, r_p, mu_p,
+                                                       mu_s_p, nu, ground),
+          vec4(0.0));
   s.mie = vec4(0.0);
   if (skybake_parts.y != 0) {
-    s.mie = max(skybakeScattering(skybake_single_mie, r, mu, mu_s, nu, ground) -
-                    shadow_transmittance * skybakeScattering(skybake_single_mie, r_p, mu_p, mu_s_p, nu, ground),
+    s.mie = max(skybakeScattering(skybake_single_mie, SKYBAKE_SCALE_SINGLE_MIE, r, mu, mu_s, nu, ground) -
+                    shadow_transmittance *
+                        skybakeScattering(skybake_single_mie, SKYBAKE_SCALE_SINGLE_MIE, r_p, mu_p, mu_s_p, nu, ground),
                 vec4(0.0));
   }
-  s.multiple = max(skybakeScattering(skybake_multiple_scattering, r, mu, mu_s, nu, ground) *
-                           skybakeMultipleShape(r - bottom, nu) -
-                       shadow_transmittance * skybakeMultipleShape(r_p - bottom, nu) *
-                           skybakeScattering(skybake_multiple_scattering, r_p, mu_p, mu_s_p, nu, ground),
-                   vec4(0.0));
+  s.multiple =
+      max(skybakeScattering(skybake_multiple_scattering, SKYBAKE_SCALE_MULTIPLE_SCATTERING, r, mu, mu_s, nu, ground) *
+                  skybakeMultipleShape(r - bottom, nu) -
+              shadow_transmittance * skybakeMultipleShape(r_p - bottom, nu) *
+                  skybakeScattering(skybake_multiple_scattering, SKYBAKE_SCALE_MULTIPLE_SCATTERING, r_p, mu_p, mu_s_p,
+                                    nu, ground),
+          vec4(0.0));
   return s;
 }
 

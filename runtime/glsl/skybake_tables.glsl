@@ -74,23 +74,32 @@ vec4 skybakeBlendAcross(vec4 a, vec4 b, float w, bool geometric) {
   return geometric ? skybakeBlendGeometricWhereSteep(a, b, w) : a + (b - a) * w;
 }
 
-// The 4D tables' texel (r, mu, mu_s, nu).
+// The 4D tables' texel (r, mu, mu_s, nu), before its slice's scale.
 vec4 skybakeTexel4D(sampler3D table, int i_r, int i_mu, int i_mu_s, int i_nu) {
   return texelFetch(table, ivec3(i_nu * skybake_scattering_size.z + i_mu_s, i_mu, i_r), 0);
 }
 
+// The scales of the four (r, mu_s) slices around a lookup, lane `scale` of
+// skybake_slice_scales: x (r0, mu_s0), y (r0, mu_s1), z (r1, mu_s0), w (r1, mu_s1).
+vec4 skybakeSliceScales(int scale, SkybakeAxisLerp r, SkybakeAxisLerp mu_s) {
+  return vec4(texelFetch(skybake_slice_scales, ivec2(mu_s.i0, r.i0), 0)[scale],
+              texelFetch(skybake_slice_scales, ivec2(mu_s.i1, r.i0), 0)[scale],
+              texelFetch(skybake_slice_scales, ivec2(mu_s.i0, r.i1), 0)[scale],
+              texelFetch(skybake_slice_scales, ivec2(mu_s.i1, r.i1), 0)[scale]);
+}
+
 // Trilinear in (mu_s, mu, r) within one nu slice, mu_s blended geometrically
-// where `geometric` says.
-vec4 skybakeSampleNuSlice(sampler3D table, SkybakeAxisLerp r, SkybakeAxisLerp mu, SkybakeAxisLerp mu_s, int i_nu,
-                          bool geometric) {
-  vec4 r0mu0 = skybakeBlendAcross(skybakeTexel4D(table, r.i0, mu.i0, mu_s.i0, i_nu),
-                                  skybakeTexel4D(table, r.i0, mu.i0, mu_s.i1, i_nu), mu_s.w1, geometric);
-  vec4 r0mu1 = skybakeBlendAcross(skybakeTexel4D(table, r.i0, mu.i1, mu_s.i0, i_nu),
-                                  skybakeTexel4D(table, r.i0, mu.i1, mu_s.i1, i_nu), mu_s.w1, geometric);
-  vec4 r1mu0 = skybakeBlendAcross(skybakeTexel4D(table, r.i1, mu.i0, mu_s.i0, i_nu),
-                                  skybakeTexel4D(table, r.i1, mu.i0, mu_s.i1, i_nu), mu_s.w1, geometric);
-  vec4 r1mu1 = skybakeBlendAcross(skybakeTexel4D(table, r.i1, mu.i1, mu_s.i0, i_nu),
-                                  skybakeTexel4D(table, r.i1, mu.i1, mu_s.i1, i_nu), mu_s.w1, geometric);
+// where `geometric` says; `scales` from skybakeSliceScales.
+vec4 skybakeSampleNuSlice(sampler3D table, vec4 scales, SkybakeAxisLerp r, SkybakeAxisLerp mu, SkybakeAxisLerp mu_s,
+                          int i_nu, bool geometric) {
+  vec4 r0mu0 = skybakeBlendAcross(skybakeTexel4D(table, r.i0, mu.i0, mu_s.i0, i_nu) * scales.x,
+                                  skybakeTexel4D(table, r.i0, mu.i0, mu_s.i1, i_nu) * scales.y, mu_s.w1, geometric);
+  vec4 r0mu1 = skybakeBlendAcross(skybakeTexel4D(table, r.i0, mu.i1, mu_s.i0, i_nu) * scales.x,
+                                  skybakeTexel4D(table, r.i0, mu.i1, mu_s.i1, i_nu) * scales.y, mu_s.w1, geometric);
+  vec4 r1mu0 = skybakeBlendAcross(skybakeTexel4D(table, r.i1, mu.i0, mu_s.i0, i_nu) * scales.z,
+                                  skybakeTexel4D(table, r.i1, mu.i0, mu_s.i1, i_nu) * scales.w, mu_s.w1, geometric);
+  vec4 r1mu1 = skybakeBlendAcross(skybakeTexel4D(table, r.i1, mu.i1, mu_s.i0, i_nu) * scales.z,
+                                  skybakeTexel4D(table, r.i1, mu.i1, mu_s.i1, i_nu) * scales.w, mu_s.w1, geometric);
   vec4 r0 = r0mu0 + (r0mu1 - r0mu0) * mu.w1;
   vec4 r1 = r1mu0 + (r1mu1 - r1mu0) * mu.w1;
   return r0 + (r1 - r0) * r.w1;
@@ -104,14 +113,16 @@ struct SkybakeScatteringCoord {
   float u_r;
 };
 
-vec4 skybakeSample4D(sampler3D table, SkybakeScatteringCoord c, bool geometric) {
+// A 4D table, `scale` its SKYBAKE_SCALE_* lane, at texture coordinates `c`.
+vec4 skybakeSample4D(sampler3D table, int scale, SkybakeScatteringCoord c, bool geometric) {
   ivec4 size = skybake_scattering_size;
   SkybakeAxisLerp r = skybakeAxisLerp(c.u_r, size.x);
   SkybakeAxisLerp mu = skybakeAxisLerp(c.u_mu, size.y);
   SkybakeAxisLerp mu_s = skybakeAxisLerp(c.u_mu_s, size.z);
   SkybakeAxisLerp nu = skybakeAxisLerpNu(c.u_nu, size.w);
-  return skybakeBlendAcross(skybakeSampleNuSlice(table, r, mu, mu_s, nu.i0, geometric),
-                            skybakeSampleNuSlice(table, r, mu, mu_s, nu.i1, geometric), nu.w1, geometric);
+  vec4 scales = skybakeSliceScales(scale, r, mu_s);
+  return skybakeBlendAcross(skybakeSampleNuSlice(table, scales, r, mu, mu_s, nu.i0, geometric),
+                            skybakeSampleNuSlice(table, scales, r, mu, mu_s, nu.i1, geometric), nu.w1, geometric);
 }
 
 // ---- optical depth (2D: u = mu, v = r) ----
@@ -232,8 +243,9 @@ vec4 skybakeNightScale4D(float mu_s) { return skybake_night.w > 0.5 ? skybakeNig
 
 // A radiance table at (r, mu, mu_s, nu): geometric blends across mu_s and nu
 // with the sun below the horizon (radianceBlend).
-vec4 skybakeScattering(sampler3D table, float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
-  return skybakeSample4D(table, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), mu_s < 0.0) *
+// `scale`: the table's SKYBAKE_SCALE_* lane.
+vec4 skybakeScattering(sampler3D table, int scale, float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
+  return skybakeSample4D(table, scale, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), mu_s < 0.0) *
          skybakeNightScale4D(mu_s);
 }
 
@@ -241,7 +253,8 @@ vec4 skybakeScattering(sampler3D table, float r, float mu, float mu_s, float nu,
 vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
   SkybakeScatteringCoord c = skybakeScatteringCoord(r, 1.0, mu_s, nu, false);
   c.u_mu = skybakeTextureCoordFromUnitRange((mu + 1.0) * 0.5, skybake_scattering_size.y);
-  return skybakeSample4D(skybake_multiple_density, c, mu_s < 0.0) * skybakeNightScale4D(mu_s);
+  return skybakeSample4D(skybake_multiple_density, SKYBAKE_SCALE_MULTIPLE_DENSITY, c, mu_s < 0.0) *
+         skybakeNightScale4D(mu_s);
 }
 
 // ---- irradiance (2D: u = mu_s, v = r) ----

@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/bake/bake.h"
+#include "data_formats/half_slices.h"
 #include "data_formats/stored_float_bits.h"
 #include "runtime/sky.h"
 #include "test_configs.h"
@@ -39,9 +40,16 @@ fs::path tempBake(const char* name) {
   return fs::temp_directory_path() / (std::string("skybake_") + name + "_" + std::to_string(::getpid()) + ".exr");
 }
 
+// Float storage (half, the default, is below).
+BakeConfig floatSmallEarth() {
+  BakeConfig config = test::smallEarth(3);
+  config.bake.precision = StoragePrecision::Float;
+  return config;
+}
+
 TEST(StoredPrecision, TablesKeepTheStoredBitsAndTheFileReadsBackToTheBit) {
   SilentProgress silent;
-  const BakeOutput bake = bakeAtmosphere(test::smallEarth(3), 0, silent);
+  const BakeOutput bake = bakeAtmosphere(floatSmallEarth(), 0, silent);
   const BakeTables& t = bake.file.tables;
   EXPECT_EQ(bake.file.contents.stored_fraction_bits, kDefaultStoredFractionBits);
   for (const std::vector<Spectrum>* texels :
@@ -66,10 +74,10 @@ TEST(StoredPrecision, TablesKeepTheStoredBitsAndTheFileReadsBackToTheBit) {
 
 TEST(StoredPrecision, RoundingMovesLookupsByLessThanItsBoundAndShrinksTheFile) {
   SilentProgress silent;
-  BakeConfig exact_config = test::smallEarth(3);
+  BakeConfig exact_config = floatSmallEarth();
   exact_config.bake.stored_fraction_bits = kFloatFractionBits;
   const BakeOutput exact = bakeAtmosphere(exact_config, 0, silent);
-  const BakeOutput rounded = bakeAtmosphere(test::smallEarth(3), 0, silent);
+  const BakeOutput rounded = bakeAtmosphere(floatSmallEarth(), 0, silent);
   EXPECT_TRUE(keepsAtMost(exact.file.tables.multiple_scattering.texels, kFloatFractionBits));
   EXPECT_FALSE(keepsAtMost(exact.file.tables.multiple_scattering.texels, kDefaultStoredFractionBits));
 
@@ -105,6 +113,33 @@ TEST(StoredPrecision, RoundingMovesLookupsByLessThanItsBoundAndShrinksTheFile) {
   // depths weigh more); 1 % is clear of ZIP's byte-level variation.
   EXPECT_LT(double(rounded_bytes), 0.99 * double(exact_bytes)) << rounded_bytes << " vs " << exact_bytes;
 }
+
+// Half storage (the default): every 4D value is a half times its (r, mu_s)
+// slice's power of two (rounding it again changes nothing), and the file
+// reads back to the bit.
+TEST(StoredPrecision, HalfTablesAreScaledHalvesAndTheFileReadsBackToTheBit) {
+  SilentProgress silent;
+  const BakeOutput bake = bakeAtmosphere(test::smallEarth(3), 0, silent);
+  ASSERT_EQ(bake.file.contents.precision, StoragePrecision::Half);
+  const BakeTables& t = bake.file.tables;
+  for (const Texture4D* table : {&t.single_rayleigh, &t.single_mie, &t.multiple_scattering, &t.multiple_density}) {
+    std::vector<Spectrum> again = table->texels;
+    const HalfSliceLayout layout = HalfSliceLayout::of(*table);
+    roundToScaledHalf(layout, halfSliceExponents(layout, {{&table->texels, kMaxChannels}}), again, kMaxChannels);
+    EXPECT_EQ(again, table->texels);
+  }
+  const fs::path path = tempBake("stored_half");
+  writeBakeFile(path, bake.file);
+  const BakeFile read = readBakeFile(path);
+  fs::remove(path);
+  EXPECT_EQ(read.contents.precision, StoragePrecision::Half);
+  EXPECT_EQ(read.tables.single_rayleigh.texels, t.single_rayleigh.texels);
+  EXPECT_EQ(read.tables.single_mie.texels, t.single_mie.texels);
+  EXPECT_EQ(read.tables.multiple_scattering.texels, t.multiple_scattering.texels);
+  EXPECT_EQ(read.tables.multiple_density.texels, t.multiple_density.texels);
+  EXPECT_EQ(read.tables.irradiance.texels, t.irradiance.texels);
+}
+
 
 }  // namespace
 }  // namespace skybake

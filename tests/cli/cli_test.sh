@@ -15,7 +15,7 @@ expect_status 0 "bake" -- --help
 expect_status 0 "--precision" -- bake --help
 # --version names the program's version (the top-level CMakeLists.txt's) and the bake formats it handles.
 version=$(sed -n 's/^project(skybake VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")
-expect_status 0 "skybake $version (writes bake file format 5, reads formats 2 to 5)" -- --version
+expect_status 0 "skybake $version (writes bake file format 6, reads formats 2 to 6)" -- --version
 expect_status 2 "" -- frobnicate
 expect_status 2 "--threads" -- bake "$small" -o "$work/x.exr" --threads 0
 expect_status 2 "--precision" -- bake "$small" -o "$work/x.exr" --precision double
@@ -249,7 +249,6 @@ spectral_day = {(r["quantity"], r["band"]): r for r in methods[3]["errors"]}[("s
 assert spectral_day["count"] > 0 and spectral_day["ciede2000_median"] >= 0, spectral_day
 PY
 grep -qF "spectral: 5 wavelengths, 2 lane groups" "$work/stdout" || fail "compare --colour printed no spectral bake: $(cat "$work/stdout")"
-PY
 expect_status 2 "--resolutions does not apply" -- compare "$colour_config" --colour --resolutions 1
 expect_status 2 "needs a colour bake's config" -- compare "$spectral" --colour
 

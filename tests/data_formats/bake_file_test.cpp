@@ -2,6 +2,7 @@
 // files are refused with an error.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -33,6 +34,9 @@ BakeFile syntheticBake() {
   domain.scattering_mu_s_coord_max = 0.987654321;
   domain.scattering_ground_views = false;
   bake.contents = storedContents(config, domain);
+  // Float storage, so that every value reads back exactly; the half tests
+  // below ask for half.
+  bake.contents.precision = StoragePrecision::Float;
   bake.config_toml = configToToml(config);
   const TextureSizes& s = bake.contents.sizes;
   bake.orders_computed = 3;
@@ -119,21 +123,59 @@ TEST_F(BakeFileTest, HalfPrecisionKeepsThreeSignificantDigits) {
   }
 }
 
-// The multiple-scattering density is light per metre, far below half's
-// normal range in twilight: a half bake still stores it as float, exactly.
-TEST_F(BakeFileTest, HalfPrecisionKeepsTheDensityInFloat) {
+// Half storage scales each (r, mu_s) slice by its own power of two: values
+// far below half's normal range (6e-5; twilight densities reach 1e-12 W m^-3
+// nm^-1) and far above its largest (65504) keep half's 11 significant bits,
+// in every 4D part, the density included.
+TEST_F(BakeFileTest, HalfPrecisionScalesEachSlice) {
   BakeFile written = syntheticBake();
   written.contents.precision = StoragePrecision::Half;
-  for (Spectrum& v : written.tables.multiple_density.texels) v *= 1e-9f;  // below half's smallest subnormal, 6e-8
-  for (Spectrum& v : written.tables.single_rayleigh.texels) v *= 1e-9f;
-  const fs::path path = dir / "half_density.exr";
+  // Slice (r, mu_s) scaled by 10^(3 (mu_s - r)): slices from 1e-21 to 1e12
+  // times the synthetic values (0.01 to 1e4).
+  for (Texture4D* t : {&written.tables.multiple_density, &written.tables.single_rayleigh}) {
+    for (int r = 0; r < t->r_size; ++r)
+      for (int mu = 0; mu < t->mu_size; ++mu)
+        for (int mu_s = 0; mu_s < t->mu_s_size; ++mu_s)
+          for (int nu = 0; nu < t->nu_size; ++nu) t->at(r, mu, mu_s, nu) *= std::pow(10.0f, 3.0f * (mu_s - r) - 6.0f);
+  }
+  const fs::path path = dir / "half_slices.exr";
   writeBakeFile(path, written);
   const BakeFile read = readBakeFile(path);
-  for (size_t i = 0; i < read.tables.multiple_density.texels.size(); ++i) {
-    ASSERT_EQ(read.tables.multiple_density.texels[i][0], written.tables.multiple_density.texels[i][0]) << i;
+  // Within a slice the synthetic values span at most 1e6 (0.01 to 1e4), well
+  // inside the 2^29 = 5e8 a slice keeps normal: every value within half's
+  // rounding, 2^-11 = 4.9e-4 of itself.
+  for (Texture4D BakeTables::*table : {&BakeTables::multiple_density, &BakeTables::single_rayleigh}) {
+    const std::vector<Spectrum>& w = (written.tables.*table).texels;
+    const std::vector<Spectrum>& r = (read.tables.*table).texels;
+    ASSERT_EQ(w.size(), r.size());
+    for (size_t i = 0; i < w.size(); ++i) {
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(r[i][c], w[i][c], std::abs(w[i][c]) * 4.9e-4f) << i << " " << c;
+    }
   }
-  // The other parts are half: the same values round to 0 there.
-  EXPECT_EQ(read.tables.single_rayleigh.texels[0][0], 0.0f);
+}
+
+// A bake rounds its tables as its file stores them (settleStoredTables): the
+// half file reads back to the bit, and rounding again changes nothing.
+TEST_F(BakeFileTest, SettledHalfTablesReadBackToTheBit) {
+  BakeFile written = syntheticBake();
+  written.contents.precision = StoragePrecision::Half;
+  for (Spectrum& v : written.tables.multiple_density.texels) v *= 1e-9f;
+  settleStoredTables(written.contents, written.tables);
+  BakeTables again = written.tables;
+  settleStoredTables(written.contents, again);
+  const fs::path path = dir / "half_settled.exr";
+  writeBakeFile(path, written);
+  const BakeFile read = readBakeFile(path);
+  for (Texture4D BakeTables::*table : {&BakeTables::single_rayleigh, &BakeTables::single_mie,
+                                       &BakeTables::multiple_scattering, &BakeTables::multiple_density}) {
+    const std::vector<Spectrum>& w = (written.tables.*table).texels;
+    for (size_t i = 0; i < w.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ((read.tables.*table).texels[i][c], w[i][c]) << i;
+        ASSERT_EQ((again.*table).texels[i][c], w[i][c]) << i;
+      }
+    }
+  }
 }
 
 // The config and the report (kilobytes each) are stored once, in the part

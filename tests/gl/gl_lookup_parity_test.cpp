@@ -169,8 +169,10 @@ GLuint floatTexture(int width, int height, const std::vector<glm::vec4>& texels)
 class GlLookups {
  public:
   // `main`: kQueryMain or kEclipseQueryMain.
-  explicit GlLookups(const Sky& sky, const char* main = kQueryMain)
-      : resources_(sky),
+  // `precision`: how the 4D tables are uploaded (runtime/gpu_tables.h).
+  explicit GlLookups(const Sky& sky, const char* main = kQueryMain,
+                     GpuTablePrecision precision = GpuTablePrecision::Half)
+      : resources_(sky, precision),
         program_(gl::kFullScreenVertexShader, "#version 330 core\n" + gl::skyGlslLibrary() + kQueryInputs + main) {}
 
   // One draw per kind of query: llvmpipe ends a shader's loops after 65535
@@ -443,6 +445,22 @@ TEST_F(GlParity, SkyRadiance) {
           sky, gl, queries,
           "sky radiance, sun " + std::to_string(sun_zenith) + " deg, altitude " + std::to_string(altitude) + " m");
     }
+  }
+}
+
+// The same from tables uploaded as RGBA32F (gl_earth.toml is a float bake:
+// the half upload above rounds each texel by up to 2^-11, this one not at
+// all), so both upload paths are held to the CPU.
+TEST_F(GlParity, SkyRadianceFromAFloatUpload) {
+  const Sky sky = Sky::load(bakePath("gl_earth.exr"));
+  const GlLookups gl(sky, kQueryMain, GpuTablePrecision::Float);
+  const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  for (double sun_zenith : {30.0, 95.0}) {
+    std::vector<Query> queries;
+    for (const glm::vec3& d : directions(512, 11)) {
+      queries.push_back({Kind::SkyRadiance, glm::vec3(0.0f, 0.0f, bottom + 1000.0f), d, sunAt(sun_zenith, 20.0)});
+    }
+    expectParity(sky, gl, queries, "sky radiance, float upload, sun " + std::to_string(sun_zenith) + " deg");
   }
 }
 

@@ -1,0 +1,65 @@
+// The 4D tables as skybake_gl uploads them (gpu_tables.h).
+#include "runtime/gpu_tables.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Imath/half.h>
+
+#include "data_formats/half_slices.h"
+
+namespace skybake {
+namespace {
+
+// Bytes of an RGBA32F texel.
+constexpr uint64_t kFloatTexelBytes = 16;
+
+int halfComponents(int channels) { return channels <= 3 ? 3 : 4; }
+
+}  // namespace
+
+HalfTable4D halfTable4D(const Texture4D& table, int channels) {
+  HalfTable4D out;
+  out.components = halfComponents(channels);
+  const HalfSliceLayout layout = HalfSliceLayout::of(table);
+  std::vector<int> exponents = halfSliceExponents(layout, {{&table.texels, channels}});
+  for (int& e : exponents) e = std::clamp(e, kMinGpuSliceExponent, kMaxGpuSliceExponent);
+  out.slice_scales.resize(exponents.size());
+  for (size_t s = 0; s < exponents.size(); ++s) out.slice_scales[s] = std::ldexp(1.0f, exponents[s]);
+  out.values.resize(table.texels.size() * out.components);
+  for (size_t t = 0; t < table.texels.size(); ++t) {
+    const int exponent = exponents[layout.sliceOfTexel(t)];
+    for (int c = 0; c < out.components; ++c) {
+      const Imath::half value(c < channels ? std::ldexp(table.texels[t][c], -exponent) : 0.0f);
+      out.values[t * out.components + c] = value.bits();
+    }
+  }
+  return out;
+}
+
+GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision precision) {
+  const TextureSizes& s = contents.sizes;
+  const uint64_t texels_4d =
+      static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu;
+  const uint64_t texel_bytes =
+      precision == GpuTablePrecision::Half ? 2 * halfComponents(contents.atmosphere.channelCount()) : kFloatTexelBytes;
+  GpuUploadBytes bytes;
+  for (const char* part : {bake_file::kPartSingleRayleigh, bake_file::kPartSingleMie,
+                           bake_file::kPartMultipleScattering, bake_file::kPartMultipleDensity}) {
+    // A combined single Mie table is rebuilt in memory from its first
+    // channel (approximateSingleMie) and uploaded whole.
+    const bool uploaded =
+        part == bake_file::kPartSingleMie ? bakeStoresSingleMie(contents) : !leavesOut(contents, part);
+    bytes.tables_4d += (uploaded ? texels_4d : 1) * texel_bytes;
+  }
+  const uint64_t irradiance_texels =
+      leavesOut(contents, bake_file::kPartIrradiance) ? 1 : static_cast<uint64_t>(s.irradiance_mu_s) * s.irradiance_r;
+  bytes.tables_2d =
+      (static_cast<uint64_t>(s.transmittance_mu) * s.transmittance_r + irradiance_texels) * kFloatTexelBytes;
+  bytes.slice_scales =
+      (precision == GpuTablePrecision::Half ? static_cast<uint64_t>(s.scattering_r) * s.scattering_mu_s : 1) *
+      kFloatTexelBytes;
+  return bytes;
+}
+
+}  // namespace skybake
