@@ -5,9 +5,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
+#include <OpenEXR/ImfFloatVectorAttribute.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputPart.h>
 #include <OpenEXR/ImfMultiPartInputFile.h>
+#include <OpenEXR/ImfMultiPartOutputFile.h>
+#include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include "data_formats/bake_file.h"
@@ -176,6 +181,59 @@ TEST_F(BakeFileTest, SettledHalfTablesReadBackToTheBit) {
       }
     }
   }
+}
+
+// A copy of the half file at `from` whose single_rayleigh part states
+// `exponents` for its slices (none: the attribute removed), pixels as they were.
+void forgeSliceExponents(const fs::path& from, const fs::path& to, const std::optional<std::vector<float>>& exponents) {
+  Imf::MultiPartInputFile in(from.c_str());
+  std::vector<Imf::Header> headers;
+  for (int p = 0; p < in.parts(); ++p) {
+    headers.push_back(in.header(p));
+    if (headers.back().name() != bake_file::kPartSingleRayleigh) continue;
+    headers.back().erase(bake_file::kAttrHalfSliceExponents);
+    if (exponents) headers.back().insert(bake_file::kAttrHalfSliceExponents, Imf::FloatVectorAttribute(*exponents));
+  }
+  Imf::MultiPartOutputFile out(to.c_str(), headers.data(), static_cast<int>(headers.size()));
+  for (int p = 0; p < in.parts(); ++p) {
+    Imf::InputPart source(in, p);
+    Imf::OutputPart(out, p).copyPixels(source);
+  }
+}
+
+// A half file's slice exponents are checked like every other attribute: a
+// forged or damaged list is refused with the part, the attribute and why.
+TEST_F(BakeFileTest, HalfSliceExponentsOutsideTheirRulesAreRefused) {
+  BakeFile written = syntheticBake();
+  written.contents.precision = StoragePrecision::Half;
+  const fs::path good = dir / "half_good.exr";
+  writeBakeFile(good, written);
+  const TextureSizes& s = written.contents.sizes;
+  const size_t slices = static_cast<size_t>(s.scattering_r) * s.scattering_mu_s;
+  const fs::path forged = dir / "half_forged.exr";
+  auto refusal = [&](const std::optional<std::vector<float>>& exponents) {
+    forgeSliceExponents(good, forged, exponents);
+    try {
+      readBakeFile(forged);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+      return std::string(e.what());
+    }
+    return std::string("read without error");
+  };
+  auto expectRefusal = [&](const std::optional<std::vector<float>>& exponents, const std::string& reason) {
+    const std::string message = refusal(exponents);
+    EXPECT_NE(message.find(reason), std::string::npos) << message;
+  };
+  expectRefusal(std::nullopt, "skybake:half_slice_exponents is missing");
+  expectRefusal(std::vector<float>(slices + 1, 0.0f), "need " + std::to_string(slices));
+  std::vector<float> fractional(slices, 0.0f);
+  fractional[2] = 1.5f;
+  expectRefusal(fractional, "holds 1.5 at slice 2: exponents are integers");
+  std::vector<float> huge(slices, 0.0f);
+  huge[0] = 500.0f;
+  expectRefusal(huge, "holds 500 at slice 0");
+  EXPECT_NO_THROW(readBakeFile(good));
 }
 
 // The config and the report (kilobytes each) are stored once, in the part
