@@ -145,14 +145,14 @@ class Reader {
 
   // A HALF 4D part's slice exponents, one set per lane group, each an
   // integer in the range a writer makes (half_slices.h).
-  std::vector<int> sliceExponents(int part, const char* name, const HalfSliceLayout& layout,
-                                  size_t lane_groups) const {
+  std::vector<int> sliceExponents(int part, const char* name, const HalfSliceLayout& layout, size_t lane_groups) const {
     const std::vector<float>& stated = attribute<Imf::FloatVectorAttribute>(part, kAttrHalfSliceExponents).value();
     if (stated.size() != layout.sliceCount() * lane_groups) {
-      fail(fmt::format("part '{}' attribute {} holds {} exponents; its {} x {} (r, mu_s) slices in {} lane group(s) "
-                       "need {}",
-                       name, kAttrHalfSliceExponents, stated.size(), layout.r_size, layout.mu_s_size, lane_groups,
-                       layout.sliceCount() * lane_groups));
+      fail(
+          fmt::format("part '{}' attribute {} holds {} exponents; its {} x {} (r, mu_s) slices in {} lane group(s) "
+                      "need {}",
+                      name, kAttrHalfSliceExponents, stated.size(), layout.r_size, layout.mu_s_size, lane_groups,
+                      layout.sliceCount() * lane_groups));
     }
     std::vector<int> exponents(stated.size());
     for (size_t s = 0; s < stated.size(); ++s) {

@@ -193,8 +193,8 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
       }
     }
     if (part.extra_texels != nullptr) {
-      frame.insert(part.extra_channel,
-                   Imf::Slice(type, baseOf(*part.extra_texels, extra_halves, 0), texel_bytes, texel_bytes * part.width));
+      frame.insert(part.extra_channel, Imf::Slice(type, baseOf(*part.extra_texels, extra_halves, 0), texel_bytes,
+                                                  texel_bytes * part.width));
     }
     out.setFrameBuffer(frame);
     out.writePixels(part.height);

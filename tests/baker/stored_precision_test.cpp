@@ -140,6 +140,5 @@ TEST(StoredPrecision, HalfTablesAreScaledHalvesAndTheFileReadsBackToTheBit) {
   EXPECT_EQ(read.tables.irradiance.texels, t.irradiance.texels);
 }
 
-
 }  // namespace
 }  // namespace skybake
