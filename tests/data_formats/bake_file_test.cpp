@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <string_view>
 
 #include <OpenEXR/ImfFloatVectorAttribute.h>
 #include <OpenEXR/ImfHeader.h>
@@ -189,10 +190,19 @@ void forgeSliceExponents(const fs::path& from, const fs::path& to, const std::op
   Imf::MultiPartInputFile in(from.c_str());
   std::vector<Imf::Header> headers;
   for (int p = 0; p < in.parts(); ++p) {
-    headers.push_back(in.header(p));
-    if (headers.back().name() != bake_file::kPartSingleRayleigh) continue;
-    headers.back().erase(bake_file::kAttrHalfSliceExponents);
-    if (exponents) headers.back().insert(bake_file::kAttrHalfSliceExponents, Imf::FloatVectorAttribute(*exponents));
+    const Imf::Header& source = in.header(p);
+    if (source.name() != bake_file::kPartSingleRayleigh) {
+      headers.push_back(source);
+      continue;
+    }
+    // A new header with every attribute but the exponents (OpenEXR 3.1's
+    // Header::erase leaks the attribute it removes).
+    Imf::Header header(source.displayWindow(), source.dataWindow());
+    for (Imf::Header::ConstIterator a = source.begin(); a != source.end(); ++a) {
+      if (std::string_view(a.name()) != bake_file::kAttrHalfSliceExponents) header.insert(a.name(), a.attribute());
+    }
+    if (exponents) header.insert(bake_file::kAttrHalfSliceExponents, Imf::FloatVectorAttribute(*exponents));
+    headers.push_back(header);
   }
   Imf::MultiPartOutputFile out(to.c_str(), headers.data(), static_cast<int>(headers.size()));
   for (int p = 0; p < in.parts(); ++p) {
