@@ -16,6 +16,7 @@
 #include "baker/bake/bake.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/process_usage.h"
+#include "baker/bake/table_memory.h"
 #include "baker/cli/available_memory.h"
 #include "baker/cli/bake_memory_estimate.h"
 #include "baker/cli/commands.h"
@@ -164,6 +165,7 @@ void runBake(const BakeOptions& o) {
                *o.target_error, size_choice->scale, c.scattering_r, c.scattering_mu, c.scattering_mu_s, c.scattering_nu,
                size_choice->predicted_percent, size_choice->predicted_bake_seconds);
   }
+  keepFreedTableMemory();
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
   setStoredReport(bake, !o.reproducible);
