@@ -208,10 +208,10 @@ class Reader {
   // Restores a half part's values: each half times its slice's 2^exponent.
   static void scaleBySlice(const PartLayout& part, size_t group, std::vector<Spectrum>& texels) {
     const size_t first = group * part.layout_4d.sliceCount();
-    for (size_t t = 0; t < texels.size(); ++t) {
-      const int exponent = part.slice_exponents[first + part.layout_4d.sliceOfTexel(t)];
-      for (int c = 0; c < kMaxChannels; ++c) texels[t][c] = std::ldexp(texels[t][c], exponent);
-    }
+    part.layout_4d.forEachTexel([&](size_t t, size_t slice) {
+      const int exponent = part.slice_exponents[first + slice];
+      for (int c = 0; c < kMaxChannels; ++c) texels[t][c] = scaledByPowerOfTwo(texels[t][c], exponent);
+    });
   }
 
   std::string source_;

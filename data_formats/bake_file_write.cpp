@@ -160,12 +160,12 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
     auto toHalves = [&](const std::vector<Spectrum>& texels, size_t group) {
       std::vector<Imath::half> halves(texels.size() * kMaxChannels);
       const size_t first = group * part.layout_4d->sliceCount();
-      for (size_t t = 0; t < texels.size(); ++t) {
-        const int exponent = slice_exponents[i][first + part.layout_4d->sliceOfTexel(t)];
+      part.layout_4d->forEachTexel([&](size_t t, size_t slice) {
+        const int exponent = slice_exponents[i][first + slice];
         for (int c = 0; c < kMaxChannels; ++c) {
-          halves[t * kMaxChannels + c] = Imath::half(std::ldexp(texels[t][c], -exponent));
+          halves[t * kMaxChannels + c] = Imath::half(scaledByPowerOfTwo(texels[t][c], -exponent));
         }
-      }
+      });
       return halves;
     };
     // Kept alive until the part is written: the slices point into them.

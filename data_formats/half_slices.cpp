@@ -16,18 +16,18 @@ int exponentOfLargest(float largest) { return std::ilogb(largest) - kHalfSliceLa
 }  // namespace
 
 float roundToScaledHalf(float value, int exponent) {
-  const Imath::half stored(std::ldexp(value, -exponent));
-  return std::ldexp(static_cast<float>(stored), exponent);
+  const Imath::half stored(scaledByPowerOfTwo(value, -exponent));
+  return scaledByPowerOfTwo(static_cast<float>(stored), exponent);
 }
 
 std::vector<int> halfSliceExponents(const HalfSliceLayout& layout, const std::vector<HalfSliceLanes>& lanes) {
   std::vector<float> largest(layout.sliceCount(), 0.0f);
   for (const HalfSliceLanes& l : lanes) {
     if (l.texels->empty()) continue;  // a table a lane group lacks: zeros
-    for (size_t t = 0; t < l.texels->size(); ++t) {
-      float& slice_largest = largest[layout.sliceOfTexel(t)];
+    layout.forEachTexel([&](size_t t, size_t slice) {
+      float& slice_largest = largest[slice];
       for (int c = 0; c < l.channels; ++c) slice_largest = std::max(slice_largest, std::abs((*l.texels)[t][c]));
-    }
+    });
   }
   std::vector<int> exponents(largest.size(), 0);
   for (size_t s = 0; s < largest.size(); ++s) {
@@ -41,10 +41,10 @@ std::vector<int> halfSliceExponents(const HalfSliceLayout& layout, const std::ve
 
 void roundToScaledHalf(const HalfSliceLayout& layout, const std::vector<int>& exponents, std::vector<Spectrum>& texels,
                        int channels) {
-  for (size_t t = 0; t < texels.size(); ++t) {
-    const int exponent = exponents[layout.sliceOfTexel(t)];
-    for (int c = 0; c < channels; ++c) texels[t][c] = roundToScaledHalf(texels[t][c], exponent);
-  }
+  if (texels.empty()) return;
+  layout.forEachTexel([&](size_t t, size_t slice) {
+    for (int c = 0; c < channels; ++c) texels[t][c] = roundToScaledHalf(texels[t][c], exponents[slice]);
+  });
 }
 
 }  // namespace skybake

@@ -15,6 +15,8 @@
 // is the only change, and a reader restores each value as half * 2^exponent.
 #pragma once
 
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -34,8 +36,8 @@ inline constexpr int kHalfSliceLargestExponent = 14;
 inline constexpr int kMinHalfSliceExponent = -163;
 inline constexpr int kMaxHalfSliceExponent = 106;
 
-// The 4D tables' atlas layout (textures.h): texel (x, y) lies in slice
-// (y / mu_size) * mu_s_size + x % mu_s_size.
+// The 4D tables' atlas layout (textures.h): texel (r, mu, mu_s, nu) lies in
+// slice r * mu_s_size + mu_s.
 struct HalfSliceLayout {
   int r_size = 0;
   int mu_size = 0;
@@ -44,12 +46,26 @@ struct HalfSliceLayout {
   static HalfSliceLayout of(const Texture4D& t) { return {t.r_size, t.mu_size, t.mu_s_size, t.nu_size}; }
   size_t sliceCount() const { return static_cast<size_t>(r_size) * mu_s_size; }
   size_t texelCount() const { return sliceCount() * mu_size * nu_size; }
-  size_t sliceOfTexel(size_t texel) const {
-    const size_t width = static_cast<size_t>(mu_s_size) * nu_size;
-    const size_t row = texel / width;
-    return (row / mu_size) * mu_s_size + (texel % width) % mu_s_size;
+  // Calls fn(texel index, slice index) for every texel, in memory order.
+  template <typename Fn>
+  void forEachTexel(Fn&& fn) const {
+    size_t texel = 0;
+    for (int r = 0; r < r_size; ++r) {
+      const size_t first_slice = static_cast<size_t>(r) * mu_s_size;
+      for (int row = 0; row < mu_size * nu_size; ++row) {
+        for (int mu_s = 0; mu_s < mu_s_size; ++mu_s) fn(texel++, first_slice + mu_s);
+      }
+    }
   }
 };
+
+// value * 2^exponent, exactly as std::ldexp gives it, by one multiplication
+// where 2^exponent is a normal float (ldexp's integer work was a tenth of a
+// bake's write).
+inline float scaledByPowerOfTwo(float value, int exponent) {
+  if (exponent < -126 || exponent > 127) return std::ldexp(value, exponent);
+  return value * std::bit_cast<float>(static_cast<uint32_t>(exponent + 127) << 23);
+}
 
 // The lanes of one table that share a part's exponents: the first
 // `channels` lanes of `texels`.

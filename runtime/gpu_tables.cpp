@@ -27,13 +27,14 @@ HalfTable4D halfTable4D(const Texture4D& table, int channels) {
   out.slice_scales.resize(exponents.size());
   for (size_t s = 0; s < exponents.size(); ++s) out.slice_scales[s] = std::ldexp(1.0f, exponents[s]);
   out.values.resize(table.texels.size() * out.components);
-  for (size_t t = 0; t < table.texels.size(); ++t) {
-    const int exponent = exponents[layout.sliceOfTexel(t)];
+  if (table.texels.empty()) return out;
+  layout.forEachTexel([&](size_t t, size_t slice) {
+    const int exponent = exponents[slice];
     for (int c = 0; c < out.components; ++c) {
-      const Imath::half value(c < channels ? std::ldexp(table.texels[t][c], -exponent) : 0.0f);
+      const Imath::half value(c < channels ? scaledByPowerOfTwo(table.texels[t][c], -exponent) : 0.0f);
       out.values[t * out.components + c] = value.bits();
     }
-  }
+  });
   return out;
 }
 
