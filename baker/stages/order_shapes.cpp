@@ -11,13 +11,16 @@ namespace {
 
 // Calls f(i_r, i_mu, i_mu_s, i_nu, nu) for every texel, nu being the one the
 // texel was computed for (its slice's, clamped to the range its mu and mu_s
-// allow).
+// allow). Altitude rows run on the OpenMP threads, each row's texels in
+// order on one thread: f may write its texel and accumulate into sums of
+// its own altitude, and such sums add in the same order for any thread count.
 template <typename F>
 void forEachTexel(const TableSampler& sampler, TexelLayout layout, F&& f) {
   const AtmosphereDomain& d = sampler.domain();
   const ScatteringSizes& s = sampler.scatteringSizes();
   std::vector<double> mu_s_of_texel(s.mu_s);
   for (int i_mu_s = 0; i_mu_s < s.mu_s; ++i_mu_s) mu_s_of_texel[i_mu_s] = muSFromScatteringTexel(d, s, i_mu_s);
+#pragma omp parallel for schedule(static)
   for (int i_r = 0; i_r < s.r; ++i_r) {
     for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
       const double mu = layout == TexelLayout::Scattering ? scatteringTexelConfig(d, s, i_r, i_mu, 0, 0).mu
@@ -63,7 +66,9 @@ void addReshaped(const TableSampler& sampler, TexelLayout layout, const Texture4
     throw Error(ErrorKind::Internal, "addReshaped: tables of different sizes");
   }
   if (from.order() == to.order()) {
-    for (size_t i = 0; i < sum.texels.size(); ++i) sum.texels[i] += delta.texels[i] * scale;
+    const ptrdiff_t n = static_cast<ptrdiff_t>(sum.texels.size());
+#pragma omp parallel for schedule(static)
+    for (ptrdiff_t i = 0; i < n; ++i) sum.texels[i] += delta.texels[i] * scale;
     return;
   }
   const ScatteringSizes& s = sampler.scatteringSizes();
