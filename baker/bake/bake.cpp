@@ -1,5 +1,6 @@
 #include "baker/bake/bake.h"
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 #include <optional>
@@ -100,6 +101,31 @@ TailEstimate tableTailRatio(const std::vector<OrderContribution>& orders, int ch
   return tail;
 }
 
+// A density table on fewer view texels (densitySizes) read at
+// every texel of `stored_sizes`: the two axes share their r, mu_s and nu
+// texels, and the view axis is linear in mu on both (muFromDensityTexel), so
+// each texel is the linear blend of the two coarse texels around its mu in
+// its own (r, mu_s, nu) slot, as a lookup blends rows.
+Texture4D densityOnStoredTexels(const Texture4D& coarse, const ScatteringSizes& stored_sizes) {
+  const ScatteringSizes& s = stored_sizes;
+  Texture4D out(s.r, s.mu, s.mu_s, s.nu);
+  const int coarse_mu = coarse.mu_size;
+  const size_t row_texels = static_cast<size_t>(s.mu_s) * s.nu;
+#pragma omp parallel for schedule(static)
+  for (int i_r = 0; i_r < s.r; ++i_r) {
+    for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
+      const double x = (muFromDensityTexel(i_mu, s.mu) + 1.0) * 0.5 * (coarse_mu - 1);
+      const int j = std::clamp(static_cast<int>(x), 0, coarse_mu - 2);
+      const float w = static_cast<float>(x - j);
+      const Spectrum* lower = &coarse.at(i_r, j, 0, 0);
+      const Spectrum* upper = &coarse.at(i_r, j + 1, 0, 0);
+      Spectrum* target = &out.at(i_r, i_mu, 0, 0);
+      for (size_t t = 0; t < row_texels; ++t) target[t] = lower[t] + (upper[t] - lower[t]) * w;
+    }
+  }
+  return out;
+}
+
 // Adds the orders after the last computed one to the stored density, each
 // slice's as its own multiple of the last order (SliceTail); the stored
 // multiple scattering and sky irradiance, integrated from that density
@@ -108,14 +134,13 @@ TailEstimate tableTailRatio(const std::vector<OrderContribution>& orders, int ch
 std::optional<SliceTail> addTailEstimate(const TableSampler& sampler, const std::vector<OrderContribution>& orders,
                                          const OrderConvergence& convergence, int channels,
                                          const Texture4D& last_density, const MultipleScatteringPhase& last_shape,
-                                         const MultipleScatteringPhase& stored_shape, BakeTables& tables,
+                                         const MultipleScatteringPhase& stored_shape, Texture4D& density_sum,
                                          TailEstimate& tail) {
   tail = tableTailRatio(orders, channels);
   if (!tail.applied) return std::nullopt;
   std::optional<SliceTail> slices(std::in_place, sampler, convergence.sliceMeans(2), convergence.sliceMeans(1),
                                   convergence.sliceMeans(0), tail.ratio, kMaxTailRatio);
-  addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, slices->scales(),
-              tables.multiple_density);
+  addReshaped(sampler, TexelLayout::Density, last_density, last_shape, stored_shape, slices->scales(), density_sum);
   tail.reason = fmt::format(
       "applied after order {}: the remaining orders as a series whose ratio relaxes from each slice's last toward "
       "the table's (at most {:.3g} times the last order)",
@@ -222,10 +247,11 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     report.orders.push_back({1, meanOfSlices(single), Spectrum(0.0f)});
   }
 
-  // Orders 2..N. Each order's scattering density is computed on the stored
-  // density's texels and summed there; its radiance, which only feeds the
-  // next order's density (an integral over every direction, which smooths
-  // it), on coarser view and view-sun axes (orderRadianceSizes). The stored
+  // Orders 2..N. Each order's scattering density is computed on half the
+  // view axis of the stored density (densitySizes) and summed there, then
+  // read at the stored texels once. Each order's radiance, which only feeds
+  // the next order's density (an integral over every direction, which smooths it), is
+  // on coarser view and view-sun axes (orderRadianceSizes). The stored
   // multiple scattering is then the summed density, tail included,
   // integrated along each ray once, rather than every order's integrated
   // and summed: the integral is linear in the density. Texels are divided by
@@ -235,22 +261,25 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   // multiplies back.
   const TableSampler order_sampler(sampler.domain(), orderRadianceSizes(sampler.sizes()));
   const StageContext order_ctx{a, order_sampler, progress};
+  const TableSampler density_sampler(sampler.domain(), densitySizes(sampler.sizes()));
+  const StageContext density_ctx{a, density_sampler, progress};
+  const ScatteringSizes& ds = density_sampler.scatteringSizes();
+  Texture4D density_sum(ds.r, ds.mu, ds.mu_s, ds.nu);  // orders 2..N, on density_sampler's texels
   const ScatteringSizes& os = order_sampler.scatteringSizes();
   const MultipleScatteringPhase stored_shape(a);
   std::optional<MultipleScatteringPhase> previous_shape;  // the last computed order's
   tables.irradiance = Texture2D(config.sizes.irradiance_mu_s, config.sizes.irradiance_r);
-  tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   Texture4D delta_multiple;  // the last order's radiance, on order_sampler's texels
-  Texture4D last_density;    // the last order's density at the stored texels
+  Texture4D last_density;    // the last order's density, on density_sampler's texels
   const BakeSettings& settings = config.bake;
   const int last_order = settings.auto_orders ? settings.max_orders : settings.orders;
   report.orders_decision.automatic = settings.auto_orders;
   report.orders_decision.tolerance = settings.auto_orders ? settings.order_tolerance : 0.0;
   report.orders_decision.cap = settings.auto_orders ? settings.max_orders : 0;
-  std::optional<ScatteringDensityKernel> density_kernel;
+  std::optional<ScatteringDensityKernel> density_kernel;  // on density_sampler's texels
   if (last_order >= 2) {
     density_kernel =
-        stage.run("density_kernel", 0, s.r, [&] { return makeScatteringDensityKernel(ctx, optical_depth); });
+        stage.run("density_kernel", 0, s.r, [&] { return makeScatteringDensityKernel(density_ctx, optical_depth); });
   }
   // A scene that narrows the domain stores its 4D tables on its own texels.
   const AtmosphereDomain scene_domain = sceneDomain(config);
@@ -268,12 +297,12 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                                  previous_shape ? *previous_shape : stored_shape};
     // Order 1 is read from the single-scattering tables, later orders from order_sampler's.
     const StageContext& previous_ctx = order == 2 ? ctx : order_ctx;
+    // Order 2 on the stored texels, later orders (smoother) on density_sampler's.
     Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
-      return computeScatteringDensityTable(ctx, *density_kernel, previous, previous_ctx.sampler, order_shape,
+      return computeScatteringDensityTable(density_ctx, *density_kernel, previous, previous_ctx.sampler, order_shape,
                                            delta_irradiance);
     });
-    addReshaped(sampler, TexelLayout::Density, density, order_shape, stored_shape, Spectrum(1.0f),
-                tables.multiple_density);
+    addReshaped(density_sampler, TexelLayout::Density, density, order_shape, stored_shape, Spectrum(1.0f), density_sum);
     if (scene) {
       const ScatteringSizes& ss = scene->sampler.scatteringSizes();
       scene->last = stage.run("scene_density", order, static_cast<size_t>(ss.r) * ss.mu_s, [&] {
@@ -291,7 +320,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
 
     last_density = std::move(density);  // the previous order's is needed no longer
     delta_multiple = stage.run("order_radiance", order, static_cast<size_t>(os.r) * os.mu, [&] {
-      return computeMultipleScatteringTable(order_ctx, optical_depth, sampler, last_density, order_shape,
+      return computeMultipleScatteringTable(order_ctx, optical_depth, density_sampler, last_density, order_shape,
                                             kOrderRadianceRaySegments);
     });
     const std::vector<SpectrumD> order_slices = sliceMeanShapedRadiance(order_sampler, delta_multiple, order_shape);
@@ -310,11 +339,12 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     }
   }
 
+  // Orders 3 and up (and a tail that follows one) were summed on density_sampler's texels.
   if (config.bake.tail_estimate) {
     const MultipleScatteringPhase& last_shape = previous_shape ? *previous_shape : stored_shape;
     const std::optional<SliceTail> slice_tail =
-        addTailEstimate(sampler, report.orders, convergence, a.channelCount(), last_density, last_shape, stored_shape,
-                        tables, report.tail);
+        addTailEstimate(density_sampler, report.orders, convergence, a.channelCount(), last_density, last_shape,
+                        stored_shape, density_sum, report.tail);
     if (scene && slice_tail) {
       // The scene's texels take the whole domain's tail at their altitude and sun.
       addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape,
@@ -327,7 +357,11 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   last_density = Texture4D();
   if (last_order < 2) {
     tables.multiple_scattering = Texture4D(s.r, s.mu, s.mu_s, s.nu);
+    tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   } else {
+    tables.multiple_density =
+        stage.run("stored_density", 0, slices_4d, [&] { return densityOnStoredTexels(density_sum, s); });
+    density_sum = Texture4D();
     tables.multiple_scattering = stage.run("multiple_scattering", 0, rows_4d, [&] {
       return computeMultipleScatteringTable(ctx, optical_depth, sampler, tables.multiple_density, stored_shape,
                                             kStoredRaySegments);

@@ -120,6 +120,12 @@ TextureSizes orderRadianceSizes(const TextureSizes& iteration) {
   return sizes;
 }
 
+TextureSizes densitySizes(const TextureSizes& iteration) {
+  TextureSizes sizes = iteration;
+  sizes.scattering_mu = orderRadianceSizes(iteration).scattering_mu;
+  return sizes;
+}
+
 BakeContents bakeContents(const BakeConfig& settled) { return storedContents(settled, sceneDomain(settled)); }
 
 }  // namespace skybake

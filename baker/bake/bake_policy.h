@@ -33,6 +33,16 @@ TextureSizes iterationTextureSizes(const BakeConfig& config);
 // "Orders on coarser tables").
 TextureSizes orderRadianceSizes(const TextureSizes& iteration);
 
+// The texels the orders compute their scattering density on: half the view
+// axis (orderRadianceSizes'), every other axis kept. The density is an
+// integral over every direction of the light arriving at a point, smooth in
+// the view direction, and the stored density's view axis is linear in mu
+// like this one's: its texels are blended from these in their own (r, mu_s,
+// nu) slots once (densityOnStoredTexels in bake.cpp), which moves every
+// figure of the built-in Earth by at most 0.06 % RMS against density on the
+// stored texels (docs/ERROR_VS_TIME.md, "The density on half the view axis").
+TextureSizes densitySizes(const TextureSizes& iteration);
+
 // The config as the bake uses and stores it: a sun range that would add less
 // than a texel's worth of resolution to the sun axis is dropped (the tables
 // keep the whole axis, on the iteration's own sun texels), and a scene that
