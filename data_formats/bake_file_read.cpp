@@ -88,7 +88,8 @@ class Reader {
   }
   const Imf::Header& header(int part) const { return file_.header(part); }
   // The precision the bake was stored at: its single-scattering part's
-  // channel type (the density part is always float, FORMAT.md).
+  // channel type (the 2D parts are always FLOAT, and before version 6 the
+  // density part was too).
   StoragePrecision storedPrecision() const {
     const Imf::ChannelList& channels = file_.header(findPart(kPartSingleRayleigh)).channels();
     return channels.begin() != channels.end() && channels.begin().channel().type == Imf::HALF ? StoragePrecision::Half

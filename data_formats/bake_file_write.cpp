@@ -219,54 +219,32 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
     for (const LaneGroup& g : groups) out.push_back(&(g.tables->*table).texels);
     return out;
   };
+  // A 4D table's part: its atlas and layout.
+  auto table4D = [&](const char* name, const char* content, const char* units, Texture4D BakeTables::*table) {
+    const Texture4D& shape = t.*table;
+    PartToWrite part{
+        name, content, units, texels(table), shape.atlasWidth(), shape.atlasHeight(), table4DSizeText(shape)};
+    part.layout_4d = HalfSliceLayout::of(shape);
+    return part;
+  };
   std::vector<PartToWrite> parts = {
       {kPartOpticalDepth, "optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
        "dimensionless", texels(&BakeTables::optical_depth), t.optical_depth.width, t.optical_depth.height,
        fmt::format("mu={} r={}", t.optical_depth.width, t.optical_depth.height)},
-      {kPartSingleRayleigh,
-       "single Rayleigh scattering radiance divided by the Rayleigh phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)",
-       texels(&BakeTables::single_rayleigh),
-       t.single_rayleigh.atlasWidth(),
-       t.single_rayleigh.atlasHeight(),
-       table4DSizeText(t.single_rayleigh),
-       {},
-       nullptr,
-       HalfSliceLayout::of(t.single_rayleigh)},
-      {kPartSingleMie,
-       "single Mie scattering radiance divided by the Mie phase function",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)",
-       texels(&BakeTables::single_mie),
-       t.single_mie.atlasWidth(),
-       t.single_mie.atlasHeight(),
-       table4DSizeText(t.single_mie),
-       {},
-       nullptr,
-       HalfSliceLayout::of(t.single_mie)},
-      {kPartMultipleScattering,
-       "scattering orders 2 and up, radiance divided by the multiple-scattering shape at the texel's r and nu",
-       "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)",
-       texels(&BakeTables::multiple_scattering),
-       t.multiple_scattering.atlasWidth(),
-       t.multiple_scattering.atlasHeight(),
-       table4DSizeText(t.multiple_scattering),
-       {},
-       nullptr,
-       HalfSliceLayout::of(t.multiple_scattering)},
+      table4D(kPartSingleRayleigh, "single Rayleigh scattering radiance divided by the Rayleigh phase function",
+              "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &BakeTables::single_rayleigh),
+      table4D(kPartSingleMie, "single Mie scattering radiance divided by the Mie phase function",
+              "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over phase sr^-1)", &BakeTables::single_mie),
+      table4D(kPartMultipleScattering,
+              "scattering orders 2 and up, radiance divided by the multiple-scattering shape at the texel's r and nu",
+              "W m^-2 nm^-1 (radiance W m^-2 sr^-1 nm^-1 over shape sr^-1)", &BakeTables::multiple_scattering),
       {kPartIrradiance, "sky irradiance on a horizontal surface at (r, mu_s), direct sun excluded", "W m^-2 nm^-1",
        texels(&BakeTables::irradiance), t.irradiance.width, t.irradiance.height,
        fmt::format("mu_s={} r={}", t.irradiance.width, t.irradiance.height)},
-      {kPartMultipleDensity,
-       "scattering density of orders 2 and up: light scattered per unit length toward the viewer, "
-       "divided by the multiple-scattering shape at the texel's r and nu",
-       "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)",
-       texels(&BakeTables::multiple_density),
-       t.multiple_density.atlasWidth(),
-       t.multiple_density.atlasHeight(),
-       table4DSizeText(t.multiple_density),
-       {},
-       nullptr,
-       HalfSliceLayout::of(t.multiple_density)},
+      table4D(kPartMultipleDensity,
+              "scattering density of orders 2 and up: light scattered per unit length toward the viewer, "
+              "divided by the multiple-scattering shape at the texel's r and nu",
+              "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &BakeTables::multiple_density),
   };
   if (bake.contents.combined_single_mie) {
     auto is_rayleigh = [](const PartToWrite& p) { return p.name == std::string_view(kPartSingleRayleigh); };

@@ -45,7 +45,6 @@ struct HalfSliceLayout {
   int nu_size = 0;
   static HalfSliceLayout of(const Texture4D& t) { return {t.r_size, t.mu_size, t.mu_s_size, t.nu_size}; }
   size_t sliceCount() const { return static_cast<size_t>(r_size) * mu_s_size; }
-  size_t texelCount() const { return sliceCount() * mu_size * nu_size; }
   // Calls fn(texel index, slice index) for every texel, in memory order.
   template <typename Fn>
   void forEachTexel(Fn&& fn) const {
@@ -75,8 +74,8 @@ struct HalfSliceLanes {
 };
 
 // Each slice's exponent for texels laid out as `layout`, the largest value
-// taken over every one of `lanes` (a spectral bake's lane groups and a
-// combined single Mie channel share a part, so they share its exponents). A
+// taken over every one of `lanes` (a table and the combined single Mie
+// channel stored beside it share their exponents). A
 // slice of zeros gets 0. The exponents are those of the values as stored:
 // where rounding the largest value to half carries it into the next binade,
 // the slice takes the next exponent, so that the exponents of stored values

@@ -12,16 +12,16 @@ void roundTexels(std::vector<Spectrum>& texels, int fraction_bits) {
   }
 }
 
-// A 4D table rounded as a half file stores it; `shared` holds lanes stored
-// in the same part (a combined single Mie channel), rounded with its
-// exponents too.
-void roundToScaledHalf(Texture4D& table, const HalfSliceLanes* shared, std::vector<Spectrum>* shared_texels) {
+// A 4D table rounded as a half file stores it. `first_lane_beside`, if
+// given, is a table whose first lane the same part stores (a combined single
+// Mie channel): rounded with the part's exponents too.
+void roundToScaledHalf(Texture4D& table, std::vector<Spectrum>* first_lane_beside = nullptr) {
   std::vector<HalfSliceLanes> lanes = {{&table.texels, kMaxChannels}};
-  if (shared != nullptr) lanes.push_back(*shared);
+  if (first_lane_beside != nullptr) lanes.push_back({first_lane_beside, 1});
   const HalfSliceLayout layout = HalfSliceLayout::of(table);
   const std::vector<int> exponents = halfSliceExponents(layout, lanes);
   roundToScaledHalf(layout, exponents, table.texels, kMaxChannels);
-  if (shared_texels != nullptr) roundToScaledHalf(layout, exponents, *shared_texels, shared->channels);
+  if (first_lane_beside != nullptr) roundToScaledHalf(layout, exponents, *first_lane_beside, 1);
 }
 
 }  // namespace
@@ -35,14 +35,13 @@ void settleStoredTables(const BakeContents& contents, BakeTables& tables) {
     // A combined bake stores single Mie's first lane in the single Rayleigh
     // part, with that part's exponents; its single Mie part is not written.
     if (contents.combined_single_mie) {
-      const HalfSliceLanes mie_first_lane{&tables.single_mie.texels, 1};
-      roundToScaledHalf(tables.single_rayleigh, &mie_first_lane, &tables.single_mie.texels);
+      roundToScaledHalf(tables.single_rayleigh, &tables.single_mie.texels);
     } else {
-      roundToScaledHalf(tables.single_rayleigh, nullptr, nullptr);
-      roundToScaledHalf(tables.single_mie, nullptr, nullptr);
+      roundToScaledHalf(tables.single_rayleigh);
+      roundToScaledHalf(tables.single_mie);
     }
-    roundToScaledHalf(tables.multiple_scattering, nullptr, nullptr);
-    roundToScaledHalf(tables.multiple_density, nullptr, nullptr);
+    roundToScaledHalf(tables.multiple_scattering);
+    roundToScaledHalf(tables.multiple_density);
   } else {
     for (std::vector<Spectrum>* texels : {&tables.single_rayleigh.texels, &tables.single_mie.texels,
                                           &tables.multiple_scattering.texels, &tables.multiple_density.texels}) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include <Imath/half.h>
 
@@ -49,8 +50,8 @@ GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision pr
                            bake_file::kPartMultipleScattering, bake_file::kPartMultipleDensity}) {
     // A combined single Mie table is rebuilt in memory from its first
     // channel (approximateSingleMie) and uploaded whole.
-    const bool uploaded =
-        part == bake_file::kPartSingleMie ? bakeStoresSingleMie(contents) : !leavesOut(contents, part);
+    const bool uploaded = std::string_view(part) == bake_file::kPartSingleMie ? bakeStoresSingleMie(contents)
+                                                                              : !leavesOut(contents, part);
     bytes.tables_4d += (uploaded ? texels_4d : 1) * texel_bytes;
   }
   const uint64_t irradiance_texels =
