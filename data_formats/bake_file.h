@@ -25,12 +25,15 @@ namespace skybake {
 // version 5 spreads the sun axis's texels split at the horizon
 // (SunAxisMapping::SplitAtHorizon); version 6 stores HALF 4D parts scaled by
 // a power of two per (r, mu_s) slice (half_slices.h), the density part
-// included, and the irradiance always FLOAT. Versions 2 to 5 (2 to 4 on
-// Bruneton's sun axis; 2 and 3 always wavelengths) are still read (FORMAT.md,
-// "Older versions").
-inline constexpr int kBakeFormatVersion = 6;
+// included, and the irradiance always FLOAT; version 7 states the density
+// part's own view (mu) size, which may be smaller than the other 4D parts'.
+// Versions 2 to 6 (2 to 4 on Bruneton's sun axis; 2 and 3 always
+// wavelengths) are still read (FORMAT.md, "Older versions").
+inline constexpr int kBakeFormatVersion = 7;
 // The first format version whose HALF 4D parts carry slice exponents.
 inline constexpr int kFirstHalfSliceExponentsFormatVersion = 6;
+// The first format version that states the density part's view size.
+inline constexpr int kFirstDensityViewSizeFormatVersion = 7;
 // The first format version whose sun axis is SunAxisMapping::SplitAtHorizon.
 inline constexpr int kFirstSplitSunAxisFormatVersion = 5;
 
@@ -91,7 +94,19 @@ struct BakeContents {
   // most kMaxChannels, in channel order, each an ordinary atmosphere of
   // those wavelengths. Empty otherwise.
   std::vector<AtmosphereParameters> lane_groups;
+  // The multiple-scattering density table's view (mu) texels; its r, mu_s
+  // and nu axes are the other 4D tables'. Its mu axis is linear in the view
+  // cosine (densityCoordMu) and smooth, so it may hold fewer texels than
+  // the radiance tables' (set by the baker; before format version 7, equal).
+  int density_view_size = 0;
   bool operator==(const BakeContents&) const = default;
+
+  // The density table's sizes: sizes with scattering_mu = density_view_size.
+  TextureSizes densityTableSizes() const {
+    TextureSizes s = sizes;
+    s.scattering_mu = density_view_size;
+    return s;
+  }
 };
 
 // The contents of a bake of `config` whose 4D tables cover `domain`.

@@ -45,6 +45,8 @@ inline constexpr const char* kAttrOpticalDepthSize = "skybake:optical_depth_size
 inline constexpr const char* kAttrIrradianceSize = "skybake:irradiance_size";
 inline constexpr const char* kAttrScatteringSizeRMu = "skybake:scattering_size_r_mu";
 inline constexpr const char* kAttrScatteringSizeMuSNu = "skybake:scattering_size_mu_s_nu";
+// Version 7: the density part's view (mu) texels (BakeContents::density_view_size).
+inline constexpr const char* kAttrDensityViewSize = "skybake:density_view_size";
 inline constexpr const char* kAttrOutputs = "skybake:outputs";
 inline constexpr const char* kAttrCombinedSingleMie = "skybake:combined_single_mie";
 // The fraction bits every FLOAT value but the optical depths' keeps

@@ -180,6 +180,7 @@ void insertContentsAttributes(const BakeContents& contents, Imf::Header& header)
   header.insert(kAttrIrradianceSize, Imf::V2iAttribute({s.irradiance_mu_s, s.irradiance_r}));
   header.insert(kAttrScatteringSizeRMu, Imf::V2iAttribute({s.scattering_r, s.scattering_mu}));
   header.insert(kAttrScatteringSizeMuSNu, Imf::V2iAttribute({s.scattering_mu_s, s.scattering_nu}));
+  header.insert(kAttrDensityViewSize, Imf::IntAttribute(contents.density_view_size));
   header.insert(kAttrOutputs, Imf::StringAttribute(outputsText(contents.outputs)));
   header.insert(kAttrCombinedSingleMie, Imf::IntAttribute(contents.combined_single_mie ? 1 : 0));
   header.insert(kAttrStoredFractionBits, Imf::IntAttribute(contents.stored_fraction_bits));
@@ -251,6 +252,12 @@ BakeContents readContentsAttributes(const Imf::Header& header, int format_versio
   const Imath::V2i mu_s_nu = in.size(kAttrScatteringSizeMuSNu);
   s = {optical_depth.x, optical_depth.y, irradiance.x, irradiance.y, r_mu.x,
        r_mu.y,          mu_s_nu.x,       mu_s_nu.y,    std::nullopt};
+  // Stated since version 7 (and by a file of that writer on Bruneton's sun
+  // axis, written at version 4); before, the density had the others' size.
+  const bool states_density_size = header.findTypedAttribute<Imf::IntAttribute>(kAttrDensityViewSize) != nullptr;
+  c.density_view_size = states_density_size || format_version >= kFirstDensityViewSizeFormatVersion
+                            ? in.integer(kAttrDensityViewSize)
+                            : s.scattering_mu;
 
   c.outputs.radiance_to_points = false;
   c.outputs.ground_irradiance = false;
@@ -308,6 +315,13 @@ void validateContents(const BakeContents& contents, const std::string& source) {
   config.scene_ranges.views_below_horizon = contents.domain.scattering_ground_views;
   config.colour_groups = contents.lane_groups;
   validateConfig(config, source);
+  // The density's view axis is linear over [-1, 1] with a texel at each end
+  // (muFromDensityTexel), so it needs 2; more than the radiance tables' view
+  // texels no writer makes.
+  if (!(contents.density_view_size >= 2 && contents.density_view_size <= contents.sizes.scattering_mu)) {
+    throwBadInput(fmt::format("{}: {} = {}: must be in [2, {}] (the 4D tables' view texels)", source,
+                              kAttrDensityViewSize, contents.density_view_size, contents.sizes.scattering_mu));
+  }
   if (contents.combined_single_mie && !bakeStoresSingleMie(contents)) {
     throwBadInput(fmt::format("{}: {} = 1 but no channel has Mie scattering", source, kAttrCombinedSingleMie));
   }

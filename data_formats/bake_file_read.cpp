@@ -345,7 +345,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
     t->single_rayleigh = emptyTexture4D(s);
     t->single_mie = emptyTexture4D(s);
     t->multiple_scattering = emptyTexture4D(s);
-    t->multiple_density = emptyTexture4D(s);
+    t->multiple_density = emptyTexture4D(bake.contents.densityTableSizes());
   }
   const BakeTables& t = *group_tables.front();
   // A table's texels in any group's tables.

@@ -253,6 +253,13 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
     rayleigh.extra_texels = &t.single_mie.texels;
   }
   std::erase_if(parts, [&](const PartToWrite& p) { return leavesOut(bake.contents, p.name); });
+  // The header states the density's view size; a reader sizes the part by it.
+  if (!leavesOut(bake.contents, kPartMultipleDensity) &&
+      t.multiple_density.mu_size != bake.contents.density_view_size) {
+    throw Error(ErrorKind::Internal,
+                fmt::format("{}: the density table has {} view texels, the contents state {}", path.string(),
+                            t.multiple_density.mu_size, bake.contents.density_view_size));
+  }
   for (const PartToWrite& part : parts) {
     const size_t size = static_cast<size_t>(part.width) * part.height;
     // Only a spectral bake's group without Mie scattering may lack a written table.

@@ -12,6 +12,7 @@ BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& do
   c.atmosphere = config.atmosphere;
   c.sizes = config.sizes;
   c.sizes.iteration.reset();
+  c.density_view_size = c.sizes.scattering_mu;
   c.domain = domain;
   c.outputs = config.scene;
   c.precision = config.bake.precision;
@@ -55,7 +56,8 @@ std::vector<LeftOutPart> leftOutParts(const BakeContents& c) {
   // Rays toward the ground are integrated over the density when the 4D
   // tables leave them out ([scene] views_below_horizon), so it stays then.
   if (!c.outputs.radiance_to_points && c.domain.scattering_ground_views) {
-    out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points", table_4d});
+    out.push_back({bake_file::kPartMultipleDensity, "scene.outputs without radiance_to_points",
+                   table_4d / s.scattering_mu * c.density_view_size});
   }
   if (!c.outputs.ground_irradiance) {
     out.push_back({bake_file::kPartIrradiance, "scene.outputs without ground_irradiance",

@@ -45,14 +45,16 @@ GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision pr
       static_cast<uint64_t>(s.scattering_r) * s.scattering_mu * s.scattering_mu_s * s.scattering_nu;
   const uint64_t texel_bytes =
       precision == GpuTablePrecision::Half ? 2 * halfComponents(contents.atmosphere.channelCount()) : kFloatTexelBytes;
+  const uint64_t density_texels = texels_4d / s.scattering_mu * contents.density_view_size;
   GpuUploadBytes bytes;
   for (const char* part : {bake_file::kPartSingleRayleigh, bake_file::kPartSingleMie,
                            bake_file::kPartMultipleScattering, bake_file::kPartMultipleDensity}) {
     // A combined single Mie table is rebuilt in memory from its first
     // channel (approximateSingleMie) and uploaded whole.
+    const bool density = std::string_view(part) == bake_file::kPartMultipleDensity;
     const bool uploaded = std::string_view(part) == bake_file::kPartSingleMie ? bakeStoresSingleMie(contents)
                                                                               : !leavesOut(contents, part);
-    bytes.tables_4d += (uploaded ? texels_4d : 1) * texel_bytes;
+    bytes.tables_4d += (uploaded ? (density ? density_texels : texels_4d) : 1) * texel_bytes;
   }
   const uint64_t irradiance_texels =
       leavesOut(contents, bake_file::kPartIrradiance) ? 1 : static_cast<uint64_t>(s.irradiance_mu_s) * s.irradiance_r;

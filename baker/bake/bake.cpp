@@ -101,31 +101,6 @@ TailEstimate tableTailRatio(const std::vector<OrderContribution>& orders, int ch
   return tail;
 }
 
-// A density table on fewer view texels (densitySizes) read at
-// every texel of `stored_sizes`: the two axes share their r, mu_s and nu
-// texels, and the view axis is linear in mu on both (muFromDensityTexel), so
-// each texel is the linear blend of the two coarse texels around its mu in
-// its own (r, mu_s, nu) slot, as a lookup blends rows.
-Texture4D densityOnStoredTexels(const Texture4D& coarse, const ScatteringSizes& stored_sizes) {
-  const ScatteringSizes& s = stored_sizes;
-  Texture4D out(s.r, s.mu, s.mu_s, s.nu);
-  const int coarse_mu = coarse.mu_size;
-  const size_t row_texels = static_cast<size_t>(s.mu_s) * s.nu;
-#pragma omp parallel for schedule(static)
-  for (int i_r = 0; i_r < s.r; ++i_r) {
-    for (int i_mu = 0; i_mu < s.mu; ++i_mu) {
-      const double x = (muFromDensityTexel(i_mu, s.mu) + 1.0) * 0.5 * (coarse_mu - 1);
-      const int j = std::clamp(static_cast<int>(x), 0, coarse_mu - 2);
-      const float w = static_cast<float>(x - j);
-      const Spectrum* lower = &coarse.at(i_r, j, 0, 0);
-      const Spectrum* upper = &coarse.at(i_r, j + 1, 0, 0);
-      Spectrum* target = &out.at(i_r, i_mu, 0, 0);
-      for (size_t t = 0; t < row_texels; ++t) target[t] = lower[t] + (upper[t] - lower[t]) * w;
-    }
-  }
-  return out;
-}
-
 // Adds the orders after the last computed one to the stored density, each
 // slice's as its own multiple of the last order (SliceTail); the stored
 // multiple scattering and sky irradiance, integrated from that density
@@ -248,8 +223,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   }
 
   // Orders 2..N. Each order's scattering density is computed on half the
-  // view axis of the stored density (densitySizes) and summed there, then
-  // read at the stored texels once. Each order's radiance, which only feeds
+  // view axis (densitySizes) and summed there, as the file stores it. Each order's radiance, which only feeds
   // the next order's density (an integral over every direction, which smooths it), is
   // on coarser view and view-sun axes (orderRadianceSizes). The stored
   // multiple scattering is then the summed density, tail included,
@@ -297,7 +271,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                                  previous_shape ? *previous_shape : stored_shape};
     // Order 1 is read from the single-scattering tables, later orders from order_sampler's.
     const StageContext& previous_ctx = order == 2 ? ctx : order_ctx;
-    // Order 2 on the stored texels, later orders (smoother) on density_sampler's.
+    // Every order's density on density_sampler's texels (densitySizes).
     Texture4D density = stage.run("scattering_density", order, slices_4d, [&] {
       return computeScatteringDensityTable(density_ctx, *density_kernel, previous, previous_ctx.sampler, order_shape,
                                            delta_irradiance);
@@ -355,15 +329,13 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   }
   delta_multiple = Texture4D();  // no longer needed: free it before the stored table is integrated
   last_density = Texture4D();
+  // The density is stored on density_sampler's texels (bakeContents).
+  tables.multiple_density = std::move(density_sum);
   if (last_order < 2) {
     tables.multiple_scattering = Texture4D(s.r, s.mu, s.mu_s, s.nu);
-    tables.multiple_density = Texture4D(s.r, s.mu, s.mu_s, s.nu);
   } else {
-    tables.multiple_density =
-        stage.run("stored_density", 0, slices_4d, [&] { return densityOnStoredTexels(density_sum, s); });
-    density_sum = Texture4D();
     tables.multiple_scattering = stage.run("multiple_scattering", 0, rows_4d, [&] {
-      return computeMultipleScatteringTable(ctx, optical_depth, sampler, tables.multiple_density, stored_shape,
+      return computeMultipleScatteringTable(ctx, optical_depth, density_sampler, tables.multiple_density, stored_shape,
                                             kStoredRaySegments);
     });
     // The sky irradiance of orders 2 and up, from the stored table: the same
@@ -380,7 +352,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     const ScatteringSizes& ss = scene->sampler.scatteringSizes();
     // Single and multiple scattering each advance once per (r, mu) row of the scene's tables.
     stage.run("scene_tables", 0, 2 * static_cast<size_t>(ss.r) * ss.mu, [&] {
-      narrowTablesToScene(scene->ctx, sampler, optical_depth, stored_shape, std::move(scene->sum), tables);
+      narrowTablesToScene(scene->ctx, density_sampler, optical_depth, stored_shape, std::move(scene->sum), tables);
     });
   }
 

@@ -126,6 +126,13 @@ TextureSizes densitySizes(const TextureSizes& iteration) {
   return sizes;
 }
 
-BakeContents bakeContents(const BakeConfig& settled) { return storedContents(settled, sceneDomain(settled)); }
+BakeContents bakeContents(const BakeConfig& settled) {
+  const AtmosphereDomain scene = sceneDomain(settled);
+  BakeContents contents = storedContents(settled, scene);
+  // The whole domain's density is summed on densitySizes and stored so; a
+  // narrowed scene computes its own on the stored texels (bake.cpp).
+  if (!scene.narrowed()) contents.density_view_size = densitySizes(settled.sizes).scattering_mu;
+  return contents;
+}
 
 }  // namespace skybake

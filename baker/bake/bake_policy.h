@@ -33,14 +33,14 @@ TextureSizes iterationTextureSizes(const BakeConfig& config);
 // "Orders on coarser tables").
 TextureSizes orderRadianceSizes(const TextureSizes& iteration);
 
-// The texels the orders compute their scattering density on: half the view
-// axis (orderRadianceSizes'), every other axis kept. The density is an
-// integral over every direction of the light arriving at a point, smooth in
-// the view direction, and the stored density's view axis is linear in mu
-// like this one's: its texels are blended from these in their own (r, mu_s,
-// nu) slots once (densityOnStoredTexels in bake.cpp), which moves every
-// figure of the built-in Earth by at most 0.06 % RMS against density on the
-// stored texels (docs/ERROR_VS_TIME.md, "The density on half the view axis").
+// The texels the orders compute their scattering density on, and the file
+// stores it on (BakeContents::density_view_size): half the view axis
+// (orderRadianceSizes'), every other axis kept. The density is an integral
+// over every direction of the light arriving at a point, smooth in the view
+// direction, and its view axis is linear in mu: read on these texels, every
+// figure of the built-in Earth moves by at most 0.06 % RMS against density
+// on the radiance tables' view texels (docs/ERROR_VS_TIME.md, "The density
+// on half the view axis").
 TextureSizes densitySizes(const TextureSizes& iteration);
 
 // The config as the bake uses and stores it: a sun range that would add less
@@ -55,7 +55,8 @@ TextureSizes densitySizes(const TextureSizes& iteration);
 BakeConfig settledBakeConfig(BakeConfig config);
 
 // What the file of a bake of `settled` (settledBakeConfig) states about its
-// tables: storedContents with sceneDomain.
+// tables: storedContents with sceneDomain, the density on densitySizes'
+// view texels unless the scene narrows the domain.
 BakeContents bakeContents(const BakeConfig& settled);
 
 }  // namespace skybake

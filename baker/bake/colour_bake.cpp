@@ -83,6 +83,7 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
   const BakeContents& contents = out.file.contents;
   // The stored tables' texels: every pass stores on the same ones.
   const TableSampler stored(contents.domain, contents.sizes);
+  const TableSampler stored_density(contents.domain, contents.densityTableSizes());
   const MultipleScatteringPhase xyz_shape(settled.atmosphere);
   BakeTables& xyz = out.file.tables;
   // Every wavelength's optical depth, for the effective depth of sunlight
@@ -124,7 +125,7 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
                        xyz.multiple_scattering);
     }
     if (!t.multiple_density.texels.empty()) {
-      addMixedReshaped(stored, TexelLayout::Density, t.multiple_density, pass_shape, xyz_shape, mix,
+      addMixedReshaped(stored_density, TexelLayout::Density, t.multiple_density, pass_shape, xyz_shape, mix,
                        xyz.multiple_density);
     }
     pass.report.stages.push_back(

@@ -37,16 +37,6 @@ uint64_t sum(std::initializer_list<uint64_t> terms) {
 
 uint64_t axis(int size) { return size > 0 ? static_cast<uint64_t>(size) : 0; }
 
-// Tables of the stored 4D size alive at once at the peak of bakeAtmosphere,
-// counted from its order loop. With one order: the single Rayleigh and Mie
-// tables, the zeroed density sum and multiple-scattering table. From order
-// 2 on, while an order's radiance is integrated (on the smaller
-// orderRadianceSizes, counted apart): the single tables, the density sum,
-// the order's density and its logarithm
-// (baker/stages/multiple_scattering_table.cpp); the stored multiple
-// scattering is integrated after the loop with fewer alive.
-int tables4DAtPeak(int orders) { return orders <= 1 ? 4 : 5; }
-
 // Order radiance tables (orderRadianceSizes) alive at once: the new one and,
 // from order 3 on, the one before it, still read until it is replaced.
 int orderRadianceTablesAtPeak(int orders) { return orders <= 1 ? 0 : orders == 2 ? 1 : 2; }
@@ -71,10 +61,34 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   const uint64_t stored_bytes = table4DBytes(s);
   const bool narrowed = sceneDomain(config).narrowed();
   e.table_4d_bytes = std::max(iteration_bytes, stored_bytes);
+  e.density_table_bytes = table4DBytes(densitySizes(iteration));
   const int orders = config.bake.auto_orders ? config.bake.max_orders : config.bake.orders;
-  e.tables_4d_at_peak = tables4DAtPeak(orders) + (narrowed ? 4 : 0);
-  e.order_radiance_bytes =
+  const uint64_t order_radiance =
       product({static_cast<uint64_t>(orderRadianceTablesAtPeak(orders)), table4DBytes(orderRadianceSizes(iteration))});
+  // The 4D tables alive at once at the peak of bakeAtmosphere. With one
+  // order: the single Rayleigh and Mie tables, the zeroed multiple
+  // scattering and density sum. From order 2 on, the larger of two moments:
+  // while an order's radiance is integrated (on orderRadianceSizes), the
+  // single tables, the density sum, the order's density and its logarithm
+  // (baker/stages/multiple_scattering_table.cpp); while the stored multiple
+  // scattering is integrated after the loop, the single tables, that table,
+  // the density sum and its logarithm.
+  auto tablesBytes = [&](int stored, int density, uint64_t radiance) {
+    return sum({product({static_cast<uint64_t>(stored), e.table_4d_bytes}),
+                product({static_cast<uint64_t>(density), e.density_table_bytes}), radiance});
+  };
+  if (orders <= 1) {
+    e.tables_4d_at_peak = 3;
+    e.density_tables_at_peak = 1;
+  } else if (tablesBytes(2, 3, order_radiance) >= tablesBytes(3, 2, 0)) {
+    e.tables_4d_at_peak = 2;
+    e.density_tables_at_peak = 3;
+    e.order_radiance_bytes = order_radiance;
+  } else {
+    e.tables_4d_at_peak = 3;
+    e.density_tables_at_peak = 2;
+  }
+  if (narrowed) e.tables_4d_at_peak += 4;
   // Alive from before order 2 to the end of the order loop; a narrowing
   // scene has a second one on its own texels (its density is computed there).
   auto kernelBytes = [&](const TextureSizes& t) {
@@ -83,11 +97,13 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   e.density_kernel_bytes = orders >= 2 ? sum({kernelBytes(iteration), narrowed ? kernelBytes(s) : 0}) : 0;
   // 2D: the transmittance table, the summed sky irradiance, and the last
   // order's irradiance beside the one being computed.
-  e.peak_bytes = sum({product({static_cast<uint64_t>(e.tables_4d_at_peak), e.table_4d_bytes}), e.order_radiance_bytes,
-                      transmittance, product({3, irradiance}), e.density_kernel_bytes});
+  e.peak_bytes = sum({tablesBytes(e.tables_4d_at_peak, e.density_tables_at_peak, e.order_radiance_bytes), transmittance,
+                      product({3, irradiance}), e.density_kernel_bytes});
   // The file's tables: single Rayleigh, single Mie, multiple scattering,
-  // multiple-scattering density, transmittance and irradiance.
-  e.kept_bytes = sum({product({4, stored_bytes}), transmittance, irradiance});
+  // multiple-scattering density (on densitySizes unless the scene narrows
+  // the domain: bakeContents), transmittance and irradiance.
+  const uint64_t stored_density_bytes = narrowed ? stored_bytes : table4DBytes(densitySizes(s));
+  e.kept_bytes = sum({product({3, stored_bytes}), stored_density_bytes, transmittance, irradiance});
   if (config.atmosphere.storesCieXyz()) {
     // A colour bake runs one pass at a time (the peak above); beside it live
     // the X, Y, Z sums of the file's tables and every wavelength's optical
@@ -142,10 +158,11 @@ void requireMemoryForBake(const BakeConfig& config, const std::string& source) {
           ? fmt::format(" and the orders' radiance, {},", formatBytes(memory.order_radiance_bytes))
           : "";
   requireMemoryAvailable(
-      fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {}{} "
+      fmt::format("{}: resolution.scattering = {} x {} x {} x {}: the bake ({} tables of {}, {} of {}{} "
                   "alive at once{})",
                   source, s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu, memory.tables_4d_at_peak,
-                  formatBytes(memory.table_4d_bytes), order_radiance, kernel),
+                  formatBytes(memory.table_4d_bytes), memory.density_tables_at_peak,
+                  formatBytes(memory.density_table_bytes), order_radiance, kernel),
       memory.peak_bytes);
 }
 

@@ -12,6 +12,8 @@ namespace skybake {
 struct BakeMemoryEstimate {
   uint64_t table_4d_bytes = 0;        // one table of the scattering table's size
   int tables_4d_at_peak = 0;          // how many of them are alive at once at the peak
+  uint64_t density_table_bytes = 0;   // one table of the density's size (half the view texels)
+  int density_tables_at_peak = 0;     // how many of them are alive at once at the peak
   uint64_t order_radiance_bytes = 0;  // beside them, the orders' radiance on its smaller tables
   uint64_t density_kernel_bytes = 0;  // the scattering-density stage's phase modes (orders >= 2)
   uint64_t peak_bytes = 0;            // every table alive at the peak, 4D and 2D, and the kernel

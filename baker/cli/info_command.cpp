@@ -93,8 +93,8 @@ void runInfo(const std::string& path) {
              std::ldexp(1.0, -(c.stored_fraction_bits + 1)));
   fmt::print("optical depth: {} mu x {} r\n", s.transmittance_mu, s.transmittance_r);
   fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
-  fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu\n", s.scattering_r, s.scattering_mu, s.scattering_mu_s,
-             s.scattering_nu);
+  fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu (the density: {} mu)\n", s.scattering_r, s.scattering_mu,
+             s.scattering_mu_s, s.scattering_nu, c.density_view_size);
   const AtmosphereDomain& d = c.domain;
   if (d.narrowed()) {
     const BakedRanges ranges = bakedRangesOf(d);

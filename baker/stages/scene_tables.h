@@ -11,7 +11,8 @@
 namespace skybake {
 
 // Replaces the 4D tables of `tables` (single Rayleigh and Mie, multiple
-// scattering and its density, on `whole`'s texels with every order summed)
+// scattering and its density, the density on `whole`'s texels, every order
+// summed)
 // by the same quantities on `scene`'s texels: single scattering integrated
 // anew, multiple scattering integrated from the whole domain's summed
 // density, and `scene_density`, the density the bake computed on the scene's

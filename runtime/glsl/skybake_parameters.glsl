@@ -47,7 +47,7 @@ SKYBAKE_UNIFORM_BLOCK_LAYOUT uniform SkybakeAtmosphere {
   // x, y: Cornette-Shanks normalisations (sr^-1) for g and g_ms; z the squared
   // chord |view - sun|^2 of the sun disk's edge, 4 sin^2(radius / 2).
   vec4 skybake_phase;
-  ivec4 skybake_scattering_size;  // 4D tables: r, mu, mu_s, nu texels
+  ivec4 skybake_scattering_size;  // 4D radiance tables: r, mu, mu_s, nu texels (the density: its own mu)
   ivec4 skybake_table_2d_size;    // optical depth mu, r; irradiance mu_s, r texels
   // 1 or 0: x the mu axis holds rays to the ground; which tables the file
   // has: y single Mie, z multiple-scattering density, w irradiance.

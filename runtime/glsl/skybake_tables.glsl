@@ -113,9 +113,9 @@ struct SkybakeScatteringCoord {
   float u_r;
 };
 
-// A 4D table, `scale` its SKYBAKE_SCALE_* lane, at texture coordinates `c`.
-vec4 skybakeSample4D(sampler3D table, int scale, SkybakeScatteringCoord c, bool geometric) {
-  ivec4 size = skybake_scattering_size;
+// A 4D table of `size` texels (r, mu, mu_s, nu), `scale` its SKYBAKE_SCALE_*
+// lane, at texture coordinates `c`.
+vec4 skybakeSample4DOfSize(sampler3D table, ivec4 size, int scale, SkybakeScatteringCoord c, bool geometric) {
   SkybakeAxisLerp r = skybakeAxisLerp(c.u_r, size.x);
   SkybakeAxisLerp mu = skybakeAxisLerp(c.u_mu, size.y);
   SkybakeAxisLerp mu_s = skybakeAxisLerp(c.u_mu_s, size.z);
@@ -123,6 +123,11 @@ vec4 skybakeSample4D(sampler3D table, int scale, SkybakeScatteringCoord c, bool 
   vec4 scales = skybakeSliceScales(scale, r, mu_s);
   return skybakeBlendAcross(skybakeSampleNuSlice(table, scales, r, mu, mu_s, nu.i0, geometric),
                             skybakeSampleNuSlice(table, scales, r, mu, mu_s, nu.i1, geometric), nu.w1, geometric);
+}
+
+// A radiance table (skybake_scattering_size) at texture coordinates `c`.
+vec4 skybakeSample4D(sampler3D table, int scale, SkybakeScatteringCoord c, bool geometric) {
+  return skybakeSample4DOfSize(table, skybake_scattering_size, scale, c, geometric);
 }
 
 // ---- optical depth (2D: u = mu, v = r) ----
@@ -249,11 +254,14 @@ vec4 skybakeScattering(sampler3D table, int scale, float r, float mu, float mu_s
          skybakeNightScale4D(mu_s);
 }
 
-// The multiple-scattering density table: mu linear over [-1, 1].
+// The multiple-scattering density table: mu linear over [-1, 1], on its
+// own view texels (the texture's height, BakeContents::density_view_size).
 vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
+  ivec4 size = skybake_scattering_size;
+  size.y = textureSize(skybake_multiple_density, 0).y;
   SkybakeScatteringCoord c = skybakeScatteringCoord(r, 1.0, mu_s, nu, false);
-  c.u_mu = skybakeTextureCoordFromUnitRange((mu + 1.0) * 0.5, skybake_scattering_size.y);
-  return skybakeSample4D(skybake_multiple_density, SKYBAKE_SCALE_MULTIPLE_DENSITY, c, mu_s < 0.0) *
+  c.u_mu = skybakeTextureCoordFromUnitRange((mu + 1.0) * 0.5, size.y);
+  return skybakeSample4DOfSize(skybake_multiple_density, size, SKYBAKE_SCALE_MULTIPLE_DENSITY, c, mu_s < 0.0) *
          skybakeNightScale4D(mu_s);
 }
 

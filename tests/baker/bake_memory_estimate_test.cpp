@@ -24,24 +24,34 @@ TEST(BakeMemoryEstimate, CountsEveryTableAliveAtThePeak) {
   BakeConfig config = test::smallEarth(3);  // 8 x 32 x 8 x 4 scattering, 64 x 16 transmittance, 16 x 8 irradiance
   const uint64_t texel = sizeof(Spectrum);
   const uint64_t table_4d = 8 * 32 * 8 * 4 * texel;
+  const uint64_t density = table_4d / 2;  // half the view texels (densitySizes)
   const BakeMemoryEstimate three = estimateBakeMemory(config);
   EXPECT_EQ(three.table_4d_bytes, table_4d);
-  EXPECT_EQ(three.tables_4d_at_peak, 5);
-  // Two order radiance tables of half the mu and three quarters of the nu texels, rounded up (orderRadianceSizes).
+  EXPECT_EQ(three.density_table_bytes, density);
+  // In the order loop (larger than after it, which holds 3 tables and 2 densities): the single tables, the density
+  // sum, the order's density and its logarithm, and two order radiance tables of half the mu and three quarters of
+  // the nu texels, rounded up (orderRadianceSizes).
+  EXPECT_EQ(three.tables_4d_at_peak, 2);
+  EXPECT_EQ(three.density_tables_at_peak, 3);
   const uint64_t order_radiance = 2 * (8 * 16 * 8 * 3 * texel);
   EXPECT_EQ(three.order_radiance_bytes, order_radiance);
   // The density stage's kernel: 48 zenith nodes x 35 azimuthal modes of 4 bytes per (r, mu).
   const uint64_t kernel = 8 * 32 * 48 * 35 * 4;
   EXPECT_EQ(three.density_kernel_bytes, kernel);
-  EXPECT_EQ(three.peak_bytes, 5 * table_4d + order_radiance + 64 * 16 * texel + 3 * 16 * 8 * texel + kernel);
-  EXPECT_EQ(three.kept_bytes, 4 * table_4d + 64 * 16 * texel + 16 * 8 * texel);
+  EXPECT_EQ(three.peak_bytes,
+            2 * table_4d + 3 * density + order_radiance + 64 * 16 * texel + 3 * 16 * 8 * texel + kernel);
+  EXPECT_EQ(three.kept_bytes, 3 * table_4d + density + 64 * 16 * texel + 16 * 8 * texel);
   config.bake.orders = 1;
-  EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 4);
+  EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 3);
+  EXPECT_EQ(estimateBakeMemory(config).density_tables_at_peak, 1);
   EXPECT_EQ(estimateBakeMemory(config).order_radiance_bytes, 0u);
   EXPECT_EQ(estimateBakeMemory(config).density_kernel_bytes, 0u);  // one order needs no density
   config.bake.orders = 2;
-  EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 5);
-  EXPECT_EQ(estimateBakeMemory(config).order_radiance_bytes, order_radiance / 2);  // no earlier order's
+  // One order radiance table: the loop's 2 tables + 3 densities + 3/8 of a table fall below the 3 tables and 2
+  // densities after it.
+  EXPECT_EQ(estimateBakeMemory(config).tables_4d_at_peak, 3);
+  EXPECT_EQ(estimateBakeMemory(config).density_tables_at_peak, 2);
+  EXPECT_EQ(estimateBakeMemory(config).order_radiance_bytes, 0u);
   // Automatic orders may run to the cap.
   config.bake.auto_orders = true;
   config.bake.max_orders = 3;

@@ -143,6 +143,16 @@ TEST_F(SceneRangesTest, LookupsOutsideTheRangesAreClampedToTheirEnds) {
   }
 }
 
+// The whole domain's density is stored on half the radiance tables' view
+// texels (densitySizes), as the orders summed it; a narrowed scene's, which
+// it computes on its own stored texels, on all of them.
+TEST_F(SceneRangesTest, TheDensityIsStoredOnItsOwnViewTexels) {
+  const BakeTables& whole = whole_->tables();
+  EXPECT_EQ(whole.multiple_density.mu_size, whole.multiple_scattering.mu_size / 2);
+  EXPECT_EQ(whole.multiple_density.nu_size, whole.multiple_scattering.nu_size);
+  EXPECT_EQ(scene_->tables().multiple_density.mu_size, scene_->tables().multiple_scattering.mu_size);
+}
+
 // Without views below the horizon the 4D tables' mu axis holds only the sky
 // (twice as densely at the same size) and rays toward the ground are
 // integrated at lookup: by day and at low sun both agree with the

@@ -110,7 +110,8 @@ void writeRawBake(const fs::path& path, const RawBake& raw) {
                {bake_file::kPartSingleMie, atlas_width, atlas_height, &t.single_mie.texels},
                {bake_file::kPartMultipleScattering, atlas_width, atlas_height, &t.multiple_scattering.texels},
                {bake_file::kPartIrradiance, s.irradiance_mu_s, s.irradiance_r, &t.irradiance.texels},
-               {bake_file::kPartMultipleDensity, atlas_width, atlas_height, &t.multiple_density.texels}};
+               {bake_file::kPartMultipleDensity, atlas_width, s.scattering_r * raw.contents.density_view_size,
+                &t.multiple_density.texels}};
   // Parts of a multi-part file share one display window.
   Imath::Box2i display_window({0, 0}, {0, 0});
   for (const auto& part : parts) display_window.extendBy(Imath::V2i(part.width - 1, part.height - 1));
@@ -313,6 +314,54 @@ TEST_F(BakeFileCorruptTest, TheWriterRefusesTablesOutsideTheirRange) {
         << e.what();
   }
   EXPECT_EQ(fileBytes(good), before);
+}
+
+// The density table may have fewer view texels than the radiance tables
+// (format version 7): written and read back, it keeps its own size and every
+// value; the writer refuses a table whose size the header would misstate.
+TEST_F(BakeFileCorruptTest, TheDensityKeepsItsOwnViewSize) {
+  BakeFile bake = tinyBake();
+  bake.contents.density_view_size = 2;  // the tiny bake's radiance tables have 4
+  const TextureSizes& s = bake.contents.sizes;
+  Texture4D& density = bake.tables.multiple_density;
+  density = Texture4D(s.scattering_r, 2, s.scattering_mu_s, s.scattering_nu);
+  // The tiny bake has 3 channels; the fourth lane is not stored.
+  for (size_t i = 0; i < density.texels.size(); ++i) {
+    const float v = static_cast<float>(i + 1) * 0.25f;
+    density.texels[i] = Spectrum(v, v, v, 0.0f);
+  }
+  const fs::path path = dir / "density_view_size.exr";
+  writeBakeFile(path, bake);
+  const BakeFile read = readBakeFile(path);
+  EXPECT_EQ(read.contents.density_view_size, 2);
+  EXPECT_EQ(read.tables.multiple_density.mu_size, 2);
+  EXPECT_EQ(read.tables.multiple_scattering.mu_size, 4);
+  // Quarters up to 8 are exact in half.
+  EXPECT_EQ(read.tables.multiple_density.texels, density.texels);
+
+  bake.contents.density_view_size = 4;
+  try {
+    writeBakeFile(path, bake);
+    FAIL() << "wrote a density table of 2 view texels under a header stating 4";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Internal);
+    EXPECT_NE(std::string(e.what()).find("the density table has 2 view texels, the contents state 4"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// A stated density view size below the 2 its linear axis needs, or above the
+// radiance tables' view texels, is refused naming the attribute and value.
+TEST_F(BakeFileCorruptTest, DensityViewSizeOutsideItsRangeIsRefused) {
+  const fs::path path = dir / "density_view_size.exr";
+  for (int size : {1, 6}) {
+    SCOPED_TRACE(size);
+    BakeContents contents = tinyBake().contents;
+    contents.density_view_size = size;
+    writeRawBake(path, {contents});
+    expectRefused(path, "skybake:density_view_size = " + std::to_string(size) + ": must be in [2, 4]");
+  }
 }
 
 }  // namespace
