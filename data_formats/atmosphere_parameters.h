@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -201,6 +202,10 @@ struct BakeConfig {
   BakeSettings bake;
   SceneOutputs scene;
   SceneRanges scene_ranges;
+  // The files the config was read from: its own file and every spectrum
+  // file it names (empty for a config parsed from text alone). Not part of
+  // the bake; an output must never replace one of them (requireWritableOutput).
+  std::vector<std::filesystem::path> input_files;
 };
 
 }  // namespace skybake

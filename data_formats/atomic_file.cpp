@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "error.h"
+#include "input_file.h"
 
 namespace skybake {
 namespace {
@@ -37,21 +38,6 @@ bool writeAll(int fd, std::string_view text) {
 // beside the destination, named for the destination and this process.
 std::string temporaryName(const std::filesystem::path& path, long pid) {
   return fmt::format(".{}.tmp-{}{}", path.stem().string(), pid, path.extension().string());
-}
-
-const char* kindOfSpecialFile(const std::filesystem::file_status& status) {
-  switch (status.type()) {
-    case std::filesystem::file_type::character:
-      return "a character device";
-    case std::filesystem::file_type::block:
-      return "a block device";
-    case std::filesystem::file_type::fifo:
-      return "a named pipe";
-    case std::filesystem::file_type::socket:
-      return "a socket";
-    default:
-      return nullptr;
-  }
 }
 
 // Where an output really goes: a symbolic link is written through (its
@@ -104,8 +90,13 @@ void removeStaleTemporaries(const std::filesystem::path& destination) {
 }  // namespace
 
 void requireWritableOutput(const std::filesystem::path& path, std::initializer_list<std::filesystem::path> inputs) {
+  requireWritableOutput(path, std::span<const std::filesystem::path>(inputs.begin(), inputs.size()));
+}
+
+void requireWritableOutput(const std::filesystem::path& path, std::span<const std::filesystem::path> inputs) {
   const std::string name = path.string();
   if (name.empty()) throwBadInput("output path is empty");
+  requireNoNulInPath(name);
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throwBadInput(fmt::format("{}: is a directory; the output needs a file name", name));

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <initializer_list>
+#include <span>
 #include <string_view>
 
 namespace skybake {
@@ -18,9 +19,12 @@ namespace skybake {
 // this process may not create files in, or the same file as one of the
 // command's `inputs` (which the output would replace), a special file (a
 // device, a pipe, a socket), a symbolic link to nothing, or a name whose
-// temporary file's name would be too long for the file system. Throws
-// Error(BadInput) "<path>: <reason>".
+// temporary file's name would be too long for the file system, or a path
+// holding a NUL character. Throws Error(BadInput) "<path>: <reason>".
 void requireWritableOutput(const std::filesystem::path& path, std::initializer_list<std::filesystem::path> inputs = {});
+// The same with the inputs in a list (a config and every file it names:
+// BakeConfig::input_files).
+void requireWritableOutput(const std::filesystem::path& path, std::span<const std::filesystem::path> inputs);
 
 // Calls write(temp) with a temporary path beside `path` (same directory, so
 // the final rename is atomic; same extension, so format-by-extension writers

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <new>
 #include <optional>
@@ -35,6 +36,7 @@
 #include "exr_header_check.h"
 #include "exr_memory_stream.h"
 #include "half_slices.h"
+#include "input_file.h"
 #include "table_values.h"
 #include "texture_mapping.h"
 
@@ -429,16 +431,9 @@ BakeFile readConverted(const std::string& source, uint64_t file_bytes, OpenStrea
 namespace {
 
 BakeFile readBakeFileFrom(const std::filesystem::path& path, ReadTables read) {
-  std::error_code error;
   const std::string source = path.string();
-  if (std::filesystem::is_directory(path, error)) {
-    throwBadInput(fmt::format("{}: is a directory, not a bake file", source));
-  }
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throwBadInput(fmt::format("{}: no such bake file", source));
-  }
-  const uintmax_t file_bytes = std::filesystem::file_size(path, error);
-  if (error) throwBadInput(fmt::format("{}: cannot read the file size: {}", source, error.message()));
+  // Any size: the header's promised tables are checked against it (kMaxExrExpansion).
+  const uintmax_t file_bytes = requireInputFile(path, "bake file", std::numeric_limits<uintmax_t>::max());
   return readConverted(
       source, file_bytes,
       [&] {

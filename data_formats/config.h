@@ -2,6 +2,7 @@
 // documents every key.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -29,8 +30,19 @@ inline constexpr double kMaxOrderTolerance = 0.5;
 BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
                        const std::filesystem::path& spectrum_directory = {});
 
-// Reads and parses a config file; its spectrum files are relative to its directory.
+// Reads and parses a config file; its spectrum files are relative to its
+// directory. The file must be a regular file of at most kMaxConfigFileBytes
+// (input_file.h): a device, pipe or huge file is refused before it is read.
 BakeConfig loadConfigFile(const std::filesystem::path& path);
+
+// A config written by hand, even with measured spectra inline (90 000
+// samples, about 2 MiB), is far smaller than this; a larger file is not a
+// config (a log, a device's output, binary data) and is refused before it
+// is read into memory.
+inline constexpr std::uintmax_t kMaxConfigFileBytes = 16u << 20;
+
+// The text of a config file, checked as loadConfigFile checks it.
+std::string readConfigFile(const std::filesystem::path& path);
 
 // Checks physical sense: top > bottom, non-negative coefficients, |g| < 1,
 // sizes in range, ... Throws Error(BadInput) "<source>: <key> = <value>: <reason>".

@@ -76,24 +76,12 @@ BakeConfig configAtWavelengths(std::string_view toml_text, const std::string& so
                      spectrum_directory);
 }
 
-namespace {
-
-std::string configFileText(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throwBadInput(fmt::format("{}: cannot open config file", path.string()));
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-}  // namespace
-
 BakeConfig configFileAtWavelengths(const std::filesystem::path& path, std::span<const double> wavelengths_nm) {
-  return configAtWavelengths(configFileText(path), path.string(), path.parent_path(), wavelengths_nm);
+  return configAtWavelengths(readConfigFile(path), path.string(), path.parent_path(), wavelengths_nm);
 }
 
 BakeConfig configFileWithStore(const std::filesystem::path& path, std::string_view store) {
-  const std::string toml_text = configFileText(path);
+  const std::string toml_text = readConfigFile(path);
   // The config as written first, so that its own errors name its lines.
   parseConfig(toml_text, path.string(), path.parent_path());
   checkTomlCharacters(toml_text, path.string());

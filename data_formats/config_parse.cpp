@@ -11,6 +11,7 @@
 
 #include "config.h"
 #include "error.h"
+#include "input_file.h"
 #include "spectral_samples.h"
 #include "spectrum_csv.h"
 #include "toml_text_check.h"
@@ -302,6 +303,7 @@ class ConfigReader {
     if (!text || text->get().empty()) fail(node, key, describe(*node), "must be a file name");
     const std::filesystem::path path = spectrum_directory_ / std::filesystem::path(text->get());
     shown_name = path.string();
+    spectrum_files_.push_back(path);
     try {
       return readSpectrumCsv(path);
     } catch (const Error& e) {
@@ -369,6 +371,11 @@ class ConfigReader {
  private:
   std::string source_;
   std::filesystem::path spectrum_directory_;
+
+ public:
+  // Every spectrum file read (BakeConfig::input_files); reading one is not a
+  // change of the reader's state that its callers see.
+  mutable std::vector<std::filesystem::path> spectrum_files_;
 };
 
 }  // namespace
@@ -589,16 +596,19 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
     }
   }
 
+  config.input_files = in.spectrum_files_;
   validateConfig(config, source);
   return config;
 }
 
 BakeConfig loadConfigFile(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throwBadInput(fmt::format("{}: cannot open config file", path.string()));
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parseConfig(text.str(), path.string(), path.parent_path());
+  BakeConfig config = parseConfig(readConfigFile(path), path.string(), path.parent_path());
+  config.input_files.insert(config.input_files.begin(), path);
+  return config;
+}
+
+std::string readConfigFile(const std::filesystem::path& path) {
+  return readInputFile(path, "config file", kMaxConfigFileBytes);
 }
 
 }  // namespace skybake

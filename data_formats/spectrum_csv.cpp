@@ -1,12 +1,16 @@
 #include "spectrum_csv.h"
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <string_view>
 
 #include <fmt/format.h>
 
 #include "error.h"
+#include "input_file.h"
+#include "terminal_text.h"
 #include "text_numbers.h"
 
 namespace skybake {
@@ -17,6 +21,10 @@ namespace {
 // data) and would otherwise be read whole into memory.
 constexpr std::uintmax_t kMaxSpectrumFileBytes = 64u << 20;
 
+// The tables hold floats: a value beyond this would become infinite in them,
+// reported against the config key with the file no longer named.
+constexpr double kMaxSpectrumValue = std::numeric_limits<float>::max();
+
 // Linear interpolation needs a sample on each side of a wavelength.
 constexpr size_t kMinSpectrumSamples = 2;
 
@@ -26,15 +34,7 @@ bool isBlank(std::string_view line) { return line.find_first_not_of(kCellBlanks)
 
 TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) throwBadInput(fmt::format("{}: no such spectrum file", name));
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throwBadInput(fmt::format("{}: not a regular file, so not a spectrum CSV", name));
-  }
-  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
-  if (error || bytes > kMaxSpectrumFileBytes) {
-    throwBadInput(fmt::format("{}: larger than {} MiB: not a spectrum CSV", name, kMaxSpectrumFileBytes >> 20));
-  }
+  requireInputFile(path, "spectrum file", kMaxSpectrumFileBytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throwBadInput(fmt::format("{}: cannot open spectrum file", name));
 
@@ -48,16 +48,19 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path) {
     if (line_number == 1 && line.starts_with(kUtf8ByteOrderMark)) line.erase(0, kUtf8ByteOrderMark.size());
     if (isBlank(line) || line[0] == '#') continue;
     const size_t comma = line.find(',');
-    const std::string_view whole = trimmedCell(line);
+    const std::string whole = shownText(trimmedCell(line));
     if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos) {
       throwBadInput(fmt::format("{}:{}: {}: needs two columns, wavelength_nm,value", name, line_number, whole));
     }
-    const std::string_view wavelength_text = trimmedCell(std::string_view(line).substr(0, comma));
-    const std::string_view value_text = trimmedCell(std::string_view(line).substr(comma + 1));
+    const std::string_view wavelength_cell = trimmedCell(std::string_view(line).substr(0, comma));
+    const std::string_view value_cell = trimmedCell(std::string_view(line).substr(comma + 1));
     double wavelength_nm = 0.0;
     double value = 0.0;
-    const bool wavelength_ok = parseFiniteNumber(wavelength_text, wavelength_nm);
-    const bool value_ok = parseFiniteNumber(value_text, value);
+    const bool wavelength_ok = parseFiniteNumber(wavelength_cell, wavelength_nm);
+    const bool value_ok = parseFiniteNumber(value_cell, value);
+    // The cells as messages quote them: escaped, a long one shortened.
+    const std::string wavelength_text = shownText(wavelength_cell);
+    const std::string value_text = shownText(value_cell);
     if (header_allowed && !wavelength_ok && !value_ok) {  // column names
       header_allowed = false;
       continue;
@@ -69,6 +72,10 @@ TabulatedSpectrum readSpectrumCsv(const std::filesystem::path& path) {
     }
     if (!value_ok)
       throwBadInput(fmt::format("{}:{}: value {}: must be a finite number", name, line_number, value_text));
+    if (!(std::abs(value) <= kMaxSpectrumValue)) {
+      throwBadInput(fmt::format("{}:{}: value {}: beyond the {:g} a table's float holds", name, line_number, value_text,
+                                kMaxSpectrumValue));
+    }
     if (!(wavelength_nm > 0.0)) {
       throwBadInput(fmt::format("{}:{}: wavelength {} nm: must be > 0", name, line_number, wavelength_text));
     }

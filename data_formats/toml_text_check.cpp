@@ -39,14 +39,6 @@ constexpr CodePointRange kNonAsciiHorizontalWhitespace[] = {{0x00A0, 0x00A0}, {0
                                                             {0x2000, 0x200B}, {0x202F, 0x202F}, {0x205F, 0x2060},
                                                             {0x3000, 0x3000}, {0xFEFF, 0xFEFF}};
 
-// The deepest nesting a config may have: tables within tables through dotted
-// keys, table headers, inline tables and arrays, counted together. toml++
-// parses and destroys a nested value by recursion, one stack frame or more
-// per level, so a key nested 50000 levels deep (100 kB of text) overflowed
-// the stack (8000 levels with a 1 MB thread stack). skybake's own keys go 4
-// levels deep at most (a density layer: a table in an array of a table).
-constexpr int kMaxTomlNesting = 32;
-
 bool isAscii(char c) { return static_cast<unsigned char>(c) < 0x80; }
 bool isTomlWhitespaceOrNewline(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 

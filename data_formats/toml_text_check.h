@@ -18,6 +18,14 @@
 
 namespace skybake {
 
+// The deepest nesting a config may have: tables within tables through dotted
+// keys, table headers, inline tables and arrays, counted together. toml++
+// parses and destroys a nested value by recursion, one stack frame or more
+// per level, so a key nested 50000 levels deep (100 kB of text) overflowed
+// the stack (8000 levels with a 1 MB thread stack). skybake's own keys go 4
+// levels deep at most (a density layer: a table in an array of a table).
+inline constexpr int kMaxTomlNesting = 32;
+
 // Throws Error(BadInput) "<source>:<line>:<column>: TOML syntax error: ..."
 // for a non-ASCII character outside strings and comments or right after a
 // backslash in a multi-line basic string (neither is valid TOML), and for one

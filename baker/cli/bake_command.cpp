@@ -24,10 +24,10 @@
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/size_choice.h"
 #include "baker/cli/terminal_progress.h"
-#include "baker/cli/terminal_text.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
+#include "data_formats/terminal_text.h"
 #include "data_formats/texture_mapping.h"
 
 namespace skybake::cli {
@@ -101,12 +101,7 @@ SizeChoice sizesForTargetError(const std::string& text) {
 void runBake(const BakeOptions& o) {
   BakeConfig config = o.config_path.empty() ? builtinEarthConfig() : loadConfigFile(o.config_path);
   const std::string source = o.config_path.empty() ? "<built-in earth>" : o.config_path;
-  if (o.orders == "auto") {
-    config.bake.auto_orders = true;
-  } else if (!o.orders.empty()) {
-    config.bake.auto_orders = false;
-    config.bake.orders = static_cast<int>(*parseWholeNumber(o.orders));  // checked by the option's validator
-  }
+  if (!o.orders.empty()) applyOrdersChoice("--orders", o.orders, config);
   if (o.order_tolerance) config.bake.order_tolerance = *o.order_tolerance;
   if (o.precision == "half") config.bake.precision = StoragePrecision::Half;
   if (o.precision == "float") config.bake.precision = StoragePrecision::Float;
@@ -152,8 +147,9 @@ void runBake(const BakeOptions& o) {
   if (o.output_path.empty()) throwBadInput("bake: -o,--output is required (unless --estimate)");
 
   const std::filesystem::path output(o.output_path);
-  requireWritableOutput(output, {o.config_path});
-  requireWritableOutput(reportSidecarPath(output), {o.config_path});
+  // Neither output may replace the config or a spectrum file it names.
+  requireWritableOutput(output, config.input_files);
+  requireWritableOutput(reportSidecarPath(output), config.input_files);
   requireMemoryForBake(config, source);
 
   if (size_choice) {
@@ -229,12 +225,7 @@ Command addBakeCommand(CLI::App& app) {
                   "bake.order_tolerance of the total (overrides bake.orders).")
       ->check(CLI::Validator(
           [](std::string& value) -> std::string {
-            if (value == "auto") return "";
-            const std::optional<long long> count = parseWholeNumber(value);
-            if (!count || *count < 1 || *count > kMaxOrders) {
-              refuseOptionValue("--orders", value,
-                                fmt::format("must be 'auto' or a whole number in [1, {}]", kMaxOrders));
-            }
+            requireOrdersChoice("--orders", value);
             return "";
           },
           fmt::format("auto|1..{}", kMaxOrders)));

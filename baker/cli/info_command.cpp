@@ -6,10 +6,10 @@
 
 #include "baker/bake/bake_policy.h"
 #include "baker/cli/commands.h"
-#include "baker/cli/terminal_text.h"
 #include "data_formats/bake_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
+#include "data_formats/terminal_text.h"
 #include "data_formats/texture_mapping.h"
 #include "runtime/gpu_tables.h"
 #include "runtime/sky.h"

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "baker/cli/commands.h"
+#include "baker/cli/option_checks.h"
 #include "data_formats/bake_file.h"
 #include "data_formats/error.h"
 
@@ -62,7 +63,9 @@ int main(int argc, char** argv) {
     // inside the parse; it is handled below like any other input error.
     app.parse(argc, argv);
     for (const skybake::cli::Command& command : commands) {
-      if (command.subcommand->parsed()) command.run();
+      if (!command.subcommand->parsed()) continue;
+      skybake::cli::refuseEmptyOptionValues(*command.subcommand);
+      command.run();
     }
     if (!standardOutputWritten()) {
       throw skybake::Error(skybake::ErrorKind::BadInput,

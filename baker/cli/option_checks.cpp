@@ -56,6 +56,33 @@ std::optional<long long> parseWholeNumber(const std::string& text) {
   return value;
 }
 
+void refuseEmptyOptionValues(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->count() == 0 || option->get_expected_min() == 0) continue;  // not given, or a flag
+    for (const std::string& value : option->results()) {
+      if (value.empty()) {
+        const std::string name =
+            option->get_lnames().empty() ? option->get_name() : "--" + option->get_lnames().front();
+        refuseOptionValue(name, "\"\"", "an empty value: give one, or leave the option out");
+      }
+    }
+  }
+}
+
+void requireOrdersChoice(const std::string& option, const std::string& text) {
+  if (text == "auto") return;
+  const std::optional<long long> count = parseWholeNumber(text);
+  if (!count || *count < 1 || *count > kMaxOrders) {
+    refuseOptionValue(option, text, fmt::format("must be 'auto' or a whole number in [1, {}]", kMaxOrders));
+  }
+}
+
+void applyOrdersChoice(const std::string& option, const std::string& text, BakeConfig& config) {
+  requireOrdersChoice(option, text);
+  config.bake.auto_orders = text == "auto";
+  if (!config.bake.auto_orders) config.bake.orders = static_cast<int>(*parseWholeNumber(text));
+}
+
 CLI::Option* requireFiniteIn(CLI::Option* option, double lowest, double highest) {
   return addCheck(option, fmt::format("finite number in [{:g}, {:g}]", lowest, highest),
                   fmt::format("must be a finite number in [{:g}, {:g}]", lowest, highest),

@@ -15,6 +15,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "baker/stages/openmp_threads.h"  // kMaxThreadCount
+#include "data_formats/config.h"
+
 namespace skybake::cli {
 
 // A finite number in [lowest, highest].
@@ -27,9 +30,6 @@ CLI::Option* requirePositiveUpTo(CLI::Option* option, double highest);
 // [lowest, highest].
 CLI::Option* requireWholeIn(CLI::Option* option, long long lowest, long long highest);
 
-// More worker threads than this is a typo, not a machine.
-inline constexpr long long kMaxThreadCount = 4096;
-
 // The --threads option every parallel subcommand has: a whole number in
 // [1, kMaxThreadCount]; `threads` stays 0 (all cores) when it is not given.
 CLI::Option* addThreadsOption(CLI::App& command, int& threads);
@@ -40,6 +40,17 @@ std::array<double, 2> parseRangeOption(const std::string& option, const std::str
 
 // The whole number `text` spells exactly, or nothing.
 std::optional<long long> parseWholeNumber(const std::string& text);
+
+// A choice of scattering orders, "auto" or a whole number in [1, kMaxOrders]
+// (the command line's --orders, Python's orders=): refuses others as
+// "<option> = <text>: <reason>".
+void requireOrdersChoice(const std::string& option, const std::string& text);
+// The same, then sets bake.orders or bake.auto_orders of `config`.
+void applyOrdersChoice(const std::string& option, const std::string& text, BakeConfig& config);
+
+// Refuses an option or positional of `command` given an empty value
+// (`--moon ""`): it would otherwise read as the option left out.
+void refuseEmptyOptionValues(const CLI::App& command);
 
 // Throws Error(BadInput) "<option> = <value>: <reason>".
 [[noreturn]] void refuseOptionValue(const std::string& option, const std::string& value, const std::string& reason);

@@ -7,21 +7,29 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <toml++/toml.h>
 
 #include "baker/bake/bake.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/cli/bake_memory_estimate.h"
+#include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/python/python_bindings.h"
+#include "baker/stages/openmp_threads.h"
+#include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
+#include "data_formats/input_file.h"
+#include "data_formats/terminal_text.h"
+#include "data_formats/toml_text_check.h"
 
 namespace py = pybind11;
 
@@ -34,16 +42,42 @@ void badDictValue(const std::string& key, const std::string& why) {
   throw Error(ErrorKind::BadInput, std::string(kDictSource) + ": " + key + ": " + why);
 }
 
-toml::table tableFromDict(const py::dict& d, const std::string& prefix);
+// A Python value being converted: the containers (dicts, lists, tuples)
+// that hold it, outermost first, so that a container holding itself is
+// found and nesting is refused at the config's own limit before it
+// recurses deeper (a dict nested 100000 levels would overflow the stack).
+struct DictPath {
+  std::vector<const PyObject*> containers;
+  void enter(const py::handle& v, const std::string& key) {
+    if (std::find(containers.begin(), containers.end(), v.ptr()) != containers.end()) {
+      badDictValue(key, "contains itself (a dict or list that holds itself cannot be a config)");
+    }
+    if (containers.size() >= static_cast<size_t>(kMaxTomlNesting)) {
+      badDictValue(key, "nested deeper than a config can be (" + std::to_string(kMaxTomlNesting) + " levels)");
+    }
+    containers.push_back(v.ptr());
+  }
+  void leave() { containers.pop_back(); }
+};
+
+toml::table tableFromDict(const py::dict& d, const std::string& prefix, DictPath& path);
+
+// A Python int as a TOML integer; `key` names it in messages.
+int64_t integerOf(const py::handle& v, const std::string& key) {
+  int overflow = 0;
+  const long long value = PyLong_AsLongLongAndOverflow(v.ptr(), &overflow);
+  if (overflow != 0) badDictValue(key, "the integer " + shownText(std::string(py::str(v))) + " is too large");
+  return value;
+}
 
 // A Python value as a TOML value; `key` names it in messages.
-void insertValue(toml::table& t, const std::string& name, const py::handle& v, const std::string& key) {
+void insertValue(toml::table& t, const std::string& name, const py::handle& v, const std::string& key, DictPath& path) {
   if (py::isinstance<py::bool_>(v)) {
     t.insert_or_assign(name, v.cast<bool>());
     return;
   }
   if (py::isinstance<py::int_>(v)) {
-    t.insert_or_assign(name, v.cast<int64_t>());
+    t.insert_or_assign(name, integerOf(v, key));
     return;
   }
   if (py::isinstance<py::float_>(v)) {
@@ -55,38 +89,79 @@ void insertValue(toml::table& t, const std::string& name, const py::handle& v, c
     return;
   }
   if (py::isinstance<py::dict>(v)) {
-    t.insert_or_assign(name, tableFromDict(v.cast<py::dict>(), key + "."));
+    path.enter(v, key);
+    t.insert_or_assign(name, tableFromDict(v.cast<py::dict>(), key + ".", path));
+    path.leave();
     return;
   }
   if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+    path.enter(v, key);
     toml::array array;
     size_t i = 0;
     for (const py::handle& item : v) {
       const std::string item_key = key + "[" + std::to_string(i++) + "]";
       toml::table holder;
-      insertValue(holder, "x", item, item_key);
+      insertValue(holder, "x", item, item_key, path);
       array.push_back(std::move(*holder.get("x")));
     }
     t.insert_or_assign(name, std::move(array));
+    path.leave();
     return;
   }
-  // numpy scalars and other numbers: through float().
+  // numpy arrays and scalars: as the lists and numbers tolist() gives.
+  if (py::hasattr(v, "tolist") && py::hasattr(v, "dtype")) {
+    insertValue(t, name, v.attr("tolist")(), key, path);
+    return;
+  }
+  // Other numbers (fractions, decimals): through float().
   if (py::hasattr(v, "__float__")) {
-    t.insert_or_assign(name, v.cast<double>());
+    PyObject* number = PyNumber_Float(v.ptr());
+    if (number == nullptr) {
+      PyErr_Clear();
+      badDictValue(key, "a " + std::string(py::str(v.get_type().attr("__name__"))) + " that float() refuses");
+    }
+    t.insert_or_assign(name, PyFloat_AsDouble(number));
+    Py_DECREF(number);
     return;
   }
   badDictValue(key, "a " + std::string(py::str(v.get_type().attr("__name__"))) +
                         " is not a TOML value (use bool, int, float, str, list or dict)");
 }
 
-toml::table tableFromDict(const py::dict& d, const std::string& prefix) {
+toml::table tableFromDict(const py::dict& d, const std::string& prefix, DictPath& path) {
   toml::table t;
   for (const auto& [k, v] : d) {
-    if (!py::isinstance<py::str>(k)) badDictValue(prefix + std::string(py::str(k)), "keys must be strings");
+    if (!py::isinstance<py::str>(k)) {
+      badDictValue(prefix + shownText(std::string(py::str(k))), "keys must be strings");
+    }
     const std::string name = k.cast<std::string>();
-    insertValue(t, name, v, prefix + name);
+    insertValue(t, name, v, prefix + shownText(name), path);
   }
   return t;
+}
+
+// A config dict as TOML text, every value checked (DictPath).
+std::string tomlOfDict(const py::dict& d) {
+  DictPath path;
+  path.enter(d, "(the dict)");
+  std::ostringstream text;
+  text << tableFromDict(d, "", path);
+  return text.str();
+}
+
+// orders=: None (the config's), "auto", or a whole number of orders, checked
+// as the command line's --orders. A Python int of any size is checked by
+// its decimal text, so one too large for C++ is refused like any other.
+void applyOrders(const py::object& orders, const std::string& source, BakeConfig& config) {
+  if (orders.is_none()) return;
+  const bool text = py::isinstance<py::str>(orders);
+  if (!text && (!py::isinstance<py::int_>(orders) || py::isinstance<py::bool_>(orders))) {
+    throw Error(ErrorKind::BadInput, "orders: a " + std::string(py::str(orders.get_type().attr("__name__"))) +
+                                         " is not a number of orders (use 'auto' or an int)");
+  }
+  const std::string choice = py::str(orders).cast<std::string>();
+  cli::applyOrdersChoice("orders", shownText(choice), config);
+  validateConfig(config, source + " (with orders=" + choice + ")");
 }
 
 // The bake's progress as calls of a Python function: each stage at 0, at
@@ -138,25 +213,22 @@ class PythonProgress final : public ProgressSink {
   std::exception_ptr error_;
 };
 
-py::object bake(const py::object& config_source, const std::string& output, int threads, std::optional<int> orders,
-                bool reproducible, const py::object& progress) {
+py::object bake(const py::object& config_source, const std::string& output, const py::object& threads_argument,
+                const py::object& orders, bool reproducible, const py::object& progress) {
+  const int threads = threadCountArgument(threads_argument);
   BakeConfig config;
   std::string source;
   if (py::isinstance<py::dict>(config_source)) {
-    std::ostringstream text;
-    text << tableFromDict(config_source.cast<py::dict>(), "");
     source = kDictSource;
-    config = parseConfig(text.str(), source);
+    config = parseConfig(tomlOfDict(config_source.cast<py::dict>()), source);
   } else {
     source = py::str(config_source).cast<std::string>();
+    requireNoNulInPath(source);
     config = loadConfigFile(source);
   }
-  if (orders) {
-    config.bake.orders = *orders;
-    config.bake.auto_orders = false;
-    validateConfig(config, source + " (with orders=" + std::to_string(*orders) + ")");
-  }
-  if (threads < 0) throw Error(ErrorKind::BadInput, "threads = " + std::to_string(threads) + ": must be >= 0");
+  applyOrders(orders, source, config);
+  // The output may replace neither the config nor a spectrum file it names.
+  requireWritableOutput(output, config.input_files);
   config = settledBakeConfig(config);
   requireMemoryForBake(config, source);
   std::optional<PythonProgress> python_progress;

@@ -13,4 +13,8 @@ void registerBake(pybind11::module_& m);
 // skybake._skybake.validate: a bake against the reference, as a dict.
 void registerValidate(pybind11::module_& m);
 
+// A threads= argument as a thread count, checked as the command line's
+// --threads (requireThreadCount): a Python int of any size, or BadInput.
+int threadCountArgument(const pybind11::handle& threads);
+
 }  // namespace skybake::python

@@ -27,7 +27,9 @@ namespace skybake::python {
 namespace {
 
 py::object validate(const std::string& bake_path, const std::string& queries_name, int reference_samples,
-                    const std::string& cache_dir, bool no_cache, int threads, const std::string& colour_config) {
+                    const std::string& cache_dir, bool no_cache, const py::object& threads_argument,
+                    const std::string& colour_config) {
+  const int threads = threadCountArgument(threads_argument);
   std::string report_json;
   {
     py::gil_scoped_release release;

@@ -6,12 +6,33 @@
 
 #include <omp.h>
 
+#include <string>
+
+#include "data_formats/error.h"
+
 namespace skybake {
+
+// More worker threads than this is a typo, not a machine: libgomp starts
+// every one of them (10^5 threads crash it in GOMP_parallel, 10^9 exhaust
+// its memory).
+inline constexpr long long kMaxThreadCount = 4096;
+
+// Throws Error(BadInput) "threads = <n>: ..." unless `threads` is 0 (all
+// cores) or in [1, kMaxThreadCount]: the one check of every entry point's
+// thread count (command line, Python module, library).
+inline void requireThreadCount(long long threads) {
+  if (threads < 0 || threads > kMaxThreadCount) {
+    throw Error(ErrorKind::BadInput, "threads = " + std::to_string(threads) + ": must be 0 (all cores) or 1 to " +
+                                         std::to_string(kMaxThreadCount));
+  }
+}
 
 class ScopedOpenMpThreads {
  public:
-  // threads > 0: that many; 0: leave OpenMP's current setting.
+  // threads > 0: that many; 0: leave OpenMP's current setting. Others are
+  // refused (requireThreadCount).
   explicit ScopedOpenMpThreads(int threads) : previous_(omp_get_max_threads()) {
+    requireThreadCount(threads);
     if (threads > 0) omp_set_num_threads(threads);
   }
   ~ScopedOpenMpThreads() { omp_set_num_threads(previous_); }

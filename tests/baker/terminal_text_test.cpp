@@ -1,9 +1,11 @@
 // Text from files is printed with its control characters escaped.
 #include <gtest/gtest.h>
 
-#include "baker/cli/terminal_text.h"
+#include <string>
 
-namespace skybake::cli {
+#include "data_formats/terminal_text.h"
+
+namespace skybake {
 namespace {
 
 TEST(TerminalText, EscapesControlCharactersAndKeepsOtherText) {
@@ -18,5 +20,21 @@ TEST(TerminalText, EscapesControlCharactersAndKeepsOtherText) {
   EXPECT_EQ(terminalSafe("a\nb\tc", true), "a\nb\tc");
 }
 
+// Quoted untrusted text: escaped, a NUL included, and cut after
+// kMaxShownBytes at a character boundary with the whole length said.
+TEST(TerminalText, ShownTextIsEscapedAndShortened) {
+  EXPECT_EQ(shownText(std::string("1\0"
+                                  "5",
+                                  3)),
+            "1\\x005");
+  EXPECT_EQ(shownText(std::string(kMaxShownBytes, 'x')), std::string(kMaxShownBytes, 'x'));
+  const std::string long_cell(60u << 20, '7');
+  EXPECT_EQ(shownText(long_cell), std::string(kMaxShownBytes, '7') + "... (62914560 bytes)");
+  // A two-byte character straddling the cut is left out whole.
+  const std::string accents = std::string(kMaxShownBytes - 1, 'a') + "\xc3\xa9tail";
+  EXPECT_EQ(shownText(accents),
+            std::string(kMaxShownBytes - 1, 'a') + "... (" + std::to_string(accents.size()) + " bytes)");
+}
+
 }  // namespace
-}  // namespace skybake::cli
+}  // namespace skybake

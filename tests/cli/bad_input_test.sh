@@ -86,9 +86,10 @@ refused "--outputs: clouds not in {sky_radiance,radiance_to_points,ground_irradi
 for v in 0-2000 2000 :5 nan:1 0:inf; do
   refused "--altitude-range = $v: must be LOW:HIGH, two finite numbers" -- "${bake[@]}" --altitude-range "$v"
 done
-for v in 0 -1 100 abc nan% ''; do
+for v in 0 -1 100 abc nan%; do
   refused "--target-error = $v: must be a percentage in (0, 100), such as 0.5% or 0.5" -- "${bake[@]}" --target-error "$v"
 done
+refused '--target-error = "": an empty value: give one, or leave the option out' -- "${bake[@]}" --target-error ''
 refused "--target-error = 0.3%: below what the sweep reached (0.35 % at 1.5x the default sizes" -- "${bake[@]}" --target-error 0.3%
 refused "scene.altitude_range_m = [2000, 0]: the low end must be below the high end" -- "${bake[@]}" --altitude-range 2000:0
 refused "scene.sun_zenith_range_deg[1] = 150: must be <= sun.max_zenith_deg (102)" -- "${bake[@]}" --sun-zenith-range 0:150
@@ -178,7 +179,7 @@ kept "$work/existing.csv" "q.csv:2:3 (view_zenith_deg): 'nan' is not a finite nu
 # read at other wavelengths, and one that does not exist; the key or file is
 # named, the earlier output kept.
 kept "$work/existing.csv" "small_earth.toml:13: sun.irradiance = [1.474, 1.8504, 1.91198]: a list of one value per wavelength cannot be read at other wavelengths" -- validate "$work/good.exr" --queries quick --no-cache --colour-config "$small" --json "$work/existing.csv"
-kept "$work/existing.csv" "none.toml: cannot open config file" -- validate "$work/good.exr" --queries quick --no-cache --colour-config "$work/none.toml" --json "$work/existing.csv"
+kept "$work/existing.csv" "none.toml: no such config file" -- validate "$work/good.exr" --queries quick --no-cache --colour-config "$work/none.toml" --json "$work/existing.csv"
 printf '%s\n0,30,0,-inf\n' "$header" >"$work/q.csv"
 radiance "q.csv:2:4 (view_azimuth_deg): '-inf' is not a finite number"
 printf '%s\n0,30,0,0\n0,30,,0\n' "$header" >"$work/q.csv"
@@ -349,7 +350,7 @@ sed 's/^scattering = {.*/scattering = { r = 512, mu = 1024, mu_s = 256, nu = 2 }
 small_machine=3900000
 memory_limit_kib=$small_machine kept "$work/out/old.exr" "huge.toml: resolution.scattering = 512 x 1024 x 256 x 2: the bake (2 tables of 4.0 GiB, 3 of 2.0 GiB and the orders' radiance, 4.0 GiB, alive at once and the scattering density's 3.3 GiB kernel) needs about 21.3 GiB; this process may allocate" -- bake "$work/huge.toml" -o "$work/out/old.exr"
 grep -qF "(address-space limit, ulimit -v)" "$work/stderr" || fail "the memory refusal does not say which limit: $(cat "$work/stderr")"
-# The comparison's 3.0 GiB fit in the small machine's limit: a smaller one.
+# The comparison's 2.2 GiB fit in the small machine's limit: a smaller one.
 memory_limit_kib=1500000 kept "$work/out/old.json" "small_earth.toml: --resolutions = 1,8: the comparison (every bake kept to the end) needs about 2.2 GiB; this process may allocate" -- compare "$small" --resolutions 1,8 --json "$work/out/old.json"
 memory_limit_kib=$small_machine kept "$work/out/old.png" "--size = 16384x16384: the image needs about 12.8 GiB; this process may allocate" -- render "$work/good.exr" "${view[@]}" --size 16384x16384 -o "$work/out/old.png"
 # Sizes whose products overflow are refused by the config check before any
@@ -357,6 +358,40 @@ memory_limit_kib=$small_machine kept "$work/out/old.png" "--size = 16384x16384: 
 # tests/baker/bake_memory_estimate_test.cpp).
 sed 's/^scattering = {.*/scattering = { r = 1024, mu = 1024, mu_s = 1024, nu = 1024 }/' "$small" >"$work/overflow.toml"
 kept "$work/out/old.exr" "overflow.toml: resolution.scattering = 1099511627776 texels: more than 268435456 texels per table" -- bake "$work/overflow.toml" -o "$work/out/old.exr"
+
+# --- Files a config names, and configs that are not files. An output is
+# never one of the inputs: the spectrum CSV a config reads is kept.
+printf 'wavelength_nm,irradiance\n300,1.5\n900,1.5\n' >"$work/sun.csv"
+sed '13s/.*/irradiance = { spectrum_csv = "sun.csv" }/' "$small" >"$work/csv_sun.toml"
+kept "$work/sun.csv" "sun.csv: is also an input ($work/sun.csv); the output would replace it" -- bake "$work/csv_sun.toml" -o "$work/sun.csv"
+# A device never ends, a named pipe blocks its reader, a huge file is not a
+# config: each refused by what it is, before it is read (in bounded time:
+# the run has a timeout of its own in CTest).
+kept "$work/kept.exr" "/dev/zero: is a character device, not a config file" -- bake /dev/zero -o "$work/kept.exr"
+mkfifo "$work/fifo.toml"
+kept "$work/kept.exr" "fifo.toml: is a named pipe, not a config file" -- bake "$work/fifo.toml" -o "$work/kept.exr"
+kept "$work/kept.exr" "$work: is a directory, not a config file" -- bake "$work" -o "$work/kept.exr"
+truncate -s 512M "$work/big.toml"
+kept "$work/kept.exr" "big.toml: 536870912 bytes, larger than a config file can be (16 MiB)" -- bake "$work/big.toml" -o "$work/kept.exr"
+rm -f "$work/big.toml"
+refused "/dev/zero: is a character device, not a bake file" -- info /dev/zero
+# Spectrum cells are quoted escaped and shortened; a value no float holds is
+# refused naming the file and line, not as an infinite config value.
+printf 'wavelength_nm,irradiance\n300,1\0005\n900,2\n' >"$work/nul.csv"
+sed '13s/.*/irradiance = { spectrum_csv = "nul.csv" }/' "$small" >"$work/nul_sun.toml"
+kept "$work/kept.exr" "nul_sun.toml:13: sun.irradiance.spectrum_csv: $work/nul.csv:2: value 1\x005: must be a finite number" -- bake "$work/nul_sun.toml" -o "$work/kept.exr"
+{ printf 'wavelength_nm,irradiance\n300,'; head -c 60000000 /dev/zero | tr '\0' '7'; printf '\n900,2\n'; } >"$work/long.csv"
+sed '13s/.*/irradiance = { spectrum_csv = "long.csv" }/' "$small" >"$work/long_sun.toml"
+kept "$work/kept.exr" "long.csv:2: value $(printf '%080d' 0 | tr 0 7)... (60000000 bytes): must be a finite number" -- bake "$work/long_sun.toml" -o "$work/kept.exr"
+[ "$(wc -c <"$work/stderr")" -lt 1000 ] || fail "a 60 MB cell was echoed: $(wc -c <"$work/stderr") bytes of message"
+rm -f "$work/long.csv"
+printf 'wavelength_nm,irradiance\n300,1e300\n900,2\n' >"$work/e300.csv"
+sed '13s/.*/irradiance = { spectrum_csv = "e300.csv" }/' "$small" >"$work/e300_sun.toml"
+kept "$work/kept.exr" "e300_sun.toml:13: sun.irradiance.spectrum_csv: $work/e300.csv:2: value 1e300: beyond the 3.40282e+38 a table's float holds" -- bake "$work/e300_sun.toml" -o "$work/kept.exr"
+# An empty option value is refused, not read as the option left out.
+refused '--moon = "": an empty value: give one, or leave the option out' -- render "$work/good.exr" "${view[@]}" --moon "" -o "$work/never.png"
+refused '--piece = "": an empty value: give one, or leave the option out' -- reference --piece ""
+[ -e "$work/never.png" ] && fail "a refused render wrote its output"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"

@@ -183,7 +183,8 @@ TEST_F(SpectralConfig, BadSpectrumFilesAreRefusedWithFileLineAndKey) {
                  {"sun.irradiance", "range.csv", "485 to 505", "outside"});
   expectRejected(config("[450]", "{ spectrum_csv = \"missing.csv\" }"),
                  {"sun.irradiance.spectrum_csv", "missing.csv", "no such spectrum file"});
-  expectRejected(config("[450]", "{ spectrum_csv = \".\" }"), {"sun.irradiance.spectrum_csv", "not a regular file"});
+  expectRejected(config("[450]", "{ spectrum_csv = \".\" }"),
+                 {"sun.irradiance.spectrum_csv", "is a directory, not a spectrum file"});
   // Inline spectra follow the same rules.
   expectRejected(config("[450]", "{ wavelengths_nm = [500, 400], values = [1, 2] }"),
                  {"sun.irradiance.wavelengths_nm[1]", "must increase"});

@@ -147,6 +147,98 @@ def test_bad_input_raises_badinput_with_the_command_lines_message(sky, tmp_path)
     assert not (tmp_path / "x.exr").exists()
 
 
+def unchanged(path, before):
+    """Whether the file at `path` still holds the bytes `before`."""
+    return path.read_bytes() == before
+
+
+def test_arguments_are_checked_as_the_command_line_checks_them(tmp_path):
+    # Thread counts libgomp cannot start (10**5 crashed it, 10**9 aborted it),
+    # negative ones, and non-ints: BadInput before anything runs.
+    out = tmp_path / "o.exr"
+    for threads in (100000, 10**9, 10**30, -5):
+        with pytest.raises(skybake.BadInput, match=rf"threads = {threads}: must be 0 \(all cores\) or 1 to 4096"):
+            skybake.bake(SMALL_EARTH, out, threads=threads)
+        with pytest.raises(skybake.BadInput, match=rf"threads = {threads}: must be 0"):
+            skybake.validate(BAKE, threads=threads)
+    with pytest.raises(skybake.BadInput, match="threads: a float is not a thread count"):
+        skybake.bake(SMALL_EARTH, out, threads=2.5)
+    # orders= as --orders: "auto" or a whole number in [1, 1000].
+    for orders in ("many", 0, 10**30):
+        with pytest.raises(skybake.BadInput, match=rf"orders = {orders}: must be 'auto' or a whole number in \[1, 1000\]"):
+            skybake.bake(SMALL_EARTH, out, orders=orders)
+    with pytest.raises(skybake.BadInput, match="orders: a float is not a number of orders"):
+        skybake.bake(SMALL_EARTH, out, orders=2.5)
+    # A NUL in a path would cut it short for the system.
+    with pytest.raises(skybake.BadInput, match="the path contains a NUL character"):
+        skybake.bake(SMALL_EARTH, str(tmp_path / "o\x00.exr"))
+    assert not (tmp_path / "o").exists()
+    assert not out.exists()
+
+
+def test_an_output_never_replaces_an_input(tmp_path):
+    # Neither the config nor a spectrum file it names.
+    config = tmp_path / "c.toml"
+    csv_file = tmp_path / "sun.csv"
+    csv_file.write_text("wavelength_nm,irradiance\n300,1.5\n900,1.5\n")
+    lines = open(SMALL_EARTH).read().splitlines()
+    lines[12] = 'irradiance = { spectrum_csv = "sun.csv" }'
+    config.write_text("\n".join(lines) + "\n")
+    for target in (config, csv_file):
+        before = target.read_bytes()
+        with pytest.raises(skybake.BadInput, match="is also an input"):
+            skybake.bake(str(config), str(target))
+        assert unchanged(target, before)
+
+
+def test_config_dicts_that_cannot_be_configs_are_refused_before_they_recurse(tmp_path):
+    out = tmp_path / "o.exr"
+    deep = {}
+    level = deep
+    for _ in range(100000):
+        level["x"] = {}
+        level = level["x"]
+    with pytest.raises(skybake.BadInput, match=r"config dict: (x\.){31}x: nested deeper than a config can be \(32 levels\)"):
+        skybake.bake(deep, out)
+    nested = [0.3]
+    for _ in range(100000):
+        nested = [nested]
+    with pytest.raises(skybake.BadInput, match=r"planet\.ground_albedo(\[0\]){30}: nested deeper"):
+        skybake.bake({"planet": {"ground_albedo": nested}}, out)
+    itself = {"name": "loop"}
+    itself["x"] = itself
+    with pytest.raises(skybake.BadInput, match="config dict: x: contains itself"):
+        skybake.bake(itself, out)
+    config = tomllib.load(open(SMALL_EARTH, "rb"))
+    config["resolution"]["scattering"]["r"] = 10**30
+    with pytest.raises(skybake.BadInput, match="resolution.scattering.r: the integer 1000000000000000000000000000000 is too large"):
+        skybake.bake(config, out)
+    assert not out.exists()
+
+
+def test_numpy_values_in_a_config_dict_bake_as_their_lists(tmp_path):
+    config = tomllib.load(open(SMALL_EARTH, "rb"))
+    as_numpy = tomllib.load(open(SMALL_EARTH, "rb"))
+    as_numpy["channels"]["wavelengths_nm"] = np.array(config["channels"]["wavelengths_nm"])
+    as_numpy["resolution"]["scattering"]["r"] = np.int64(config["resolution"]["scattering"]["r"])
+    skybake.bake(config, tmp_path / "lists.exr", orders=2, reproducible=True)
+    skybake.bake(as_numpy, tmp_path / "numpy.exr", orders=2, reproducible=True)
+    assert (tmp_path / "lists.exr").read_bytes() == (tmp_path / "numpy.exr").read_bytes()
+
+
+def test_files_that_are_not_bakes_or_configs_are_named_for_what_they_are(tmp_path):
+    with pytest.raises(skybake.BadInput, match="/dev/zero: is a character device, not a bake file"):
+        skybake.Sky("/dev/zero")
+    with pytest.raises(skybake.BadInput, match="/dev/zero: is a character device, not a config file"):
+        skybake.bake("/dev/zero", tmp_path / "o.exr")
+    with pytest.raises(skybake.BadInput, match="is a directory, not a config file"):
+        skybake.bake(str(tmp_path), tmp_path / "o.exr")
+    fifo = tmp_path / "fifo.toml"
+    os.mkfifo(fifo)
+    with pytest.raises(skybake.BadInput, match="fifo.toml: is a named pipe, not a config file"):
+        skybake.bake(str(fifo), tmp_path / "o.exr")
+
+
 def test_a_spectral_bakes_lookups_give_every_channel_as_the_command_line(tmp_path):
     many = os.path.join(SOURCE, "tests", "cli", "small_earth_many.toml")
     bake = tmp_path / "many.exr"

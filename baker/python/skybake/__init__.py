@@ -178,11 +178,15 @@ def bake(config, output, threads=0, orders=None, reproducible=False, progress=No
     data_formats/CONFIG.md, validated with the same messages) into `output`,
     as `skybake bake` does, and returns the bake report as a dict.
 
-    threads: OpenMP threads (0: all cores); orders: overrides bake.orders;
-    reproducible: leave the run's facts (time, threads) out of the file;
-    progress: progress(stage, fraction) called as each stage starts, at each
-    tenth of its work and at its end; None draws the command line's bar when
-    stderr is a terminal."""
+    threads: OpenMP threads, an int, 0 (all cores) or 1 to 4096; orders:
+    overrides bake.orders, "auto" or an int from 1 to 1000; reproducible:
+    leave the run's facts (time, threads) out of the file; progress:
+    progress(stage, fraction) called as each stage starts, at each tenth of
+    its work and at its end; None draws the command line's bar when stderr is
+    a terminal. A dict holds bool, int (64 bits), float, str, list, tuple,
+    dict and numpy arrays and scalars (as their lists and numbers), nested at
+    most 32 levels and never holding itself. `output` may not be the config
+    or a spectrum file it names. Anything else raises BadInput."""
     return _skybake.bake(config if isinstance(config, dict) else str(config), str(output),
                          threads, orders, reproducible, progress)
 
@@ -197,7 +201,8 @@ def validate(bake, queries="standard", reference_samples=None, cache_dir=None, n
     the command line's default); no_cache: compute afresh and keep nothing;
     colour_config: the config the bake was made from, to add the "colour"
     figures of `validate --colour-config` (luminance and CIEDE2000 per sun
-    band against a reference in CIE XYZ from 41 wavelengths)."""
+    band against a reference in CIE XYZ from 41 wavelengths); threads: an
+    int, 0 (all cores) or 1 to 4096."""
     kwargs = {} if reference_samples is None else {"reference_samples": int(reference_samples)}
     return _skybake.validate(str(bake), str(queries), cache_dir="" if cache_dir is None else str(cache_dir),
                              no_cache=no_cache, threads=threads,

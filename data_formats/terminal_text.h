@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace skybake::cli {
+namespace skybake {
 
 // `text` with every control character (C0, DEL, and the C1 range U+0080 to
 // U+009F as UTF-8) written as \xHH, bytes that are not valid UTF-8 too.
@@ -14,4 +14,11 @@ namespace skybake::cli {
 // as a config).
 std::string terminalSafe(std::string_view text, bool keep_line_breaks = false);
 
-}  // namespace skybake::cli
+// Untrusted text as a message quotes it (a CSV cell, a dict key, a value
+// from a file): terminalSafe, and cut after kMaxShownBytes with the whole
+// length said ("... (62914560 bytes)"), so that a 60 MB cell is not echoed
+// whole and a NUL does not cut the message short.
+inline constexpr size_t kMaxShownBytes = 80;
+std::string shownText(std::string_view text);
+
+}  // namespace skybake

@@ -1,8 +1,8 @@
-#include "baker/cli/terminal_text.h"
+#include "terminal_text.h"
 
 #include <fmt/format.h>
 
-namespace skybake::cli {
+namespace skybake {
 namespace {
 
 constexpr unsigned char kDelete = 0x7F;
@@ -50,4 +50,12 @@ std::string terminalSafe(std::string_view text, bool keep_line_breaks) {
   return out;
 }
 
-}  // namespace skybake::cli
+std::string shownText(std::string_view text) {
+  if (text.size() <= kMaxShownBytes) return terminalSafe(text);
+  // Cut at a character boundary: back over UTF-8 continuation bytes.
+  size_t cut = kMaxShownBytes;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return fmt::format("{}... ({} bytes)", terminalSafe(text.substr(0, cut)), text.size());
+}
+
+}  // namespace skybake

@@ -1,0 +1,69 @@
+#include "input_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "error.h"
+
+namespace skybake {
+
+const char* kindOfSpecialFile(const std::filesystem::file_status& status) {
+  switch (status.type()) {
+    case std::filesystem::file_type::directory:
+      return "a directory";
+    case std::filesystem::file_type::character:
+      return "a character device";
+    case std::filesystem::file_type::block:
+      return "a block device";
+    case std::filesystem::file_type::fifo:
+      return "a named pipe";
+    case std::filesystem::file_type::socket:
+      return "a socket";
+    default:
+      return nullptr;
+  }
+}
+
+void requireNoNulInPath(const std::string& path) {
+  const size_t nul = path.find('\0');
+  if (nul != std::string::npos) {
+    throwBadInput(fmt::format("{}\\0...: the path contains a NUL character, which ends a file name for the system",
+                              path.substr(0, nul)));
+  }
+}
+
+std::uintmax_t requireInputFile(const std::filesystem::path& path, const std::string& what, std::uintmax_t max_bytes) {
+  const std::string name = path.string();
+  requireNoNulInPath(name);
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throwBadInput(fmt::format("{}: no such {}", name, what));
+  if (const char* kind = kindOfSpecialFile(status)) throwBadInput(fmt::format("{}: is {}, not a {}", name, kind, what));
+  if (!std::filesystem::is_regular_file(status))
+    throwBadInput(fmt::format("{}: not a regular file, not a {}", name, what));
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (error) throwBadInput(fmt::format("{}: cannot read the file size: {}", name, error.message()));
+  if (bytes > max_bytes) {
+    throwBadInput(fmt::format("{}: {} bytes, larger than a {} can be ({} MiB)", name, bytes, what, max_bytes >> 20));
+  }
+  return bytes;
+}
+
+std::string readInputFile(const std::filesystem::path& path, const std::string& what, std::uintmax_t max_bytes) {
+  requireInputFile(path, what, max_bytes);
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throwBadInput(fmt::format("{}: cannot open the {}: {}", path.string(), what, std::strerror(errno)));
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  // The size was checked before the read; a file that grew meanwhile is cut
+  // off at the cap rather than read on without end.
+  if (text.size() > max_bytes) {
+    throwBadInput(fmt::format("{}: larger than a {} can be ({} MiB)", path.string(), what, max_bytes >> 20));
+  }
+  return text;
+}
+
+}  // namespace skybake
