@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "data_formats/terminal_text.h"
+
 namespace skybake::cli {
 namespace {
 
@@ -92,6 +94,12 @@ void TerminalProgress::endStage(double seconds) {
     fmt::print(stderr, "\r\033[K");
   }
   fmt::print(stderr, "{:<36} done in {:6.2f} s  (elapsed {:6.1f} s)\n", stage_, seconds, elapsed);
+}
+
+void TerminalProgress::note(const std::string& text) {
+  const std::lock_guard<std::mutex> lock(draw_mutex_);
+  if (interactive_) fmt::print(stderr, "\r\033[K");
+  fmt::print(stderr, "skybake: note: {}\n", terminalSafe(text));
 }
 
 }  // namespace skybake::cli

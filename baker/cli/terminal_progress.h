@@ -18,6 +18,8 @@ class TerminalProgress final : public ProgressSink {
   void beginStage(const std::string& name, size_t work_units) override;
   void advance(size_t units) override;
   void endStage(double seconds) override;
+  // "skybake: note: <text>" on its own line of stderr, escaped (it names files).
+  void note(const std::string& text) override;
 
  private:
   void draw(size_t done);

@@ -1,5 +1,6 @@
 #include "baker/render/sky_image.h"
 
+#include "baker/validation/local_frame.h"
 #include "runtime/colour/srgb_transfer.h"
 
 #include <omp.h>
@@ -42,7 +43,7 @@ glm::dvec3 sunDirection(const SkyView& v) {
 }
 
 glm::dvec3 cameraPosition(const Sky& sky, const SkyView& v) {
-  return {0.0, 0.0, sky.atmosphere().bottom_radius_m + v.altitude_m};
+  return cameraAtAltitude(sky.atmosphere().bottom_radius_m, v.altitude_m);
 }
 
 Moon moonSeenFrom(const Sky& sky, const SkyView& v, double azimuth_deg, double elevation_deg,

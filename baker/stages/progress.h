@@ -17,6 +17,10 @@ class ProgressSink {
   virtual void advance(size_t units) = 0;
   // Called by the controlling thread.
   virtual void endStage(double seconds) = 0;
+  // Something the user should know that does not stop the work (values
+  // found bad and recomputed, results that could not be kept), said once.
+  // Called by the controlling thread; ignored unless a sink shows it.
+  virtual void note(const std::string& text) { (void)text; }
 };
 
 class SilentProgress final : public ProgressSink {

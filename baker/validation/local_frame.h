@@ -18,8 +18,12 @@ inline glm::dvec3 directionFromZenithAzimuthDeg(double zenith_deg, double azimut
   return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
 }
 
+// The point at `altitude_m` above the +z pole. One below the ground is on
+// the ground, at any depth (as Sky looks up a camera below the ground): an
+// altitude below minus the planet's radius would otherwise land beyond the
+// centre, under the opposite pole, where the local frame's up is down.
 inline glm::dvec3 cameraAtAltitude(double bottom_radius_m, double altitude_m) {
-  return {0.0, 0.0, bottom_radius_m + altitude_m};
+  return {0.0, 0.0, bottom_radius_m + std::max(altitude_m, 0.0)};
 }
 
 }  // namespace skybake

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -24,24 +25,19 @@ constexpr int kReferenceSolverVersion = 4;  // 4: the sun disk counted as the ba
 nlohmann::json toJson(const SpectrumD& s) { return {s.x, s.y, s.z, s.w}; }
 SpectrumD spectrumFromJson(const nlohmann::json& j) { return {j.at(0), j.at(1), j.at(2), j.at(3)}; }
 
-// Adds the entries of one chunk file to `entries`; false if the file is gone
-// or unreadable (then it is left alone: its queries are recomputed).
-bool readChunkFile(const std::filesystem::path& file, std::map<std::string, CachedReference>& entries) {
-  std::ifstream in(file);
-  if (!in) return false;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (!j.is_object() || !j.contains("entries") || !j["entries"].is_object()) return false;
-  std::map<std::string, CachedReference> read;
-  try {
-    for (const auto& [query, e] : j["entries"].items()) {
-      read[query] = {spectrumFromJson(e.at("value")), spectrumFromJson(e.at("standard_error")),
-                     spectrumFromJson(e.at("transmittance")),
-                     e.contains("half_difference") ? spectrumFromJson(e.at("half_difference")) : SpectrumD(0.0)};
+// Whether a cached result lies in the range the reference solver gives:
+// radiance, irradiance and their standard errors finite and >= 0,
+// transmittance in [0, 1], the colour halves' difference finite. Anything
+// else was not written by skybake (an edited or damaged file) and would be
+// used as the truth: a -5 skipped its query, a 1000 reported a 70 % error.
+bool withinPhysicalRange(const CachedReference& e) {
+  for (int c = 0; c < 4; ++c) {
+    if (!(std::isfinite(e.value[c]) && e.value[c] >= 0.0 && std::isfinite(e.standard_error[c]) &&
+          e.standard_error[c] >= 0.0 && e.transmittance[c] >= 0.0 && e.transmittance[c] <= 1.0 &&
+          std::isfinite(e.half_difference[c]))) {
+      return false;
     }
-  } catch (const std::exception&) {
-    return false;
   }
-  entries.merge(read);
   return true;
 }
 
@@ -128,11 +124,50 @@ ReferenceCache::ReferenceCache(const std::filesystem::path& directory,
   openDirectory(directory / fmt::format("colour-reference-{:016x}", stableHash(text)));
 }
 
+bool ReferenceCache::readChunkFile(const std::filesystem::path& file) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) {
+    if (std::filesystem::exists(file, error)) notes_.push_back(file.string() + ": not a regular file; skipped");
+    return false;
+  }
+  std::map<std::string, CachedReference> read;
+  size_t discarded = 0;
+  try {
+    std::ifstream in(file);
+    if (!in) return false;  // removed by a merging reader meanwhile: its queries are recomputed
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (!j.is_object() || !j.contains("entries") || !j["entries"].is_object()) {
+      notes_.push_back(file.string() + ": not a reference cache chunk; skipped");
+      return false;
+    }
+    for (const auto& [query, e] : j["entries"].items()) {
+      const CachedReference entry{
+          spectrumFromJson(e.at("value")), spectrumFromJson(e.at("standard_error")),
+          spectrumFromJson(e.at("transmittance")),
+          e.contains("half_difference") ? spectrumFromJson(e.at("half_difference")) : SpectrumD(0.0)};
+      if (withinPhysicalRange(entry)) {
+        read[query] = entry;
+      } else {
+        ++discarded;
+      }
+    }
+  } catch (const std::exception& e) {
+    notes_.push_back(fmt::format("{}: unreadable ({}); skipped", file.string(), e.what()));
+    return false;
+  }
+  if (discarded > 0) {
+    notes_.push_back(fmt::format("{}: {} value(s) outside the reference's physical range discarded; recomputed",
+                                 file.string(), discarded));
+  }
+  entries_.merge(read);
+  return true;
+}
+
 void ReferenceCache::openDirectory(const std::filesystem::path& directory) {
   directory_ = directory;
   // A cache written as one file (before caches were directories) is read as
   // one more chunk, never removed.
-  readChunkFile(std::filesystem::path(directory_.string() + ".json"), entries_);
+  readChunkFile(std::filesystem::path(directory_.string() + ".json"));
   readChunks();
 }
 
@@ -143,7 +178,7 @@ void ReferenceCache::readChunks() {
     const std::string name = entry.path().filename().string();
     // Temporary files of writes in progress start with a dot.
     if (name.empty() || name[0] == '.' || entry.path().extension() != ".json") continue;
-    if (readChunkFile(entry.path(), entries_)) read.push_back(entry.path());
+    if (readChunkFile(entry.path())) read.push_back(entry.path());
   }
   if (read.size() <= kReferenceChunksBeforeMerge) return;
   for (const auto& [query, e] : entries_) unsaved_.push_back(query);
@@ -165,6 +200,18 @@ std::optional<CachedReference> ReferenceCache::find(const std::string& query_key
 void ReferenceCache::store(const std::string& query_key, const CachedReference& result) {
   if (directory_.empty()) return;
   if (entries_.insert_or_assign(query_key, result).second) unsaved_.push_back(query_key);
+}
+
+void ReferenceCache::saveChunkIfWritable() {
+  if (!writable_) return;
+  try {
+    saveChunk();
+  } catch (const Error& e) {
+    writable_ = false;
+    unsaved_.clear();
+    notes_.push_back(
+        fmt::format("the reference cache cannot be written ({}): the results are reported, not kept", e.what()));
+  }
 }
 
 void ReferenceCache::saveChunk() {

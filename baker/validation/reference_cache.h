@@ -63,18 +63,31 @@ class ReferenceCache {
   // Writes what was stored since the last call as a new chunk file (nothing
   // if nothing was). Throws Error(BadInput) if the directory cannot be made.
   void saveChunk();
+  // saveChunk, but a cache that cannot be written (a read-only directory, a
+  // full disk) only keeps its results in memory from then on: a note says
+  // why, and the work goes on.
+  void saveChunkIfWritable();
+  // What the cache found and did about it (entries out of their physical
+  // range discarded, unreadable chunks skipped, a write refused), each
+  // naming the file or directory; empty when all was well.
+  const std::vector<std::string>& notes() const { return notes_; }
   // This atmosphere's directory (empty if the cache is disabled).
   const std::filesystem::path& directory() const { return directory_; }
   size_t size() const { return entries_.size(); }
 
  private:
   void readChunks();
+  // Adds a chunk file's entries within their physical range; false if it
+  // cannot be read (its queries are then recomputed). Notes what it skips.
+  bool readChunkFile(const std::filesystem::path& file);
   void openDirectory(const std::filesystem::path& directory);
 
   std::filesystem::path directory_;
   std::map<std::string, CachedReference> entries_;
   std::vector<std::string> unsaved_;
+  std::vector<std::string> notes_;
   int chunks_written_ = 0;
+  bool writable_ = true;
 };
 
 }  // namespace skybake

@@ -161,13 +161,14 @@ double computeInCheckpointedBatches(const std::vector<size_t>& items, const std:
     for (size_t k = first; k < last; ++k) store(items[k]);
     const auto now = std::chrono::steady_clock::now();
     if (std::chrono::duration<double>(now - last_checkpoint).count() >= kReferenceCheckpointSeconds) {
-      cache.saveChunk();
+      cache.saveChunkIfWritable();
       last_checkpoint = now;
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.endStage(seconds);
-  cache.saveChunk();
+  cache.saveChunkIfWritable();
+  for (const std::string& note : cache.notes()) progress.note(note);
   return seconds;
 }
 

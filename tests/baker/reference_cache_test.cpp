@@ -118,6 +118,47 @@ TEST_F(ReferenceCacheTest, SingleFileCacheIsReadAndBrokenChunksIgnored) {
   EXPECT_EQ(cache.size(), 1u);
 }
 
+// Values a reference never gives (negative or non-finite radiance or
+// error, transmittance outside [0, 1]) are discarded with a note naming the
+// chunk, so that their queries are recomputed instead of trusted; a
+// directory named like a chunk is skipped with a note, not an error.
+TEST_F(ReferenceCacheTest, ValuesOutsideThePhysicalRangeAndNonFilesAreSkippedWithANote) {
+  const ReferenceCache probe(dir_, atmosphere_, 64);
+  std::filesystem::create_directories(probe.directory() / "directory.json");
+  const std::filesystem::path chunk = probe.directory() / "edited.json";
+  std::ofstream(chunk)
+      << R"({"entries": {)"
+         R"("good": {"value": [1,2,3,0], "standard_error": [0,0,0,0], "transmittance": [1,1,1,1]},)"
+         R"("negative": {"value": [-5,2,3,0], "standard_error": [0,0,0,0], "transmittance": [1,1,1,1]},)"
+         R"("opaque": {"value": [1,2,3,0], "standard_error": [0,0,0,0], "transmittance": [1,2,1,1]},)"
+         R"("noisy": {"value": [1,2,3,0], "standard_error": [0,-1,0,0], "transmittance": [1,1,1,1]}}})";
+  const ReferenceCache cache(dir_, atmosphere_, 64);
+  EXPECT_TRUE(cache.find("good").has_value());
+  EXPECT_FALSE(cache.find("negative").has_value());
+  EXPECT_FALSE(cache.find("opaque").has_value());
+  EXPECT_FALSE(cache.find("noisy").has_value());
+  ASSERT_EQ(cache.notes().size(), 2u);
+  EXPECT_EQ(cache.notes()[0].find((probe.directory() / "directory.json").string() + ": not a regular file"), 0u)
+      << cache.notes()[0];
+  EXPECT_EQ(cache.notes()[1],
+            chunk.string() + ": 3 value(s) outside the reference's physical range discarded; recomputed");
+}
+
+// A cache that cannot be written keeps its results in memory, with a note
+// naming why, and the work goes on (validate reports from a read-only cache).
+TEST_F(ReferenceCacheTest, AnUnwritableCacheKeepsResultsInMemoryWithANote) {
+  std::filesystem::create_directories(dir_);
+  std::ofstream(dir_ / "file") << "not a directory";
+  ReferenceCache cache(dir_ / "file", atmosphere_, 64);  // its directory cannot be made under a file
+  cache.store("q", valueOf(3.0));
+  EXPECT_NO_THROW(cache.saveChunkIfWritable());
+  ASSERT_TRUE(cache.find("q").has_value());
+  EXPECT_EQ(cache.find("q")->value.x, 3.0);
+  ASSERT_EQ(cache.notes().size(), 1u);
+  EXPECT_NE(cache.notes()[0].find("the reference cache cannot be written"), std::string::npos) << cache.notes()[0];
+  EXPECT_NE(cache.notes()[0].find(cache.directory().string()), std::string::npos) << cache.notes()[0];
+}
+
 // The pieces of a query set partition it.
 TEST(ReferencePieces, PiecesPartitionTheSet) {
   const QuerySet set = querySetNamed("quick", 100000.0);

@@ -58,6 +58,18 @@ head -n1 "$work/r.csv" | grep -qx 'altitude_m,sun_zenith_deg,view_zenith_deg,vie
   || fail "lookup radiance header: $(head -n1 "$work/r.csv")"
 [ "$(wc -l <"$work/r.csv")" -eq 3 ] || fail "lookup radiance: expected 2 rows"
 awk -F, 'NR > 1 { for (i = 6; i <= 11; ++i) if (!($i > 0)) exit 1 }' "$work/r.csv" || fail "lookup radiance: non-positive values: $(cat "$work/r.csv")"
+# A camera below the ground is on the ground at any depth: altitude -6.5e6 m
+# (more than the planet's radius, which would put it under the opposite
+# pole) reads what altitude 0 reads, in lookups and renders alike.
+printf 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m\n0,30,60,0,0\n-6.5e6,30,60,0,0\n-1e12,30,60,0,0\n' >"$work/deep.csv"
+expect_status 0 "" -- lookup radiance "$work/good.exr" --queries "$work/deep.csv" -o "$work/deep_r.csv"
+[ "$(cut -d, -f6- "$work/deep_r.csv" | sed -n 2,4p | sort -u | wc -l)" -eq 1 ] || fail "a deep camera differs from one on the ground: $(cat "$work/deep_r.csv")"
+for altitude in 0 -6.5e6 -1e12; do
+  expect_status 0 "" -- render "$work/good.exr" --altitude-m "$altitude" --sun-zenith-deg 80 --size 32x16 -o "$work/deep_$altitude.png"
+done
+for altitude in -6.5e6 -1e12; do
+  cmp -s "$work/deep_0.png" "$work/deep_$altitude.png" || fail "a render at $altitude m differs from one on the ground"
+done
 # A colour bake: info says X, Y, Z and the wavelengths integrated, lookup
 # labels its columns X, Y, Z, render refuses spectral channels.
 cat >"$work/colour.toml" <<'EOF'
