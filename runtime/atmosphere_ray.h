@@ -34,7 +34,12 @@ inline AtmosphereRay atmosphereRay(double bottom, double top, glm::dvec3 start, 
   }
   double rmu = glm::dot(start, dir);
   if (r > top) {
-    const double discriminant = rmu * rmu - r * r + top * top;
+    // top^2 minus the squared distance of the ray's line from the centre,
+    // taken from the line's point nearest the centre: rmu^2 - r^2 + top^2
+    // cancels for a far camera (at 1e12 m rmu^2 and r^2 are 1e24, rounded
+    // by 1e8 m^2, an error of 14 km along a grazing ray).
+    const glm::dvec3 nearest = start - dir * rmu;
+    const double discriminant = top * top - glm::dot(nearest, nearest);
     const double entry = -rmu - safeSqrt(discriminant);
     if (discriminant < 0.0 || entry < 0.0) return ray;
     start += dir * entry;

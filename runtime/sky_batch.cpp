@@ -5,6 +5,7 @@
 // the optical depths, use the scalar lookups' own sampling functions.
 #include <glm/geometric.hpp>
 
+#include "runtime/lookup_geometry.h"
 #include "runtime/sky.h"
 
 namespace skybake {
@@ -26,6 +27,11 @@ Texture4D sliceAt(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu_s, B
   return slice;
 }
 
+// Ray i's direction, checked and normalised as every lookup's (lookup_geometry.h).
+glm::dvec3 rayDirection(const ViewRayBatch& rays, size_t i) {
+  return lookupDirection(glm::dvec3(rays.dir_x[i], rays.dir_y[i], rays.dir_z[i]), "view direction");
+}
+
 Spectrum sampleSlice(const Texture4D& slice, const AxisLerp& mu, const AxisLerp& nu, Blend blend) {
   return blend == Blend::Linear ? sampleMuNuSlice<Blend::Linear>(slice, mu, nu)
                                 : sampleMuNuSlice<Blend::GeometricWhereSteep>(slice, mu, nu);
@@ -33,9 +39,11 @@ Spectrum sampleSlice(const Texture4D& slice, const AxisLerp& mu, const AxisLerp&
 
 }  // namespace
 
-void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
+void Sky::skyRadianceBatch(const glm::dvec3& camera_given, const glm::dvec3& sun_dir_given, const ViewRayBatch& rays,
                            SpectrumBatch radiance, SpectrumBatch transmittance) const {
   requireOneLaneGroup("skyRadianceBatch");
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
   auto store = [&](size_t i, const Spectrum& l, const Spectrum& t) {
     for (int c = 0; c < channelCount(); ++c) {
       if (radiance.channel[c] != nullptr) radiance.channel[c][i] = l[c];
@@ -47,8 +55,7 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
   if (!(length <= d.top_radius_m)) {
     // In space every ray enters at its own point: no shared (r, mu_s).
     for (size_t i = 0; i < rays.count; ++i) {
-      const RadianceAndTransmittance v =
-          skyRadiance(camera, glm::dvec3(rays.dir_x[i], rays.dir_y[i], rays.dir_z[i]), sun_dir);
+      const RadianceAndTransmittance v = skyRadiance(camera, rayDirection(rays, i), sun_dir);
       store(i, v.radiance, v.transmittance);
     }
     return;
@@ -78,7 +85,7 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, 
   const TableSampler::OpticalDepthFromR depth_here(sampler_, r), depth_at_ground(sampler_, d.bottom_radius_m);
 
   for (size_t i = 0; i < rays.count; ++i) {
-    const glm::dvec3 dir(rays.dir_x[i], rays.dir_y[i], rays.dir_z[i]);
+    const glm::dvec3 dir = rayDirection(rays, i);
     const double mu = clampCosine(glm::dot(up, dir));
     const double nu = clampCosine(glm::dot(dir, sun_dir));
     const bool ground = rayIntersectsSphere(r, mu, d.bottom_radius_m);

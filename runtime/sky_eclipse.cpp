@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "runtime/eclipse_skylight.h"
+#include "runtime/lookup_geometry.h"
 #include "runtime/sky.h"
 #include "runtime/sky_lookup_constants.h"
 #include "runtime/sky_lookup_start.h"
@@ -42,7 +43,10 @@ bool Sky::moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, c
   return separation_rad < atmosphere().sun_angular_radius_rad + moon_radius_rad + parallax_rad;
 }
 
-Spectrum Sky::eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const {
+Spectrum Sky::eclipseSkylight(const glm::dvec3& point_given, const glm::dvec3& sun_dir_given, const Moon& moon) const {
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
   requireOneLaneGroup("eclipseSkylight");
   // The kernel's points lie within the atmosphere's reach of `point`: a moon
   // that hides the sun from none of them leaves F exactly 1.
@@ -50,16 +54,25 @@ Spectrum Sky::eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir
   return eclipseSkylightFraction(atmosphere(), moon, point, sun_dir);
 }
 
-RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                          const glm::dvec3& sun_dir, const Moon& moon) const {
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
+                                          const glm::dvec3& sun_dir_given, const Moon& moon) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
   const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
   if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   return skyRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
 }
 
-RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                          const glm::dvec3& sun_dir, const Moon& moon,
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
+                                          const glm::dvec3& sun_dir_given, const Moon& moon,
                                           const Spectrum& camera_skylight) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
+  if (insideMoon(camera, moon)) return {Spectrum(0.0f), Spectrum(0.0f)};
   SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, 0.0);
   if (!p.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   if (moonHidesSunNear(p.start.origin, sun_dir, moon)) {
@@ -80,16 +93,24 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
           p.transmittance};
 }
 
-RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                               const glm::dvec3& sun_dir, const Moon& moon) const {
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
+                                               const glm::dvec3& sun_dir_given, const Moon& moon) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
   const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
   if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   return receivedRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
 }
 
-RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                               const glm::dvec3& sun_dir, const Moon& moon,
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
+                                               const glm::dvec3& sun_dir_given, const Moon& moon,
                                                const Spectrum& camera_skylight) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
   RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir, moon, camera_skylight);
   const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
   if (!start.inside || !start.ends_on_ground) return v;
@@ -99,14 +120,22 @@ RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const g
   return v;
 }
 
-Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
-                            const Moon& moon) const {
+Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
+                            const glm::dvec3& sun_dir_given, const Moon& moon) const {
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
   return sunIrradiance(point, normal, sun_dir) *
          static_cast<float>(moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad));
 }
 
-SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
-                                    const Moon& moon) const {
+SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
+                                    const glm::dvec3& sun_dir_given, const Moon& moon) const {
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
   SunAndSkyIrradiance e = irradiance(point, normal, sun_dir);
   const double visible = moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad);
   e.sun *= static_cast<float>(visible);
@@ -114,8 +143,12 @@ SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& n
   return e;
 }
 
-RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
-                                              const glm::dvec3& sun_dir, const Moon& moon) const {
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera_given, const glm::dvec3& point_given,
+                                              const glm::dvec3& sun_dir_given, const Moon& moon) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
   const glm::dvec3 offset = point - camera;
   const double distance = glm::length(offset);
   const AtmosphereRay start =
@@ -124,9 +157,14 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const gl
   return radianceToPoint(camera, point, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
 }
 
-RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
-                                              const glm::dvec3& sun_dir, const Moon& moon,
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera_given, const glm::dvec3& point_given,
+                                              const glm::dvec3& sun_dir_given, const Moon& moon,
                                               const Spectrum& camera_skylight) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  requireLookupMoon(moon);
+  if (insideMoon(camera, moon)) return {Spectrum(0.0f), Spectrum(0.0f)};
   RadianceAndTransmittance v = radianceToPoint(camera, point, sun_dir);
   const glm::dvec3 offset = point - camera;
   const double distance = glm::length(offset);

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "data_formats/error.h"
+#include "runtime/lookup_geometry.h"
 #include "runtime/sky.h"
 
 namespace skybake {
@@ -24,7 +25,11 @@ SurfacePoint surfacePoint(const AtmosphereDomain& domain, const glm::dvec3& poin
 
 }  // namespace
 
-Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const {
+Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
+                            const glm::dvec3& sun_dir_given) const {
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
   requireOneLaneGroup("sunIrradiance");
   const SurfacePoint p = surfacePoint(sampler_.domain(), point);
   const double mu_s = clampCosine(glm::dot(p.up, sun_dir));
@@ -33,8 +38,11 @@ Spectrum Sky::sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, c
          static_cast<float>(std::max(glm::dot(normal, sun_dir), 0.0));
 }
 
-SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point, const glm::dvec3& normal,
-                                    const glm::dvec3& sun_dir) const {
+SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
+                                    const glm::dvec3& sun_dir_given) const {
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
   requireOneLaneGroup("irradiance");
   if (!outputs().ground_irradiance) {
     throw Error(ErrorKind::BadInput,

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "runtime/lookup_geometry.h"
 #include "runtime/segment_radiance.h"
 #include "runtime/sky.h"
 #include "runtime/sky_lookup_constants.h"
@@ -20,8 +21,12 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
           p.transmittance};
 }
 
-Sky::SkyRadianceParts Sky::skyRadianceParts(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                            const glm::dvec3& sun_dir, double shadow_length_m) const {
+Sky::SkyRadianceParts Sky::skyRadianceParts(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
+                                            const glm::dvec3& sun_dir_given, double shadow_length_m_given) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const double shadow_length_m = lookupShadowLength(shadow_length_m_given);
   requireOneLaneGroup("skyRadiance");
   const AtmosphereDomain& domain = sampler_.domain();
   SkyRadianceParts parts;
@@ -84,8 +89,11 @@ void Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, 
   multiple = tabulated_density.radiance * to_start;
 }
 
-RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                               const glm::dvec3& sun_dir) const {
+RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
+                                               const glm::dvec3& sun_dir_given) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
   const AtmosphereDomain& domain = sampler_.domain();
   RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir);
   const AtmosphereRay start = enterAtmosphere(domain, camera, view_dir);

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "data_formats/error.h"
+#include "runtime/lookup_geometry.h"
 #include "runtime/segment_radiance.h"
 #include "runtime/sky.h"
 #include "runtime/sky_lookup_constants.h"
@@ -45,8 +46,12 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
 
 }  // namespace
 
-RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
-                                              const glm::dvec3& sun_dir, double shadow_length_m) const {
+RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera_given, const glm::dvec3& point_given,
+                                              const glm::dvec3& sun_dir_given, double shadow_length_m_given) const {
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 point = lookupPosition(point_given, "point");
+  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const double shadow_length_m = lookupShadowLength(shadow_length_m_given);
   requireOneLaneGroup("radianceToPoint");
   if (!outputs().radiance_to_points) {
     throw Error(ErrorKind::BadInput,

@@ -3,6 +3,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "runtime/lookup_geometry.h"
 #include "runtime/sky.h"
 #include "runtime/sky_lookup_constants.h"
 #include "runtime/sky_lookup_start.h"
@@ -17,7 +18,9 @@ bool grazesGround(const AtmosphereDomain& domain, const AtmosphereRay& ray) {
 
 }  // namespace
 
-Spectrum Sky::transmittance(const glm::dvec3& a, const glm::dvec3& b) const {
+Spectrum Sky::transmittance(const glm::dvec3& a_given, const glm::dvec3& b_given) const {
+  const glm::dvec3 a = lookupPosition(a_given, "a");
+  const glm::dvec3 b = lookupPosition(b_given, "b");
   requireOneLaneGroup("transmittance");
   const AtmosphereDomain& domain = sampler_.domain();
   const glm::dvec3 offset = b - a;

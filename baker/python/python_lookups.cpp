@@ -21,6 +21,7 @@
 #include "baker/python/python_bindings.h"
 #include "data_formats/error.h"
 
+#include "runtime/lookup_geometry.h"
 #include "runtime/sky.h"
 
 namespace py = pybind11;
@@ -180,11 +181,16 @@ py::dict atmosphereDict(const Sky& sky) {
 void registerLookups(py::module_& m) {
   m.def("_moon_seen_from", [](const std::array<double, 3>& camera, const std::array<double, 3>& direction,
                               double angular_radius_rad) {
-    const glm::dvec3 dir(direction[0], direction[1], direction[2]);
-    if (!(glm::length(dir) > 0.0) || !std::isfinite(angular_radius_rad) || angular_radius_rad < 0.0) {
-      throw Error(ErrorKind::BadInput, "moon_seen_from: needs a non-zero direction and an angular radius >= 0");
+    // The direction and camera as every lookup takes them (lookup_geometry.h).
+    const glm::dvec3 dir = lookupDirection({direction[0], direction[1], direction[2]}, "moon_seen_from direction");
+    const glm::dvec3 from = lookupPosition({camera[0], camera[1], camera[2]}, "moon_seen_from camera");
+    // Beyond a right angle the sine that gives the radius falls again (100
+    // deg read as 80) and then turns negative.
+    if (!(angular_radius_rad >= 0.0 && angular_radius_rad < kPi / 2.0)) {
+      throw Error(ErrorKind::BadInput, "moon_seen_from: angular_radius_rad = " + std::to_string(angular_radius_rad) +
+                                           ": must be in [0, pi/2)");
     }
-    const Moon moon = Moon::seenFrom({camera[0], camera[1], camera[2]}, glm::normalize(dir), angular_radius_rad);
+    const Moon moon = Moon::seenFrom(from, dir, angular_radius_rad);
     return py::make_tuple(std::array<double, 3>{moon.centre_m.x, moon.centre_m.y, moon.centre_m.z}, moon.radius_m);
   });
   py::class_<Sky>(m, "Sky")

@@ -239,6 +239,32 @@ def test_files_that_are_not_bakes_or_configs_are_named_for_what_they_are(tmp_pat
         skybake.bake(str(fifo), tmp_path / "o.exr")
 
 
+def test_lookups_keep_the_runtimes_geometry_contract(sky):
+    # Huge, tiny and non-unit directions, cameras far away and deep below
+    # the ground: finite results in range (runtime/README.md, "Geometry").
+    rng = np.random.default_rng(20261206)
+    n = 5000  # more than 4096 rows: the threaded path
+    scale = 10.0 ** rng.uniform(-300, 300, size=(n, 1))
+    camera = rng.normal(size=(n, 3)) * 10.0 ** rng.uniform(0, 20, size=(n, 1))
+    view = rng.normal(size=(n, 3)) * scale
+    sun = rng.normal(size=(n, 3)) * scale[::-1]
+    radiance, transmittance = sky.sky_radiance(camera, view, sun)
+    assert np.all(np.isfinite(radiance)) and np.all(radiance >= 0)
+    assert np.all((transmittance >= 0) & (transmittance <= 1))
+    sun_e, sky_e = sky.irradiance(camera, view, sun)
+    assert np.all(np.isfinite(sun_e)) and np.all(np.isfinite(sky_e))
+    # One refused row refuses the call, naming the argument and its value.
+    for bad, message in ((np.nan, r"view direction = \(nan, 0, 1\): not finite"),
+                         (0.0, r"view direction = \(0, 0, 0\): a direction needs a length above 0")):
+        views = np.tile([0.0, 0.0, 1.0], (n, 1))
+        views[1234] = [bad, 0.0, 1.0 if np.isnan(bad) else 0.0]
+        with pytest.raises(skybake.BadInput, match=message):
+            sky.sky_radiance(camera, views, sun)
+    for radius in (10.0, np.radians(100)):
+        with pytest.raises(skybake.BadInput, match=r"angular_radius_rad = .*: must be in \[0, pi/2\)"):
+            skybake.moon_seen_from([0, 0, 6.4e6], [0, 0, 1], radius)
+
+
 def test_a_spectral_bakes_lookups_give_every_channel_as_the_command_line(tmp_path):
     many = os.path.join(SOURCE, "tests", "cli", "small_earth_many.toml")
     bake = tmp_path / "many.exr"

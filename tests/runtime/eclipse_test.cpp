@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/numerics/optical_depth_integral.h"
+#include "data_formats/error.h"
 #include "direct_single_scattering.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/eclipse_skylight.h"
@@ -259,15 +260,17 @@ namespace skybake {
 namespace {
 
 // Hostile moons: one around the camera, one the size of the sky, one in the
-// atmosphere beside the camera, one at a NaN position. Every lookup stays
-// finite and non-negative (a point inside the moon sees no sun).
+// atmosphere beside the camera. Every lookup stays finite and non-negative
+// (a camera inside the moon sees its dark inside); one at a NaN position is
+// refused.
 TEST(Eclipse, HostileMoonsGiveFiniteLight) {
   const Sky& sky = bakedSky("earth.exr");
   const AtmosphereParameters& a = sky.atmosphere();
   const glm::dvec3 camera(0.0, 0.0, a.bottom_radius_m + 1000.0), sun = direction(50.0, 0.0);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const Moon& moon : {Moon{camera, 5000.0}, Moon{camera + sun * 1e9, 1e9}, Moon{camera + sun * 20e3, 3e3},
-                           Moon{glm::dvec3(nan, 0.0, 0.0), 1.7e6}}) {
+  // A moon whose centre is not finite is refused (runtime/lookup_geometry.h), not read as no moon.
+  EXPECT_THROW(sky.receivedRadiance(camera, sun, sun, Moon{glm::dvec3(nan, 0.0, 0.0), 1.7e6}), Error);
+  for (const Moon& moon : {Moon{camera, 5000.0}, Moon{camera + sun * 1e9, 1e9}, Moon{camera + sun * 20e3, 3e3}}) {
     for (auto [z, az] : {std::array{0.0, 0.0}, std::array{50.0, 0.0}, std::array{89.0, 90.0}, std::array{120.0, 0.0}}) {
       const RadianceAndTransmittance v = sky.receivedRadiance(camera, direction(z, az), sun, moon);
       const SunAndSkyIrradiance e = sky.irradiance(camera, {0.0, 0.0, 1.0}, sun, moon);

@@ -14,7 +14,12 @@ lookup runs, and calls of many rows use several threads.
 
 Bad input (a missing or corrupt file, a config value, a left-out output)
 raises skybake.BadInput, a ValueError with the message the command line
-prints.
+prints. Geometry follows the C++ runtime's contract (runtime/README.md,
+"Geometry"): a row with a non-finite value, a zero direction or a moon of
+negative or non-finite radius raises BadInput for the call, naming the
+argument; directions of any other length are normalised; positions beyond
+1e12 m from the centre are moved in to it, and below the ground, at any
+depth, onto it.
 """
 import json as _json
 
