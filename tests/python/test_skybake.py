@@ -5,6 +5,7 @@ SKYBAKE_TEST_BAKE a default-size Earth bake, SKYBAKE_SOURCE_DIR the
 checkout; PYTHONPATH holds the build's python/ folder.
 """
 import concurrent.futures
+import copy
 import csv
 import json
 import io
@@ -214,6 +215,64 @@ def test_config_dicts_that_cannot_be_configs_are_refused_before_they_recurse(tmp
     with pytest.raises(skybake.BadInput, match="resolution.scattering.r: the integer 1000000000000000000000000000000 is too large"):
         skybake.bake(config, out)
     assert not out.exists()
+
+
+def random_python_value(rng, depth=0):
+    """Anything a script might put in a config dict, hostile values included."""
+    kind = rng.integers(0, 16) if depth < 6 else rng.integers(0, 9)
+    if kind == 0:
+        return bool(rng.integers(0, 2))
+    if kind == 1:
+        return int(rng.choice([0, -1, 7, 2**31, -(2**63), 2**63, 10**30]))
+    if kind == 2:
+        return float(rng.choice([0.5, -3.0, 1e-300, 1e300, np.nan, np.inf, -np.inf]))
+    if kind == 3:
+        return rng.choice(["", "auto", "x\x00y", "\x1b[31m", "\u00e9\u2600", "z" * 100000])
+    if kind == 4:
+        return np.float32(rng.normal())
+    if kind == 5:
+        return np.array(rng.normal(size=int(rng.integers(0, 4))))
+    if kind == 6:
+        return np.array([["a", "b"]])
+    if kind == 7:
+        return rng.choice([None, b"bytes", 1j, object()])
+    if kind == 8:
+        return {1, 2}
+    if kind in (9, 10):
+        return [random_python_value(rng, depth + 1) for _ in range(int(rng.integers(0, 4)))]
+    if kind == 11:
+        return tuple(random_python_value(rng, depth + 1) for _ in range(int(rng.integers(0, 3))))
+    keys = ["channels", "planet", "sun", "rayleigh", "mie", "resolution", "bake", "scene", "name", 3, None, ""]
+    return {keys[int(rng.integers(0, len(keys)))]: random_python_value(rng, depth + 1)
+            for _ in range(int(rng.integers(0, 4)))}
+
+
+def test_any_config_dict_gives_a_bake_or_badinput(tmp_path):
+    # The dict conversion's property test: random dicts, and the small Earth
+    # with one leaf replaced by a random value (sometimes a container holding
+    # itself), bake or raise BadInput; never another exception or a crash.
+    rng = np.random.default_rng(42)
+    small = tomllib.load(open(SMALL_EARTH, "rb"))
+    small["resolution"]["scattering"] = {"r": 4, "mu": 8, "mu_s": 4, "nu": 2}
+    outcomes = {"baked": 0, "refused": 0}
+    for i in range(200):
+        if i % 2:
+            config = random_python_value(rng)
+            if not isinstance(config, dict):
+                config = {"x": config}
+        else:
+            config = copy.deepcopy(small)
+            table = config[rng.choice([k for k in config if isinstance(config[k], dict)])]
+            key = rng.choice(list(table))
+            table[key] = random_python_value(rng)
+            if i % 10 == 0:
+                table[key] = [table]  # holds the table that holds it
+        try:
+            skybake.bake(config, tmp_path / "o.exr", orders=1, threads=1)
+            outcomes["baked"] += 1
+        except skybake.BadInput:
+            outcomes["refused"] += 1
+    assert outcomes["baked"] > 0 and outcomes["refused"] > 0, outcomes
 
 
 def test_numpy_values_in_a_config_dict_bake_as_their_lists(tmp_path):
