@@ -59,6 +59,15 @@ inline glm::dvec3 lookupPosition(const glm::dvec3& p, const char* what) {
   return near ? p : positionWithinReach(p, what);
 }
 
+// A view lookup's camera, view and sun directions, each checked as above.
+struct CheckedView {
+  glm::dvec3 camera, view_dir, sun_dir;
+};
+inline CheckedView checkedView(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir) {
+  return {lookupPosition(camera, "camera"), lookupDirection(view_dir, "view direction"),
+          lookupDirection(sun_dir, "sun direction")};
+}
+
 // A shadow length (m) as the lookups take it, or Error(BadInput) for a
 // negative or non-finite one.
 double lookupShadowLength(double shadow_length_m);

@@ -56,9 +56,7 @@ Spectrum Sky::eclipseSkylight(const glm::dvec3& point_given, const glm::dvec3& s
 
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
                                           const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
-  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
   requireLookupMoon(moon);
   const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
   if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
@@ -68,9 +66,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const 
 RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
                                           const glm::dvec3& sun_dir_given, const Moon& moon,
                                           const Spectrum& camera_skylight) const {
-  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
-  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
   requireLookupMoon(moon);
   if (insideMoon(camera, moon)) return {Spectrum(0.0f), Spectrum(0.0f)};
   SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, 0.0);
@@ -95,9 +91,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const 
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
                                                const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
-  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
   requireLookupMoon(moon);
   const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
   if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
@@ -107,9 +101,7 @@ RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, c
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
                                                const glm::dvec3& sun_dir_given, const Moon& moon,
                                                const Spectrum& camera_skylight) const {
-  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
-  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
   requireLookupMoon(moon);
   RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir, moon, camera_skylight);
   const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);

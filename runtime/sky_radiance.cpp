@@ -23,9 +23,7 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::d
 
 Sky::SkyRadianceParts Sky::skyRadianceParts(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
                                             const glm::dvec3& sun_dir_given, double shadow_length_m_given) const {
-  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
-  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
   const double shadow_length_m = lookupShadowLength(shadow_length_m_given);
   requireOneLaneGroup("skyRadiance");
   const AtmosphereDomain& domain = sampler_.domain();
@@ -91,9 +89,7 @@ void Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, 
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
                                                const glm::dvec3& sun_dir_given) const {
-  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
-  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
   const AtmosphereDomain& domain = sampler_.domain();
   RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir);
   const AtmosphereRay start = enterAtmosphere(domain, camera, view_dir);
