@@ -29,7 +29,8 @@ bool tableSizesMatch(const skybake::BakeContents& contents, const skybake::Atmos
          t.single_rayleigh.texels.size() == texels_4d &&
          t.single_mie.texels.size() == (skybake::bakeStoresSingleMie(group) ? texels_4d : 0) &&
          t.multiple_scattering.texels.size() == texels_4d &&
-         t.multiple_density.texels.size() == (contents.outputs.radiance_to_points ? texels_4d : 0);
+         t.multiple_density.texels.size() ==
+             (contents.outputs.radiance_to_points ? texels_4d / s.scattering_mu * contents.density_view_size : 0);
 }
 
 void expectTableSizes(const skybake::BakeFile& bake) {
