@@ -3,7 +3,6 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 
@@ -54,15 +53,15 @@ std::uintmax_t requireInputFile(const std::filesystem::path& path, const std::st
 }
 
 std::string readInputFile(const std::filesystem::path& path, const std::string& what, std::uintmax_t max_bytes) {
-  requireInputFile(path, what, max_bytes);
+  const std::uintmax_t bytes = requireInputFile(path, what, max_bytes);
   std::ifstream file(path, std::ios::binary);
   if (!file) throwBadInput(fmt::format("{}: cannot open the {}: {}", path.string(), what, std::strerror(errno)));
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  // The size was checked before the read; a file that grew meanwhile is cut
-  // off at the cap rather than read on without end.
-  if (text.size() > max_bytes) {
-    throwBadInput(fmt::format("{}: larger than a {} can be ({} MiB)", path.string(), what, max_bytes >> 20));
-  }
+  // One byte more than the size checked: a file that grew meanwhile (a log
+  // being written) is refused after that many bytes, not read without end.
+  std::string text(static_cast<size_t>(bytes) + 1, '\0');
+  file.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(file.gcount()));
+  if (text.size() > bytes) throwBadInput(fmt::format("{}: grew while it was read", path.string()));
   return text;
 }
 

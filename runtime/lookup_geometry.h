@@ -68,6 +68,14 @@ inline CheckedView checkedView(const glm::dvec3& camera, const glm::dvec3& view_
           lookupDirection(sun_dir, "sun direction")};
 }
 
+// A surface lookup's point, normal and sun direction, each checked as above.
+struct CheckedSurface {
+  glm::dvec3 point, normal, sun_dir;
+};
+inline CheckedSurface checkedSurface(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) {
+  return {lookupPosition(point, "point"), lookupDirection(normal, "normal"), lookupDirection(sun_dir, "sun direction")};
+}
+
 // A shadow length (m) as the lookups take it, or Error(BadInput) for a
 // negative or non-finite one.
 double lookupShadowLength(double shadow_length_m);

@@ -114,9 +114,7 @@ RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, c
 
 Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
                             const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
   requireLookupMoon(moon);
   return sunIrradiance(point, normal, sun_dir) *
          static_cast<float>(moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad));
@@ -124,9 +122,7 @@ Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& nor
 
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
                                     const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
   requireLookupMoon(moon);
   SunAndSkyIrradiance e = irradiance(point, normal, sun_dir);
   const double visible = moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad);

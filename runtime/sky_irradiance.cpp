@@ -27,9 +27,7 @@ SurfacePoint surfacePoint(const AtmosphereDomain& domain, const glm::dvec3& poin
 
 Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
                             const glm::dvec3& sun_dir_given) const {
-  const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
   requireOneLaneGroup("sunIrradiance");
   const SurfacePoint p = surfacePoint(sampler_.domain(), point);
   const double mu_s = clampCosine(glm::dot(p.up, sun_dir));
@@ -40,9 +38,7 @@ Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& nor
 
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
                                     const glm::dvec3& sun_dir_given) const {
-  const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 normal = lookupDirection(normal_given, "normal");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
   requireOneLaneGroup("irradiance");
   if (!outputs().ground_irradiance) {
     throw Error(ErrorKind::BadInput,

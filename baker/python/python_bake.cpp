@@ -23,7 +23,6 @@
 #include "baker/cli/option_checks.h"
 #include "baker/cli/terminal_progress.h"
 #include "baker/python/python_bindings.h"
-#include "baker/stages/openmp_threads.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config.h"
 #include "data_formats/error.h"
