@@ -57,6 +57,21 @@ enum class ChannelKind {
 // bounded: 16 passes of a 3-wavelength bake.
 inline constexpr int kMaxColourWavelengths = 64;
 
+// The span a colour bake's wavelengths must reach: its shortest at most
+// kColourSpanShortest_nm, its longest at least kColourSpanLongest_nm.
+// Beyond its end wavelengths a colour bake holds the end values
+// (runtime/colour/spectral_to_xyz.h), so wavelengths that stop short of
+// the colour-matching functions' lobes make the sky the colour of its end
+// samples: 700 to 780 nm, or a single wavelength, turns a blue sky grey
+// (CIEDE2000 above 20; 700 to 780 nm also makes it 68 % too dark). Between
+// these ends lies at least 90 % of each of xbar, ybar and zbar's integral,
+// and holding the end values beyond them costs a daylight sky (sunlight and
+// Rayleigh-blue skylight, the sun a few degrees up or higher) at most 0.2 % of its luminance
+// and 0.5 CIEDE2000, half a just noticeable difference; 10 nm less at
+// either end breaks the 90 % (tests/runtime/colour_span_test.cpp).
+inline constexpr double kColourSpanShortest_nm = 420.0;
+inline constexpr double kColourSpanLongest_nm = 640.0;
+
 // The most wavelengths a spectral bake (channels.store = "spectral") stores:
 // the colour bake's limit, since both run one pass per 4 wavelengths.
 inline constexpr int kMaxSpectralWavelengths = kMaxColourWavelengths;

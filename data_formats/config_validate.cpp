@@ -1,5 +1,6 @@
 // Physical and practical limits on a config. Each check names the key, the
 // value and why it is refused.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -128,6 +129,23 @@ void checkFloatRange(const Checker& check, const AtmosphereParameters& a) {
   }
 }
 
+// A colour bake's wavelengths reach the colour-matching functions' lobes
+// (kColourSpanShortest_nm, kColourSpanLongest_nm). Checked on configs to
+// bake (those with colour_groups), not on a file's header: a file is read
+// as it was baked.
+void requireColourSpan(const std::vector<double>& wavelengths_nm, const Checker& check) {
+  if (wavelengths_nm.empty()) return;  // refused above with its count
+  const auto [shortest, longest] = std::minmax_element(wavelengths_nm.begin(), wavelengths_nm.end());
+  if (*shortest <= kColourSpanShortest_nm && *longest >= kColourSpanLongest_nm) return;
+  const std::string value = *shortest == *longest ? fmt::format("{} nm (one wavelength)", *shortest)
+                                                  : fmt::format("{} to {} nm", *shortest, *longest);
+  check.fail("channels.wavelengths_nm", value,
+             fmt::format("a colour bake (channels.store = \"cie_xyz\") needs wavelengths from {} nm or "
+                         "shorter to {} nm or longer: beyond its end wavelengths it holds the end values, and "
+                         "narrower wavelengths miss the colour-matching functions and turn the sky grey",
+                         kColourSpanShortest_nm, kColourSpanLongest_nm));
+}
+
 // A colour or spectral bake's passes (BakeConfig::colour_groups), when the
 // config has them (a config read back from a colour file's header has only
 // its X, Y, Z atmosphere): each an ordinary atmosphere of the bake's shape,
@@ -196,6 +214,8 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
       }
     }
   }
+
+  if (a.storesCieXyz() && !config.colour_groups.empty()) requireColourSpan(a.wavelengths_nm, check);
 
   check.range("planet.bottom_radius_m", a.bottom_radius_m, kMinPlanetRadius_m, kMaxPlanetRadius_m);
   check.finite("planet.top_radius_m", a.top_radius_m);

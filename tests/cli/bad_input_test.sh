@@ -137,6 +137,16 @@ config_with 'orders = 3\ntail_estimate = "yes"'
 kept "$work/kept.exr" "c.toml:39: bake.tail_estimate = 'yes': must be true or false" -- bake "$work/c.toml" -o "$work/kept.exr"
 config_with 'orders = "many"'
 kept "$work/kept.exr" "c.toml:38: bake.orders = 'many': must be a whole number or \"auto\"" -- bake "$work/c.toml" -o "$work/kept.exr"
+# A colour bake's wavelengths must span the colour-matching functions: an
+# end short of them would bake a grey sky (data_formats/atmosphere_parameters.h).
+colour_with() {
+  sed -e "s|^wavelengths_nm = .*|wavelengths_nm = $1|" -e "s|\.\./\.\./|$source_dir/|" \
+    "$source_dir/tests/cli/small_earth_colour.toml" >"$work/c.toml"
+}
+colour_with '{ min_nm = 700, max_nm = 780, count = 3 }'
+kept "$work/kept.exr" "c.toml: channels.wavelengths_nm = 700 to 780 nm: a colour bake (channels.store = \"cie_xyz\") needs wavelengths from 420 nm or shorter to 640 nm or longer" -- bake "$work/c.toml" -o "$work/kept.exr"
+colour_with '[550]'
+kept "$work/kept.exr" "c.toml: channels.wavelengths_nm = 550 nm (one wavelength): a colour bake" -- bake "$work/c.toml" -o "$work/kept.exr"
 # Numbers whose products overflow the float tables: the bake used to exit 0,
 # replace the good file and write one its own reader refused. Repeated
 # wavelengths shared one channel of the file.

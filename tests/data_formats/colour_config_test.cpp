@@ -58,8 +58,27 @@ TEST(ColourConfig, UnknownStoreIsRefused) {
 
 TEST(ColourConfig, CombinedSingleMieIsRefused) {
   test::expectConfigRejected(
-      earthWith("wavelengths_nm = [440, 550, 680]\nstore = \"cie_xyz\"") + "[bake]\ncombined_single_mie = true\n",
+      earthWith("wavelengths_nm = [420, 550, 680]\nstore = \"cie_xyz\"") + "[bake]\ncombined_single_mie = true\n",
       {"bake.combined_single_mie", "colour bake"});
+}
+
+// Wavelengths short of the colour-matching functions' lobes would bake a
+// grey sky (kColourSpanShortest_nm, kColourSpanLongest_nm).
+TEST(ColourConfig, WavelengthsThatDoNotSpanTheColourMatchingFunctionsAreRefused) {
+  for (const auto& [wavelengths, value] :
+       {std::pair{"{ min_nm = 700, max_nm = 780, count = 3 }", "700 to 780 nm"},
+        std::pair{"[550]", "550 nm (one wavelength)"}, std::pair{"[430, 550, 680]", "430 to 680 nm"},
+        std::pair{"[420, 550, 630]", "420 to 630 nm"}}) {
+    SCOPED_TRACE(wavelengths);
+    test::expectConfigRejected(
+        earthWith(std::string("wavelengths_nm = ") + wavelengths + "\nstore = \"cie_xyz\""),
+        {"channels.wavelengths_nm", value, "from 420 nm or shorter to 640 nm or longer", "grey"});
+  }
+  // The ends themselves are enough, in any order.
+  const BakeConfig at_the_ends = parseConfig(earthWith("wavelengths_nm = [640, 420]\nstore = \"cie_xyz\""), "c");
+  EXPECT_EQ(at_the_ends.colour_groups.size(), 1u);
+  // A wavelength bake of one wavelength is not a colour and stays allowed.
+  EXPECT_NO_THROW(parseConfig(earthWith("wavelengths_nm = [550]"), "c"));
 }
 
 TEST(ColourConfig, PassesHoldEveryWavelengthsQuantitiesInOrder) {

@@ -88,3 +88,21 @@ def test_a_colour_bake_holds_xyz_and_its_luminance_is_683_y(colour_sky):
 def test_luminance_refuses_the_wrong_number_of_channels(colour_sky):
     with pytest.raises(skybake.BadInput, match="3 channels"):
         colour_sky.luminance(np.ones((4, 5)))
+
+
+def test_a_colour_bake_of_wavelengths_that_miss_the_colour_matching_functions_is_refused(tmp_path):
+    # 700 to 780 nm, or one wavelength, would bake a grey sky: BadInput
+    # naming the key and the span it needs, and an existing output kept.
+    out = tmp_path / "o.exr"
+    out.write_bytes(b"kept")
+    for wavelengths, value in (("{ min_nm = 700, max_nm = 780, count = 3 }", "700 to 780 nm"),
+                               ("[550]", r"550 nm \(one wavelength\)")):
+        config = tmp_path / "c.toml"
+        # Spectra that reach the wavelengths asked for, so that the span is
+        # what is refused.
+        text = COLOUR_CONFIG.replace("[400, 700]", "[380, 780]").replace("[400, 550, 700]", "[380, 550, 780]")
+        config.write_text(text.replace("{ min_nm = 400, max_nm = 700, count = 6 }", wavelengths))
+        with pytest.raises(skybake.BadInput,
+                           match=rf"c\.toml: channels\.wavelengths_nm = {value}: .* from 420 nm or shorter to 640 nm or longer"):
+            skybake.bake(str(config), str(out))
+        assert out.read_bytes() == b"kept"
