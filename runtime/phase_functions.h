@@ -1,46 +1,39 @@
-// Phase functions, sr^-1, normalised to 1 over the sphere: the one definition
-// of each, used by the bake, its density kernel, the lookups (scalar and
-// batch) and the reference solver. nu is the cosine of the scattering angle
+// Phase functions, sr^-1, normalised to 1 over the sphere: the kernel
+// runtime/kernel/phase_functions.glsl in double, the one definition of each
+// that the bake, its density kernel, the lookups (scalar, batch and GLSL)
+// and the reference solver use. nu is the cosine of the scattering angle
 // (between the propagation directions before and after).
 #pragma once
 
 #include <cmath>
 
 #include "data_formats/angles.h"
+#include "data_formats/kernel/kernel_language.h"
 
 namespace skybake {
+namespace kernel {
+#include "runtime/kernel/phase_functions.glsl"
+}  // namespace kernel
 
-// Rayleigh: 3 / (16 pi) (1 + nu^2). The density kernel expands the shape
-// (1 + nu^2) in Fourier modes itself and applies the normalisation after.
-inline constexpr double kRayleighPhaseNormalisation = 3.0 / (16.0 * kPi);
-inline double rayleighPhaseShape(double nu) { return 1.0 + nu * nu; }
-inline double rayleighPhase(double nu) { return kRayleighPhaseNormalisation * rayleighPhaseShape(nu); }
+// Rayleigh: 3 / (16 pi) (1 + nu^2).
+inline constexpr double kRayleighPhaseNormalisation = SKYBAKE_RAYLEIGH_PHASE_NORMALISATION;
+inline constexpr auto& rayleighPhaseShape = kernel::skybakeRayleighPhaseShape;
+inline constexpr auto& rayleighPhase = kernel::skybakeRayleighPhase;
 
-// Cornette-Shanks: Henyey-Greenstein's shape with Rayleigh's (1 + nu^2), a
-// better fit to Mie scattering by haze, with its constants for one g worked
-// out once. |g| < 1 is guaranteed by validation, so the base
-// 1 + g^2 - 2 g nu >= (1 - |g|)^2 > 0.
+// Cornette-Shanks for one g, its normalisation worked out once.
 class CornetteShanksPhase {
  public:
-  explicit CornetteShanksPhase(double g)
-      : g_(g), normalisation_(3.0 / (8.0 * kPi) * (1.0 - g * g) / (2.0 + g * g)), one_plus_g2_(1.0 + g * g) {}
+  explicit CornetteShanksPhase(double g) : g_(g), normalisation_(kernel::skybakeCornetteShanksNormalisation(g)) {}
 
-  double operator()(double nu) const {
-    const double base = one_plus_g2_ - 2.0 * g_ * nu;
-    return normalisation_ * rayleighPhaseShape(nu) / (base * std::sqrt(base));
-  }
+  double operator()(double nu) const { return kernel::skybakeCornetteShanksPhase(g_, normalisation_, nu); }
   // The phase function over its normalisation, for callers that apply it
   // once to many values (the density kernel's Fourier modes).
-  double shape(double nu) const {
-    const double base = one_plus_g2_ - 2.0 * g_ * nu;
-    return rayleighPhaseShape(nu) / (base * std::sqrt(base));
-  }
+  double shape(double nu) const { return kernel::skybakeCornetteShanksShape(g_, nu); }
   double normalisation() const { return normalisation_; }
 
  private:
   double g_;
-  double normalisation_;  // 3 / (8 pi) (1 - g^2) / (2 + g^2)
-  double one_plus_g2_;
+  double normalisation_;
 };
 
 inline double cornetteShanksPhase(double g, double nu) { return CornetteShanksPhase(g)(nu); }

@@ -161,7 +161,6 @@ std::string skyGlslDefines() {
     for (int i = 0; i < kGaussNodes; ++i) list += (i > 0 ? ", " : "") + glslFloat(values[i]);
     return fmt::format("float[{}]({})", kGaussNodes, list);
   };
-  define("SKYBAKE_PI", glslFloat(kPi));
   define("SKYBAKE_MAX_DENSITY_LAYERS", std::to_string(kMaxGlDensityLayers));
   define("SKYBAKE_GAUSS_NODES", std::to_string(kGaussNodes));
   define("SKYBAKE_GAUSS_ABSCISSA", floatArray(kGaussAbscissa));
@@ -171,7 +170,6 @@ std::string skyGlslDefines() {
   define("SKYBAKE_MAX_PIECES_PER_SUBINTERVAL", std::to_string(kMaxPiecesPerSubinterval));
   define("SKYBAKE_GEOMETRIC_BLEND_RATIO", glslFloat(kGeometricBlendRatio));
   define("SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO", glslFloat(kFullyGeometricBlendRatio));
-  define("SKYBAKE_RAYLEIGH_PHASE_NORMALISATION", glslFloat(kRayleighPhaseNormalisation));
   define("SKYBAKE_BROAD_PHASE", glslFloat(MultipleScatteringPhase::kBroad));
   define("SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE", glslFloat(kIntegratedSingleScatteringTopCosine));
   define("SKYBAKE_LOOKUP_SINGLE_SCATTERING_SEGMENTS", std::to_string(kLookupSingleScatteringSegments));

@@ -1,4 +1,4 @@
-// skybake GLSL library, part 6 of 6: the lookups during a solar eclipse
+// skybake GLSL library (README.md gives the files' order): the lookups during a solar eclipse
 // (runtime/sky_eclipse.cpp, eclipse_skylight.cpp; docs/ECLIPSES.md), the
 // same model as the C++: single scattering is the plain lookup's scaled by
 // the ratio of the ray's single-scattering integrals with and without the

@@ -1,7 +1,11 @@
-// skybake GLSL library, part 2 of 6: rays in the atmosphere's shell, the
-// planet's shadow, the sun disk, phase functions and the media. Mirrors
-// runtime/atmosphere_ray.h, data_formats/ray_sphere.h, planet_shadow.h,
-// sun_disk.h, moon_occluder.h, phase_functions.h and atmosphere_media.h.
+// skybake GLSL library (README.md gives the files' order): rays in the
+// atmosphere's shell, the planet's shadow, the sun disk, a moon and the
+// media, with the bake's radii and constants. Mirrors
+// runtime/atmosphere_ray.h, planet_shadow.h, moon_occluder.h and
+// atmosphere_media.h; the shell's geometry itself (clamped cosines,
+// distances to spheres, radius and cosine along a ray), the phase functions
+// and the sun disk's visible fraction are kernel files the C++ shares
+// (data_formats/kernel/, runtime/kernel/), read before this one.
 //
 // The C++ computes in double, this in float, whose resolution at a planet's
 // radius is about half a metre. The formulas are therefore rearranged so
@@ -10,46 +14,8 @@
 // positive terms) where the direct form would cancel, and r^2 - R^2 as
 // (r - R) (r + R), exact in float for r near R.
 
-float skybakeClampCosine(float mu) { return clamp(mu, -1.0, 1.0); }
-
-// sqrt of a quantity >= 0 in exact arithmetic that rounding may leave a tiny
-// negative.
-float skybakeSafeSqrt(float a) { return sqrt(max(a, 0.0)); }
-
-// Distance from radius r along zenith cosine mu to the sphere of radius
-// `radius` >= r that encloses the point.
-float skybakeDistanceToOuterSphere(float r, float mu, float radius) {
-  float q = (radius - r) * (radius + r);
-  float rmu = r * mu;
-  float root = skybakeSafeSqrt(rmu * rmu + q);
-  if (mu < 0.0) return max(root - rmu, 0.0);
-  float denominator = rmu + root;
-  return denominator > 0.0 ? max(q / denominator, 0.0) : 0.0;
-}
-
-// True when the ray (r, mu) from r >= radius hits the sphere of radius `radius`.
-bool skybakeRayIntersectsSphere(float r, float mu, float radius) {
-  float rmu = r * mu;
-  return mu < 0.0 && rmu * rmu - (r - radius) * (r + radius) >= 0.0;
-}
-
-// Distance to the nearer intersection with the sphere below (r >= radius);
-// meaningful where skybakeRayIntersectsSphere.
-float skybakeDistanceToInnerSphere(float r, float mu, float radius) {
-  float q = (r - radius) * (r + radius);
-  float rmu = r * mu;
-  float denominator = skybakeSafeSqrt(rmu * rmu - q) - rmu;
-  return mu < 0.0 && denominator > 0.0 ? max(q / denominator, 0.0) : 0.0;
-}
-
 float skybakeDistanceToAtmosphereEnd(float r, float mu, bool ray_intersects_ground) {
-  return ray_intersects_ground ? skybakeDistanceToInnerSphere(r, mu, skybake_radii_m.x)
-                               : skybakeDistanceToOuterSphere(r, mu, skybake_radii_m.y);
-}
-
-// Zenith cosine of the rays from r tangent to the sphere of radius `radius`.
-float skybakeTangentZenithCosine(float r, float radius) {
-  return -skybakeSafeSqrt((r - radius) * (r + radius)) / r;
+  return skybakeDistanceToAtmosphereEnd(r, mu, skybake_radii_m.x, skybake_radii_m.y, ray_intersects_ground);
 }
 
 // rho: the distance to the horizon from radius r, m.
@@ -58,11 +24,6 @@ float skybakeDistanceToHorizon(float r) {
   return skybakeSafeSqrt((r - bottom) * (r + bottom));
 }
 
-// Radius and zenith cosine at distance d along the ray (r, mu).
-float skybakeRadiusAlongRay(float r, float mu, float d) { return sqrt(max(d * (d + 2.0 * r * mu) + r * r, 0.0)); }
-float skybakeCosineAlongRay(float r, float mu, float d, float r_d) {
-  return r_d > 0.0 ? skybakeClampCosine((r * mu + d) / r_d) : 1.0;
-}
 // The same radius kept in the shell, as every lookup along a ray takes it.
 float skybakeShellRadiusAlongRay(float r, float mu, float d) {
   return clamp(skybakeRadiusAlongRay(r, mu, d), skybake_radii_m.x, skybake_radii_m.y);
@@ -161,14 +122,6 @@ SkybakeShadowCrossings skybakePlanetShadowCrossings(float r, float mu, float mu_
   return out_crossings;
 }
 
-// Fraction of the sun disk above the horizon (runtime/sun_disk.h): `height`
-// of its centre above the horizon and its half-size, both in zenith cosine.
-float skybakeSunDiskVisibleFraction(float height, float half_size) {
-  float t = height > 0.0 ? 1.0 : 0.0;
-  if (half_size > 0.0) t = clamp((height + half_size) / (2.0 * half_size), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 // Whether the unit view direction lies within the sun disk: the chord
 // |view - sun| against the disk edge's, which float resolves where the
 // cosine 0.99999 of a small disk would not.
@@ -252,12 +205,8 @@ float skybakeMoonVisibleSunFractionAt(SkybakeMoonAlongRay along, float t) {
   return skybakeMoonVisibleSunFraction(along.moon, along.origin_m + along.dir * t, along.sun_dir, skybake_radii_m.w);
 }
 
-// Phase functions, sr^-1 (runtime/phase_functions.h).
-float skybakeRayleighPhase(float nu) { return SKYBAKE_RAYLEIGH_PHASE_NORMALISATION * (1.0 + nu * nu); }
-float skybakeCornetteShanksPhase(float g, float normalisation, float nu) {
-  float base = 1.0 + g * g - 2.0 * g * nu;
-  return normalisation * (1.0 + nu * nu) / (base * sqrt(base));
-}
+// The Mie phase of the bake's g (the phase functions are the kernel
+// runtime/kernel/phase_functions.glsl).
 float skybakeMiePhase(float nu) { return skybakeCornetteShanksPhase(skybake_sun_angles.z, skybake_phase.x, nu); }
 
 // Density in [0, 1] of profile 0 (Rayleigh), 1 (Mie) or 2 (absorption) at

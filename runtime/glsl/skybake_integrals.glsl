@@ -1,4 +1,4 @@
-// skybake GLSL library, part 4 of 6: integrals along a ray
+// skybake GLSL library (README.md gives the files' order): integrals along a ray
 // (runtime/ray_quadrature.h, single_scattering_ray.cpp, segment_radiance.cpp):
 // composite 4-point Gauss-Legendre rules whose optically thick sub-intervals
 // are split into pieces, single scattering with the ray cut at the edges of
@@ -102,7 +102,7 @@ void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, boo
     float altitude_m = r_t - bottom;
     float mu_s_t = skybakeClampCosine((r * mu_s + t * nu) / r_t);
     float visible = skybakeSunDiskVisibleFraction(mu_s_t - skybakeTangentZenithCosine(r_t, bottom),
-                                                  bottom / r_t * skybake_radii_m.w);
+                                                  skybakeSunDiskHalfSizeAtHorizon(bottom, r_t, skybake_radii_m.w));
     if (visible <= 0.0) continue;  // in the planet's shadow
     // The sunlight's whole path in one exponential: to the node, then on to
     // the ray's start.

@@ -1,4 +1,4 @@
-// skybake GLSL library, part 1 of 6: what a bake gives the shader.
+// skybake GLSL library (README.md gives the files' order): what a bake gives the shader.
 //
 // The library is these five files concatenated in order (parameters,
 // geometry, tables, integrals, sky), after the defines that

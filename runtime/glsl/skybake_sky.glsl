@@ -1,4 +1,4 @@
-// skybake GLSL library, part 5 of 6: the lookups of skybake::Sky
+// skybake GLSL library (README.md gives the files' order): the lookups of skybake::Sky
 // (runtime/sky.h), same geometry rules, same results up to float
 // arithmetic. Positions in metres from the planet's centre, unit directions.
 //

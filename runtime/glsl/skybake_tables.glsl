@@ -1,4 +1,4 @@
-// skybake GLSL library, part 3 of 6: where a configuration lives in the
+// skybake GLSL library (README.md gives the files' order): where a configuration lives in the
 // tables (data_formats/texture_mapping.h) and the interpolated lookups
 // (runtime/table_sampler.h), the multiple-scattering shape
 // (runtime/multiple_scattering_phase.h) included.
@@ -178,8 +178,9 @@ vec4 skybakeOpticalDepthAlongRay(float r, float mu, float d, bool ray_intersects
 // Transmittance to the sun from radius r, sun zenith cosine mu_s, times the
 // part of the disk above the horizon.
 vec4 skybakeTransmittanceToSun(float r, float mu_s) {
-  float visible = skybakeSunDiskVisibleFraction(mu_s - skybakeTangentZenithCosine(r, skybake_radii_m.x),
-                                                skybake_radii_m.x / r * skybake_radii_m.w);
+  float bottom = skybake_radii_m.x;
+  float visible = skybakeSunDiskVisibleFraction(mu_s - skybakeTangentZenithCosine(r, bottom),
+                                                skybakeSunDiskHalfSizeAtHorizon(bottom, r, skybake_radii_m.w));
   if (visible <= 0.0) return vec4(0.0);
   return exp(-skybakeOpticalDepthToTop(r, mu_s)) * visible;
 }

@@ -1,0 +1,204 @@
+// The kernel files (data_formats/kernel/) compiled as C++ in float, as the
+// shaders evaluate them, against the same text in double, as the CPU
+// runtime and the bake do: the tie between the two that holds on every
+// machine, GPU or not. Inputs are float values, so that the difference is
+// the float arithmetic's alone.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "data_formats/ray_sphere.h"
+#include "runtime/phase_functions.h"
+#include "runtime/sun_disk.h"
+
+// Every kernel file, in float (the order of SKYBAKE_KERNEL_GLSL_FILES).
+namespace kernel_in_float {
+using Real = float;
+using Real3 = glm::vec3;
+#include "data_formats/kernel/kernel_builtins.inc"
+#include "data_formats/kernel/shell_geometry.glsl"
+#include "runtime/kernel/phase_functions.glsl"
+#include "runtime/kernel/sun_disk.glsl"
+}  // namespace kernel_in_float
+
+namespace skybake {
+namespace {
+
+namespace f = kernel_in_float;
+
+// Float's unit roundoff.
+constexpr double kFloatEpsilon = std::numeric_limits<float>::epsilon() / 2.0;
+
+// Earth's shell, and a thin and a thick one (ratios top / bottom of
+// 1.0005 and 2), where the cancellations the kernel avoids are worst and
+// least.
+struct Shell {
+  float bottom_m, top_m;
+};
+constexpr Shell kShells[] = {{6360e3f, 6420e3f}, {6360e3f, 6363e3f}, {1000e3f, 2000e3f}};
+
+// Radii from the ground to the top and zenith cosines from -1 to 1, on
+// grids that include the ends and rays within a few texels of the horizon.
+template <typename Visit>
+void forEachRay(const Shell& s, Visit visit) {
+  constexpr int kRadii = 41, kCosines = 401;
+  for (int i = 0; i < kRadii; ++i) {
+    const float r = s.bottom_m + (s.top_m - s.bottom_m) * static_cast<float>(i) / (kRadii - 1);
+    for (int j = 0; j < kCosines; ++j) {
+      const float mu = -1.0f + 2.0f * static_cast<float>(j) / (kCosines - 1);
+      visit(r, mu);
+    }
+    // Around the horizon, where a distance changes fastest with mu.
+    const float horizon = static_cast<float>(tangentZenithCosine(r, s.bottom_m));
+    for (int k = -20; k <= 20; ++k) visit(r, std::clamp(horizon + 1e-4f * static_cast<float>(k), -1.0f, 1.0f));
+  }
+}
+
+// A distance of the shell in float against double. Its inputs are exact;
+// the float result errs by a few roundoffs of the terms it combines, r |mu|
+// and sqrt(discriminant), and by the error of the discriminant itself
+// ((r mu)^2 +- (R - r)(R + r), a few roundoffs of its two terms), which the
+// square root turns into up to its own square root where the discriminant
+// is near 0: a ray near tangent to the sphere, whose distance there changes
+// by as much for a change of mu by a float roundoff. The factors 8 allow
+// for the rounding of each product and sum on the way.
+double distanceTolerance(double r, double mu, double radius) {
+  const double rmu_squared = r * mu * r * mu, q = (radius - r) * (radius + r);
+  const double discriminant = rmu_squared + q;
+  const double discriminant_error = 8.0 * kFloatEpsilon * (rmu_squared + std::abs(q));
+  const double root = std::sqrt(std::max(discriminant, 0.0));
+  const double root_error =
+      discriminant_error > 0.0 ? discriminant_error / (root + std::sqrt(discriminant_error)) : 0.0;
+  return 8.0 * kFloatEpsilon * (r * std::abs(mu) + root) + root_error;
+}
+
+// Whether the ray's discriminant with the sphere is under a quarter of
+// (r mu)^2: near tangency, where distanceTolerance's square-root term
+// governs.
+bool nearTangent(double r, double mu, double radius) {
+  const double rmu_squared = r * mu * r * mu;
+  return rmu_squared + (radius - r) * (radius + r) < 0.25 * rmu_squared;
+}
+
+TEST(KernelPrecision, ShellDistancesInFloatStayWithinFloatRoundingOfDouble) {
+  for (const Shell& s : kShells) {
+    forEachRay(s, [&](float r, float mu) {
+      SCOPED_TRACE(testing::Message() << "r = " << r << " m, mu = " << mu);
+      const double rd = r, mud = mu;
+      const double to_top = distanceToOuterSphere(rd, mud, s.top_m);
+      EXPECT_NEAR(f::skybakeDistanceToOuterSphere(r, mu, s.top_m), to_top, distanceTolerance(rd, mud, s.top_m));
+      // Away from tangency the forms cancel nothing, so even a short
+      // distance (a camera just below the top looking up) is good to a few
+      // float roundoffs of itself, not of the radius.
+      if (!nearTangent(rd, mud, s.top_m)) {
+        EXPECT_NEAR(f::skybakeDistanceToOuterSphere(r, mu, s.top_m), to_top, 8.0 * kFloatEpsilon * to_top);
+      }
+      const double ground_discriminant = rd * rd * (mud * mud - 1.0) + double(s.bottom_m) * s.bottom_m;
+      const bool hits_ground = rayIntersectsSphere(rd, mud, s.bottom_m);
+      // Where the two disagree on hitting the ground, the ray is tangent
+      // to it within float rounding of the discriminant.
+      if (f::skybakeRayIntersectsSphere(r, mu, s.bottom_m) != hits_ground) {
+        EXPECT_LE(std::abs(ground_discriminant), 8.0 * kFloatEpsilon * rd * rd);
+      } else if (hits_ground) {
+        const double to_ground = distanceToInnerSphere(rd, mud, s.bottom_m);
+        const float to_ground_in_float = f::skybakeDistanceToInnerSphere(r, mu, s.bottom_m);
+        EXPECT_NEAR(to_ground_in_float, to_ground, distanceTolerance(rd, mud, s.bottom_m));
+        if (!nearTangent(rd, mud, s.bottom_m)) {
+          EXPECT_NEAR(to_ground_in_float, to_ground, 8.0 * kFloatEpsilon * to_ground);
+        }
+      }
+      // The horizon's cosine: sqrt((r - R)(r + R)) / r, each factor exact
+      // or a roundoff; the root halves the relative error.
+      EXPECT_NEAR(f::skybakeTangentZenithCosine(r, s.bottom_m), tangentZenithCosine(rd, s.bottom_m),
+                  4.0 * kFloatEpsilon);
+      // Along the ray, at a tenth and at all of its length to the top: the
+      // radius is a root of a sum of radius-squared terms, good to a few
+      // roundoffs of r + d.
+      for (double fraction : {0.1, 1.0}) {
+        const float d = static_cast<float>(fraction * to_top);
+        const double r_d = radiusAlongRay(rd, mud, d);
+        EXPECT_NEAR(f::skybakeRadiusAlongRay(r, mu, d), r_d, 8.0 * kFloatEpsilon * (rd + d));
+        // The cosine there: (r mu + d) / r_d, clamped.
+        EXPECT_NEAR(f::skybakeCosineAlongRay(r, mu, d, static_cast<float>(r_d)), cosineAlongRay(rd, mud, d, r_d),
+                    8.0 * kFloatEpsilon * (rd + d) / r_d);
+      }
+    });
+  }
+}
+
+// The phase functions over every scattering cosine, for Rayleigh and for
+// Cornette-Shanks from isotropic to a strong forward peak. The base
+// 1 + g^2 - 2 g nu of Cornette-Shanks is a difference that cancels toward
+// (1 - g)^2 at nu = 1: its float error is a few roundoffs of its terms,
+// 1 + g^2 + 2 |g nu|, relative to it, and the power 1.5 multiplies that by
+// 1.5; the rest is a few roundoffs.
+TEST(KernelPrecision, PhaseFunctionsInFloatStayWithinFloatRoundingOfDouble) {
+  constexpr int kCosines = 2001;
+  for (int j = 0; j < kCosines; ++j) {
+    const float nu = -1.0f + 2.0f * static_cast<float>(j) / (kCosines - 1);
+    EXPECT_NEAR(f::skybakeRayleighPhase(nu), rayleighPhase(nu), 4.0 * kFloatEpsilon * rayleighPhase(nu));
+    for (float g : {0.0f, 0.3f, -0.5f, 0.76f, 0.9f}) {
+      const CornetteShanksPhase phase(g);
+      const float normalisation = f::skybakeCornetteShanksNormalisation(g);
+      EXPECT_NEAR(normalisation, phase.normalisation(), 8.0 * kFloatEpsilon * phase.normalisation());
+      const double base = 1.0 + double(g) * g - 2.0 * double(g) * nu;
+      const double tolerance =
+          (1.5 * 8.0 * kFloatEpsilon * (1.0 + double(g) * g + 2.0 * std::abs(double(g) * nu)) / base +
+           8.0 * kFloatEpsilon) *
+          phase(nu);
+      EXPECT_NEAR(f::skybakeCornetteShanksPhase(g, normalisation, nu), phase(nu), tolerance) << g << " " << nu;
+      EXPECT_NEAR(f::skybakeCornetteShanksShape(g, nu), phase.shape(nu), tolerance / phase.normalisation());
+    }
+  }
+}
+
+// The sun disk's visible fraction across the horizon, for the Sun's half
+// size at Earth and a point sun. The smooth ramp's slope is at most 1.5 per
+// disk diameter, so a float roundoff of height + half_size moves it by
+// 1.5 roundoffs of that sum over the diameter.
+TEST(KernelPrecision, SunDiskInFloatStaysWithinFloatRoundingOfDouble) {
+  for (float half_size : {0.0f, 0.004675f, 0.05f}) {
+    for (int i = -100; i <= 100; ++i) {
+      const float height = 0.0001f * static_cast<float>(i);
+      const double ramp_error =
+          half_size > 0.0f ? 1.5 * 4.0 * kFloatEpsilon * (std::abs(height) + half_size) / (2.0 * half_size) : 0.0;
+      EXPECT_NEAR(f::skybakeSunDiskVisibleFraction(height, half_size), sunDiskVisibleFraction(height, half_size),
+                  ramp_error + 4.0 * kFloatEpsilon)
+          << height << " " << half_size;
+    }
+  }
+  EXPECT_NEAR(f::skybakeSunDiskHalfSizeAtHorizon(6360e3f, 6420e3f, 0.004675f),
+              sunDiskHalfSizeAtHorizon(6360e3, 6420e3, 0.004675f), 4.0 * kFloatEpsilon * 0.004675);
+}
+
+// The kernel's cancellation-free forms in double against the textbook
+// forms in double: the same numbers to double rounding of the
+// radius-squared terms, so the CPU's results moved by rounding only.
+TEST(KernelPrecision, ShellDistancesInDoubleAreTheTextbookForms) {
+  constexpr double kDoubleEpsilon = std::numeric_limits<double>::epsilon() / 2.0;
+  for (const Shell& s : kShells) {
+    forEachRay(s, [&](float r, float mu) {
+      const double rd = r, mud = mu, top = s.top_m, bottom = s.bottom_m;
+      const double top_discriminant = rd * rd * (mud * mud - 1.0) + top * top;
+      const double textbook_to_top = std::max(-rd * mud + std::sqrt(std::max(top_discriminant, 0.0)), 0.0);
+      // The textbook form's own error: roundoffs of the r^2-sized terms
+      // through the root, as distanceTolerance reasons in float.
+      const double terms = rd * std::abs(mud) + std::sqrt(std::max(top_discriminant, 0.0));
+      const double discriminant_error = 8.0 * kDoubleEpsilon * rd * rd;
+      const double tolerance =
+          8.0 * kDoubleEpsilon * terms + discriminant_error / (terms + std::sqrt(discriminant_error));
+      EXPECT_NEAR(distanceToOuterSphere(rd, mud, top), textbook_to_top, tolerance) << r << " " << mu;
+      EXPECT_NEAR(tangentZenithCosine(rd, bottom), -std::sqrt(std::max(1.0 - (bottom / rd) * (bottom / rd), 0.0)),
+                  1e-7)  // the textbook form's 1 - x^2 loses half the digits near the ground: sqrt(eps)
+          << r;
+    });
+  }
+}
+
+}  // namespace
+}  // namespace skybake
