@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Every command in README.md's sh code blocks, run as a newcomer would run
+# it from the repository's root, so that the README's commands work as
+# written. Bakes run at small table sizes: the built-in Earth is
+# tests/cli/small_earth.toml (the same atmosphere at tiny sizes) and each
+# preset a copy of itself with the same small [resolution]; validate
+# computes its reference with few paths and no cache. A few commands are
+# covered by tests of their own or are not tests at all; each is named
+# below with the reason, and a README line that matches no rule fails.
+# Usage: readme_commands_test.sh SKYBAKE_BINARY SOURCE_DIR
+set -u
+skybake=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+fail() { echo "readme_commands: FAIL: $*"; failed=$((failed + 1)); }
+
+# The tree a command sees: build/baker/skybake, the presets at small sizes,
+# the scripts, a query file for `lookup`, and out/earth.exr as run.sh
+# leaves it.
+mkdir -p "$work/build/baker" "$work/data_formats" "$work/out"
+ln -s "$skybake" "$work/build/baker/skybake"
+cp -r "$source_dir/data_formats/presets" "$work/data_formats/presets"
+small_resolution=$(sed -n '/^\[resolution\]/,/^$/p' "$source_dir/tests/cli/small_earth.toml")
+for preset in "$work"/data_formats/presets/*.toml; do
+  # The preset's own [resolution] table, if any, out; the small one in.
+  awk '/^\[/ {skip = ($0 == "[resolution]")} !skip' "$preset" >"$preset.tmp"
+  printf '\n%s\n' "$small_resolution" >>"$preset.tmp"
+  mv "$preset.tmp" "$preset"
+done
+printf 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n0,30,60,90\n1000,85,88,0\n' >"$work/q.csv"
+"$skybake" bake "$source_dir/tests/cli/small_earth.toml" -o "$work/out/earth.exr" >/dev/null 2>&1 ||
+  { echo "readme_commands: cannot bake the small Earth"; exit 1; }
+
+# The command lines of the sh blocks, comments stripped.
+mapfile -t commands < <(awk '/^```sh$/ {inside = 1; next} /^```/ {inside = 0} inside' "$source_dir/README.md" |
+  sed -e 's/[[:space:]]\+#.*$//' -e '/^[[:space:]]*$/d')
+[ "${#commands[@]}" -ge 10 ] || { echo "readme_commands: only ${#commands[@]} commands found in README.md"; exit 1; }
+
+for line in "${commands[@]}"; do
+  read -ra words <<<"$line"
+  case "$line" in
+    "bash scripts/run.sh" | "bash scripts/test.sh")
+      # The README's two commands: test.sh is this suite (CI runs it), and
+      # run.sh installs packages; its bake and preview are the steps below.
+      bash -n "$source_dir/${words[1]}" || fail "$line: does not parse"
+      continue ;;
+    "bash scripts/bench_"*)
+      # Benchmarks time the machine; they are run by hand, not in tests.
+      bash -n "$source_dir/${words[1]}" || fail "$line: does not parse"
+      continue ;;
+    "PYTHONPATH=build/python /usr/bin/python3 scripts/examples/aerosol_sky.py"*)
+      # CTest's example_aerosol_sky runs this script at tiny sizes.
+      [ -f "$source_dir/scripts/examples/aerosol_sky.py" ] || fail "$line: no such script"
+      continue ;;
+    "build/baker/skybake bake -o "*)
+      # The built-in Earth, at small sizes.
+      words=("${words[0]}" bake "$source_dir/tests/cli/small_earth.toml" "${words[@]:2}") ;;
+    "build/baker/skybake bake data_formats/presets/"*) ;;
+    "build/baker/skybake validate "*)
+      words+=(--reference-samples 64 --no-cache) ;;
+    "build/baker/skybake "*) ;;
+    *)
+      fail "README.md: '$line' matches no rule of this test; add one"
+      continue ;;
+  esac
+  if (cd "$work" && "${words[@]}" >"$work/stdout" 2>"$work/stderr"); then
+    passed=$((passed + 1))
+  else
+    fail "$line: exit $?: $(tail -3 "$work/stderr")"
+  fi
+done
+
+echo "readme_commands: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
