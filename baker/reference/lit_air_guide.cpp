@@ -1,4 +1,5 @@
 #include "baker/reference/lit_air_guide.h"
+#include "data_formats/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,7 +78,7 @@ struct LitAirGuide::Cell {
   glm::dvec3 binCentre(int i, int j) const {
     const double elevation = elevationAt(w_low + (i + 0.5) * w_step);
     const double azimuth = (j + 0.5) * azimuthBinWidth();
-    return {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
+    return directionFromElevationAzimuth(elevation, azimuth);
   }
 };
 
@@ -146,7 +147,7 @@ void LitAirGuide::computeOnceScattered(Cell& cell, int altitude_index, int sun_i
   const double r = a_.bottom_radius_m + height * std::pow(double(altitude_index) / (kAltitudeNodes - 1), 2);
   const double sun_zenith = (kFirstSunZenith_deg + sun_index * kSunZenithStep_deg) * kPi / 180.0;
   cell.point = glm::dvec3(0.0, 0.0, r);
-  cell.sun = glm::dvec3(std::sin(sun_zenith), 0.0, std::cos(sun_zenith));
+  cell.sun = directionFromZenithAzimuth(sun_zenith, 0.0);
   cell.horizon_elevation = -std::acos(std::min(a_.bottom_radius_m / r, 1.0));
   cell.w_low = std::asinh((-0.5 * kPi - cell.horizon_elevation) / kHorizonScale_rad);
   cell.w_step = (std::asinh((0.5 * kPi - cell.horizon_elevation) / kHorizonScale_rad) - cell.w_low) / kElevationBins;

@@ -33,11 +33,6 @@ Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec
 
 }  // namespace
 
-glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad) {
-  return {std::sin(zenith_rad) * std::cos(azimuth_rad), std::sin(zenith_rad) * std::sin(azimuth_rad),
-          std::cos(zenith_rad)};
-}
-
 glm::dvec3 sunDirection(const SkyView& v) {
   return directionFromZenithAzimuth(radiansFromDegrees(v.sun_zenith_deg), radiansFromDegrees(v.sun_azimuth_deg));
 }
@@ -57,7 +52,7 @@ PerspectiveFrame perspectiveFrame(const SkyView& v) {
   const double azimuth = radiansFromDegrees(v.view_azimuth_deg);
   const double elevation = radiansFromDegrees(v.view_elevation_deg);
   PerspectiveFrame f;
-  f.forward = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
+  f.forward = directionFromElevationAzimuth(elevation, azimuth);
   f.right = glm::normalize(glm::cross(f.forward, glm::dvec3(0.0, 0.0, 1.0)));
   f.up = glm::cross(f.right, f.forward);
   f.half_width = std::tan(radiansFromDegrees(v.fov_deg) * 0.5);

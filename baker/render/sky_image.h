@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "data_formats/angles.h"
 #include "runtime/sky.h"
 
 namespace skybake {
@@ -47,9 +48,6 @@ struct SpectralImage {
   float* pixel(int x, int y) { return &radiance[(static_cast<size_t>(y) * width + x) * channels]; }
   const float* pixel(int x, int y) const { return &radiance[(static_cast<size_t>(y) * width + x) * channels]; }
 };
-
-// The unit vector at `zenith_rad` from +z and `azimuth_rad` from +x toward +y.
-glm::dvec3 directionFromZenithAzimuth(double zenith_rad, double azimuth_rad);
 
 // The sun's direction in a view's frame (its zenith and azimuth angles).
 glm::dvec3 sunDirection(const SkyView& view);

@@ -35,6 +35,7 @@
 //    side (the tables clamped, as lookups were before the continuation) as
 //    an upper bound.
 #include "baker/stress/energy_budget.h"
+#include "data_formats/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -106,7 +107,7 @@ LookupSum integrateOnPanels(const GaussLegendreRule& rule, const std::vector<dou
 }
 
 // Unit vector toward a sun at zenith cosine mu_s above a point on the +z axis.
-glm::dvec3 sunDirection(double mu_s) { return {safeSqrt(1.0 - mu_s * mu_s), 0.0, mu_s}; }
+glm::dvec3 sunDirection(double mu_s) { return directionFromZenithCosineAzimuth(mu_s, 0.0); }
 
 // Zenith cosine of the ray from radius r tangent to the ground (< 0).
 double groundHorizonCosine(double bottom_m, double r_m) { return -safeSqrt(1.0 - (bottom_m / r_m) * (bottom_m / r_m)); }

@@ -1,4 +1,5 @@
 #include "baker/stress/lookup_invariants.h"
+#include "data_formats/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,10 +54,9 @@ std::vector<double> sunZenithAngles(const AtmosphereParameters& a) {
 }
 
 glm::dvec3 direction(double zenith_cosine, double azimuth_rad) {
-  const double s = safeSqrt(1.0 - zenith_cosine * zenith_cosine);
-  return {s * std::cos(azimuth_rad), s * std::sin(azimuth_rad), zenith_cosine};
+  return directionFromZenithCosineAzimuth(zenith_cosine, azimuth_rad);
 }
-glm::dvec3 sunDirection(double zenith_rad) { return {std::sin(zenith_rad), 0.0, std::cos(zenith_rad)}; }
+glm::dvec3 sunDirection(double zenith_rad) { return directionFromZenithAzimuth(zenith_rad, 0.0); }
 
 // Length of the ray inside the atmosphere from the camera (or, for a ray that
 // misses it, a length across it): where the transmittance samples go.

@@ -13,9 +13,7 @@
 namespace skybake {
 
 inline glm::dvec3 directionFromZenithAzimuthDeg(double zenith_deg, double azimuth_deg) {
-  const double t = radiansFromDegrees(zenith_deg);
-  const double p = radiansFromDegrees(azimuth_deg);
-  return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+  return directionFromZenithAzimuth(radiansFromDegrees(zenith_deg), radiansFromDegrees(azimuth_deg));
 }
 
 // The point at `altitude_m` above the +z pole. One below the ground is on

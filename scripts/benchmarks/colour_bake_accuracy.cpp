@@ -58,8 +58,7 @@ struct Errors {
 };
 
 glm::dvec3 direction(double zenith_deg, double azimuth_deg) {
-  const double z = radiansFromDegrees(zenith_deg), a = radiansFromDegrees(azimuth_deg);
-  return {std::sin(z) * std::cos(a), std::sin(z) * std::sin(a), std::cos(z)};
+  return directionFromZenithAzimuth(radiansFromDegrees(zenith_deg), radiansFromDegrees(azimuth_deg));
 }
 
 class Comparison {
