@@ -90,7 +90,9 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   b.radii_m[0] = static_cast<float>(d.bottom_radius_m);
   b.radii_m[1] = static_cast<float>(d.top_radius_m);
   b.radii_m[2] = static_cast<float>(d.horizonToTopDistance());
-  b.radii_m[3] = static_cast<float>(a.sun_angular_radius_rad);
+  b.sun_disk[0] = static_cast<float>(a.sun_angular_radius_rad);
+  const double half_chord = std::sin(0.5 * a.sun_angular_radius_rad);
+  b.sun_disk[1] = static_cast<float>(4.0 * half_chord * half_chord);
   b.scattering_domain[0] = static_cast<float>(d.scattering_rho_min_m);
   b.scattering_domain[1] = static_cast<float>(d.scattering_rho_max_m);
   b.scattering_domain[2] = static_cast<float>(mu_s_coord.coord_min);
@@ -104,14 +106,12 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   b.mu_s_below[2] = static_cast<float>(unit.inverse_mu_s_min);
   b.mu_s_below[3] = static_cast<float>(kSunAxisHorizonSpacing);
   // As Sky's constructor derives its baked sun range.
-  b.sun_angles[0] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_max_deg)));
-  b.sun_angles[1] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_min_deg)));
-  b.sun_angles[2] = static_cast<float>(a.mie_phase_g);
-  b.sun_angles[3] = static_cast<float>(shape.g());
-  b.phase[0] = static_cast<float>(mie_phase.normalisation());
-  b.phase[1] = static_cast<float>(multiple_peak.normalisation());
-  const double half_chord = std::sin(0.5 * a.sun_angular_radius_rad);
-  b.phase[2] = static_cast<float>(4.0 * half_chord * half_chord);
+  b.baked_sun_cosines[0] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_max_deg)));
+  b.baked_sun_cosines[1] = static_cast<float>(std::cos(radiansFromDegrees(ranges.sun_zenith_min_deg)));
+  b.phase[0] = static_cast<float>(a.mie_phase_g);
+  b.phase[1] = static_cast<float>(shape.g());
+  b.phase[2] = static_cast<float>(mie_phase.normalisation());
+  b.phase[3] = static_cast<float>(multiple_peak.normalisation());
   b.scattering_size[0] = s.scattering_r;
   b.scattering_size[1] = s.scattering_mu;
   b.scattering_size[2] = s.scattering_mu_s;

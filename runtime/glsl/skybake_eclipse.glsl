@@ -23,7 +23,7 @@ bool skybakeMoonHidesSunNear(vec3 point_m, vec3 sun_dir, SkybakeMoon moon) {
   float parallax_rad = reach_m / (distance_m - reach_m);
   float moon_radius_rad = asin(min(moon.radius_m / (distance_m - reach_m), 1.0));
   float separation_rad = atan(length(cross(to_moon, sun_dir)), dot(to_moon, sun_dir));
-  return separation_rad < skybake_radii_m.w + moon_radius_rad + parallax_rad;
+  return separation_rad < skybake_sun_disk.x + moon_radius_rad + parallax_rad;
 }
 
 // F per channel for the neighbourhood of `point_m` (eclipseSkylightFraction,
@@ -37,7 +37,7 @@ vec4 skybakeEclipseSkylightFraction(vec3 point_m, vec3 sun_dir, SkybakeMoon moon
   if (!(moon.radius_m > 0.0)) return vec4(1.0);
   float bottom = skybake_radii_m.x;
   float top = skybake_radii_m.y;
-  float alpha = skybake_radii_m.w;
+  float alpha = skybake_sun_disk.x;
   float len = length(point_m);
   float r = clamp(len, bottom, top);
   vec3 up = len > 0.0 ? point_m / len : vec3(0.0, 0.0, 1.0);
@@ -188,7 +188,7 @@ vec4 skybakeEclipsedSkyIrradianceShare(vec3 point_m, vec3 sun_dir, SkybakeMoon m
 // The plain irradiance `e` at point_m under the eclipse.
 SkybakeSunAndSkyIrradiance skybakeEclipsedIrradiance(SkybakeSunAndSkyIrradiance e, vec3 point_m, vec3 sun_dir,
                                                      SkybakeMoon moon) {
-  e.sun *= skybakeMoonVisibleSunFraction(moon, point_m, sun_dir, skybake_radii_m.w);
+  e.sun *= skybakeMoonVisibleSunFraction(moon, point_m, sun_dir, skybake_sun_disk.x);
   if (skybakeMoonHidesSunNear(point_m, sun_dir, moon)) e.sky *= skybakeEclipsedSkyIrradianceShare(point_m, sun_dir, moon);
   return e;
 }

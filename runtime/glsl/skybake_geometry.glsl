@@ -127,7 +127,7 @@ SkybakeShadowCrossings skybakePlanetShadowCrossings(float r, float mu, float mu_
 // cosine 0.99999 of a small disk would not.
 bool skybakeInSunDisk(vec3 view_dir, vec3 sun_dir) {
   vec3 chord = view_dir - sun_dir;
-  return dot(chord, chord) < skybake_phase.z;
+  return dot(chord, chord) < skybake_sun_disk.y;
 }
 
 // ---- a moon before the sun (runtime/moon_occluder.h) ----
@@ -202,12 +202,12 @@ struct SkybakeMoonAlongRay {
 };
 
 float skybakeMoonVisibleSunFractionAt(SkybakeMoonAlongRay along, float t) {
-  return skybakeMoonVisibleSunFraction(along.moon, along.origin_m + along.dir * t, along.sun_dir, skybake_radii_m.w);
+  return skybakeMoonVisibleSunFraction(along.moon, along.origin_m + along.dir * t, along.sun_dir, skybake_sun_disk.x);
 }
 
 // The Mie phase of the bake's g (the phase functions are the kernel
 // runtime/kernel/phase_functions.glsl).
-float skybakeMiePhase(float nu) { return skybakeCornetteShanksPhase(skybake_sun_angles.z, skybake_phase.x, nu); }
+float skybakeMiePhase(float nu) { return skybakeCornetteShanksPhase(skybake_phase.x, skybake_phase.z, nu); }
 
 // Density in [0, 1] of profile 0 (Rayleigh), 1 (Mie) or 2 (absorption) at
 // an altitude (runtime/density_profile.h).

@@ -102,7 +102,7 @@ void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, boo
     float altitude_m = r_t - bottom;
     float mu_s_t = skybakeClampCosine((r * mu_s + t * nu) / r_t);
     float visible = skybakeSunDiskVisibleFraction(mu_s_t - skybakeTangentZenithCosine(r_t, bottom),
-                                                  skybakeSunDiskHalfSizeAtHorizon(bottom, r_t, skybake_radii_m.w));
+                                                  skybakeSunDiskHalfSizeAtHorizon(bottom, r_t, skybake_sun_disk.x));
     if (visible <= 0.0) continue;  // in the planet's shadow
     // The sunlight's whole path in one exponential: to the node, then on to
     // the ray's start.

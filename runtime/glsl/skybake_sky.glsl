@@ -14,7 +14,7 @@ float skybakeIntegratedSingleScatteringWeight(float mu_s) {
 }
 
 // A sun outside the baked sun angles moved to the nearest (Sky::withBakedSun).
-float skybakeBakedMuS(float mu_s) { return clamp(mu_s, skybake_sun_angles.x, skybake_sun_angles.y); }
+float skybakeBakedMuS(float mu_s) { return clamp(mu_s, skybake_baked_sun_cosines.x, skybake_baked_sun_cosines.y); }
 
 // Blends single scattering from the tables (`s`) with the integral along
 // the ray, by the weight of the baked sun (Sky::singleScattering).

@@ -180,7 +180,7 @@ vec4 skybakeOpticalDepthAlongRay(float r, float mu, float d, bool ray_intersects
 vec4 skybakeTransmittanceToSun(float r, float mu_s) {
   float bottom = skybake_radii_m.x;
   float visible = skybakeSunDiskVisibleFraction(mu_s - skybakeTangentZenithCosine(r, bottom),
-                                                skybakeSunDiskHalfSizeAtHorizon(bottom, r, skybake_radii_m.w));
+                                                skybakeSunDiskHalfSizeAtHorizon(bottom, r, skybake_sun_disk.x));
   if (visible <= 0.0) return vec4(0.0);
   return exp(-skybakeOpticalDepthToTop(r, mu_s)) * visible;
 }
@@ -337,7 +337,7 @@ vec4 skybakeMultipleShapeWithPeak(vec4 peak_weight, float peak) {
   return vec4(SKYBAKE_BROAD_PHASE) + peak_weight * (peak - SKYBAKE_BROAD_PHASE);
 }
 
-float skybakeMultiplePeak(float nu) { return skybakeCornetteShanksPhase(skybake_sun_angles.w, skybake_phase.y, nu); }
+float skybakeMultiplePeak(float nu) { return skybakeCornetteShanksPhase(skybake_phase.y, skybake_phase.w, nu); }
 
 vec4 skybakeMultipleShape(float altitude_m, float nu) {
   return skybakeMultipleShapeWithPeak(skybakeMultiplePeakWeight(altitude_m), skybakeMultiplePeak(nu));

@@ -142,7 +142,7 @@ void main() {
     // fraction there, and whether the view direction from it sees the sun
     // disk past the moon.
     if (kind == 9) first = skybakeEclipseSkylight(qa.xyz, qc.xyz, moon);
-    second = vec4(skybakeMoonVisibleSunFraction(moon, qa.xyz, qc.xyz, skybake_radii_m.w),
+    second = vec4(skybakeMoonVisibleSunFraction(moon, qa.xyz, qc.xyz, skybake_sun_disk.x),
                   skybakeInSunDiskPastMoon(qa.xyz, qb.xyz, qc.xyz, moon) ? 1.0 : 0.0, 0.0, 0.0);
   }
 }
