@@ -10,6 +10,9 @@
 #include "data_formats/ray_sphere.h"
 
 namespace skybake {
+namespace kernel {
+#include "runtime/kernel/atmosphere_entry.glsl"
+}  // namespace kernel
 
 struct AtmosphereRay {
   bool inside = false;  // false: the ray misses the atmosphere
@@ -23,37 +26,22 @@ struct AtmosphereRay {
 };
 
 // The ray from `start` along unit `dir`, limited to `max_length` (<= 0: none).
-// A start below the ground is put on the ground directly above.
+// A start below the ground is put on the ground directly above; one in space
+// is moved to where the ray enters (the kernel
+// runtime/kernel/atmosphere_entry.glsl, which the shaders share).
 inline AtmosphereRay atmosphereRay(double bottom, double top, glm::dvec3 start, const glm::dvec3& dir,
                                    double max_length) {
   AtmosphereRay ray;
-  double r = glm::length(start);
-  if (r < bottom) {
-    start = r > 0.0 ? start * (bottom / r) : glm::dvec3(0.0, 0.0, bottom);
-    r = bottom;
-  }
-  double rmu = glm::dot(start, dir);
-  if (r > top) {
-    // top^2 minus the squared distance of the ray's line from the centre,
-    // taken from the line's point nearest the centre: rmu^2 - r^2 + top^2
-    // cancels for a far camera (at 1e12 m rmu^2 and r^2 are 1e24, rounded
-    // by 1e8 m^2, an error of 14 km along a grazing ray).
-    const glm::dvec3 nearest = start - dir * rmu;
-    const double discriminant = top * top - glm::dot(nearest, nearest);
-    const double entry = -rmu - safeSqrt(discriminant);
-    if (discriminant < 0.0 || entry < 0.0) return ray;
-    start += dir * entry;
-    ray.moved = entry;
-    r = top;
-    rmu += entry;
-  }
+  const kernel::SkybakeRay entered = kernel::skybakeEnterAtmosphere(bottom, top, start, dir);
+  if (!entered.inside) return ray;
   ray.inside = true;
-  ray.origin = start;
+  ray.origin = entered.origin;
   ray.dir = dir;
-  ray.r = r;
-  ray.mu = clampCosine(rmu / r);
-  ray.ends_on_ground = rayIntersectsSphere(r, ray.mu, bottom);
-  ray.length = distanceToAtmosphereEnd(r, ray.mu, bottom, top, ray.ends_on_ground);
+  ray.r = entered.r;
+  ray.mu = entered.mu;
+  ray.length = entered.length_m;
+  ray.ends_on_ground = entered.ends_on_ground;
+  ray.moved = entered.moved_m;
   if (max_length > 0.0) {
     const double limit = max_length - ray.moved;
     if (limit <= 0.0) {

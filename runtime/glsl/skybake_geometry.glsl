@@ -29,48 +29,10 @@ float skybakeShellRadiusAlongRay(float r, float mu, float d) {
   return clamp(skybakeRadiusAlongRay(r, mu, d), skybake_radii_m.x, skybake_radii_m.y);
 }
 
-// A ray in the shell (runtime/atmosphere_ray.h): a start in space moved to
-// where the ray enters the atmosphere, one below the ground put on the
-// ground directly above.
-struct SkybakeRay {
-  bool inside;  // false: the ray misses the atmosphere
-  vec3 origin;  // in the atmosphere, m from the planet's centre
-  float r;      // |origin|, m
-  float mu;     // zenith cosine of the direction at origin
-  float length_m;  // to the ground or the top
-  bool ends_on_ground;
-  float moved_m;  // from the given start to origin
-};
-
+// A ray in the shell with the bake's radii (the kernel
+// runtime/kernel/atmosphere_entry.glsl, read before this file).
 SkybakeRay skybakeEnterAtmosphere(vec3 start, vec3 dir) {
-  float bottom = skybake_radii_m.x;
-  float top = skybake_radii_m.y;
-  SkybakeRay ray = SkybakeRay(false, start, 0.0, 0.0, 0.0, false, 0.0);
-  float r = length(start);
-  if (r < bottom) {
-    start = r > 0.0 ? start * (bottom / r) : vec3(0.0, 0.0, bottom);
-    r = bottom;
-  }
-  float rmu = dot(start, dir);
-  if (r > top) {
-    float q = (r - top) * (r + top);
-    float discriminant = rmu * rmu - q;
-    // Entering needs the ray to point inward (rmu < 0); the distance written
-    // without the cancellation of -rmu - sqrt(discriminant).
-    if (discriminant < 0.0 || !(rmu < 0.0)) return ray;
-    float entry = q / (skybakeSafeSqrt(discriminant) - rmu);
-    start += dir * entry;
-    ray.moved_m = entry;
-    r = top;
-    rmu += entry;
-  }
-  ray.inside = true;
-  ray.origin = start;
-  ray.r = r;
-  ray.mu = skybakeClampCosine(rmu / r);
-  ray.ends_on_ground = skybakeRayIntersectsSphere(r, ray.mu, bottom);
-  ray.length_m = skybakeDistanceToAtmosphereEnd(r, ray.mu, ray.ends_on_ground);
-  return ray;
+  return skybakeEnterAtmosphere(skybake_radii_m.x, skybake_radii_m.y, start, dir);
 }
 
 // Where the ray (r, mu) with the sun at (mu_s, nu) crosses the edge of the

@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/ray_sphere.h"
+#include "runtime/atmosphere_ray.h"
 #include "runtime/phase_functions.h"
 #include "runtime/sun_disk.h"
 
@@ -22,6 +23,7 @@ using Real = float;
 using Real3 = glm::vec3;
 #include "data_formats/kernel/kernel_builtins.inc"
 #include "data_formats/kernel/shell_geometry.glsl"
+#include "runtime/kernel/atmosphere_entry.glsl"
 #include "runtime/kernel/phase_functions.glsl"
 #include "runtime/kernel/sun_disk.glsl"
 }  // namespace kernel_in_float
@@ -129,6 +131,44 @@ TEST(KernelPrecision, ShellDistancesInFloatStayWithinFloatRoundingOfDouble) {
       }
     });
   }
+}
+
+// Entering the atmosphere from cameras on the ground, in it and in space
+// (to geostationary distance), along directions from the zenith to the
+// nadir. Away from tangency (to the top, where the ray enters, and to the
+// sphere it ends on) every step is well conditioned: the start's float
+// position errs by a roundoff of |start|, the entry point by a few of
+// them, and the remaining length by a few roundoffs of itself plus the
+// entry's error over a cosine of at least 1/2. Near tangency the ray may
+// miss in one precision and graze in the other, which
+// ShellDistancesInFloatStayWithinFloatRoundingOfDouble bounds.
+TEST(KernelPrecision, EnteringTheAtmosphereInFloatStaysWithinFloatRoundingOfDouble) {
+  const Shell earth = kShells[0];
+  int entered = 0;
+  for (float altitude_m : {0.0f, 2000.0f, 30e3f, 100e3f, 1000e3f, 35786e3f}) {
+    const glm::vec3 start(0.0f, 0.0f, earth.bottom_m + altitude_m);
+    for (int j = 0; j <= 400; ++j) {
+      const float mu = -1.0f + 2.0f * static_cast<float>(j) / 400.0f;
+      const glm::vec3 dir(std::sqrt(std::max(0.0f, 1.0f - mu * mu)), 0.0f, mu);
+      const f::SkybakeRay in_float = f::skybakeEnterAtmosphere(earth.bottom_m, earth.top_m, start, dir);
+      const AtmosphereRay in_double =
+          atmosphereRay(earth.bottom_m, earth.top_m, glm::dvec3(start), glm::dvec3(dir), 0.0);
+      const double r = start.z;
+      if (nearTangent(r, mu, earth.top_m) || nearTangent(r, mu, earth.bottom_m)) continue;
+      SCOPED_TRACE(testing::Message() << "altitude " << altitude_m << " m, mu = " << mu);
+      ASSERT_EQ(in_float.inside, in_double.inside);
+      if (!in_double.inside) continue;
+      ++entered;
+      EXPECT_EQ(in_float.ends_on_ground, in_double.ends_on_ground);
+      const double scale = r + in_double.moved + in_double.length;
+      EXPECT_NEAR(in_float.moved_m, in_double.moved, 8.0 * kFloatEpsilon * scale);
+      EXPECT_NEAR(in_float.r, in_double.r, 8.0 * kFloatEpsilon * r);
+      EXPECT_NEAR(in_float.length_m, in_double.length, 32.0 * kFloatEpsilon * scale);
+    }
+  }
+  // 1391 of the 2406 rays enter away from tangency; the rest miss (most of
+  // the sky seen from geostationary distance) or graze.
+  EXPECT_GT(entered, 1300);
 }
 
 // The phase functions over every scattering cosine, for Rayleigh and for
