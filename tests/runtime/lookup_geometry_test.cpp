@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -69,6 +70,16 @@ void expectPhysical(const Spectrum& value, bool transmittance, const char* what)
   }
 }
 
+// The same for a path's radiance and transmittance, and for irradiance.
+void expectPhysical(const RadianceAndTransmittance& v, const std::string& what) {
+  expectPhysical(v.radiance, false, (what + " radiance").c_str());
+  expectPhysical(v.transmittance, true, (what + " transmittance").c_str());
+}
+void expectPhysical(const SunAndSkyIrradiance& e, const std::string& what) {
+  expectPhysical(e.sun, false, (what + " sun").c_str());
+  expectPhysical(e.sky, false, (what + " sky").c_str());
+}
+
 // Runs `lookup`; expects BadInput exactly when `refused`, otherwise no throw.
 void expectContract(bool refused, const std::function<void()>& lookup, const char* what) {
   if (refused) {
@@ -104,46 +115,28 @@ TEST(LookupGeometry, HostileGeometryGivesBadInputOrPhysicalResultsInEveryLookup)
     expectContract(
         bad_camera || refusedDirection(view) || refusedDirection(sun),
         [&] {
-          const RadianceAndTransmittance v = sky.skyRadiance(camera, view, sun);
-          expectPhysical(v.radiance, false, "skyRadiance radiance");
-          expectPhysical(v.transmittance, true, "skyRadiance transmittance");
+          expectPhysical(sky.skyRadiance(camera, view, sun), "skyRadiance");
           const RadianceAndTransmittance received = sky.receivedRadiance(camera, view, sun);
           expectPhysical(received.radiance, false, "receivedRadiance");
         },
         "skyRadiance");
     expectContract(
         bad_camera || refusedDirection(view) || refusedDirection(sun) || bad_moon,
-        [&] {
-          const RadianceAndTransmittance v = sky.skyRadiance(camera, view, sun, moon);
-          expectPhysical(v.radiance, false, "eclipse skyRadiance");
-          expectPhysical(v.transmittance, true, "eclipse skyRadiance transmittance");
-        },
+        [&] { expectPhysical(sky.skyRadiance(camera, view, sun, moon), "eclipse skyRadiance"); },
         "eclipse skyRadiance");
     expectContract(
         bad_camera || bad_point || refusedDirection(sun),
         [&] {
-          const RadianceAndTransmittance v = sky.radianceToPoint(camera, point, sun);
-          expectPhysical(v.radiance, false, "radianceToPoint");
-          expectPhysical(v.transmittance, true, "radianceToPoint transmittance");
+          expectPhysical(sky.radianceToPoint(camera, point, sun), "radianceToPoint");
           expectPhysical(sky.transmittance(camera, point), true, "transmittance");
         },
         "radianceToPoint");
     expectContract(
         bad_point || refusedDirection(normal) || refusedDirection(sun),
-        [&] {
-          const SunAndSkyIrradiance e = sky.irradiance(point, normal, sun);
-          expectPhysical(e.sun, false, "irradiance sun");
-          expectPhysical(e.sky, false, "irradiance sky");
-        },
-        "irradiance");
+        [&] { expectPhysical(sky.irradiance(point, normal, sun), "irradiance"); }, "irradiance");
     expectContract(
         bad_point || refusedDirection(normal) || refusedDirection(sun) || bad_moon,
-        [&] {
-          const SunAndSkyIrradiance e = sky.irradiance(point, normal, sun, moon);
-          expectPhysical(e.sun, false, "eclipse irradiance sun");
-          expectPhysical(e.sky, false, "eclipse irradiance sky");
-        },
-        "eclipse irradiance");
+        [&] { expectPhysical(sky.irradiance(point, normal, sun, moon), "eclipse irradiance"); }, "eclipse irradiance");
     // The batch path: float directions, one hostile among ordinary ones.
     const glm::vec3 ray(view);
     std::vector<float> x{0.0f, static_cast<float>(ray.x)}, y{0.6f, static_cast<float>(ray.y)},
