@@ -24,6 +24,9 @@
 #include "ray_sphere.h"
 
 namespace skybake {
+namespace kernel {
+#include "data_formats/kernel/texture_coordinates.glsl"
+}  // namespace kernel
 
 // How the sun axis of the 4D and irradiance tables spreads its texels.
 enum class SunAxisMapping {
@@ -93,23 +96,20 @@ struct AtmosphereDomain {
   }
   // Distance from the ground to the top boundary along the horizontal: the
   // longest path a ray that does not hit the ground spends above one point.
-  double horizonToTopDistance() const {
-    return std::sqrt(top_radius_m * top_radius_m - bottom_radius_m * bottom_radius_m);
-  }
+  double horizonToTopDistance() const { return kernel::skybakeDistanceToHorizon(top_radius_m, bottom_radius_m); }
   // rho: the distance to the horizon from radius r.
-  double distanceToHorizon(double r) const { return safeSqrt(r * r - bottom_radius_m * bottom_radius_m); }
+  double distanceToHorizon(double r) const { return kernel::skybakeDistanceToHorizon(r, bottom_radius_m); }
   double radiusAtDistanceToHorizon(double rho) const {
     return std::sqrt(rho * rho + bottom_radius_m * bottom_radius_m);
   }
 };
 
-// [0, 1] -> texture coordinate whose texel centres hit 0 and 1 exactly.
-inline double textureCoordFromUnitRange(double x, int size) { return 0.5 / size + x * (1.0 - 1.0 / size); }
+// The forward maps are the kernel data_formats/kernel/texture_coordinates.glsl
+// in double, the one source the shaders share; below, their C++ names and
+// the constants of a domain worked out once.
+inline constexpr auto& textureCoordFromUnitRange = kernel::skybakeTextureCoordFromUnitRange;
 inline double unitRangeFromTextureCoord(double u, int size) { return (u - 0.5 / size) / (1.0 - 1.0 / size); }
-
-// Guards 0/0 where a range degenerates to a point (r = bottom in the ground
-// half, r = top in the sky half): the position in an empty range is 0.
-inline double fractionOfRange(double value, double lo, double hi) { return hi > lo ? (value - lo) / (hi - lo) : 0.0; }
+inline constexpr auto& fractionOfRange = kernel::skybakeFractionOfRange;
 
 // ---- transmittance (2D: u = mu across, v = r down) ----
 
@@ -132,8 +132,7 @@ struct TransmittanceMuCoordAtR {
     return of(d, size_mu, r, d.distanceToHorizon(r), d.horizonToTopDistance());
   }
   double operator()(double mu) const {
-    return textureCoordFromUnitRange(fractionOfRange(distanceToOuterSphere(r, mu, top_radius_m), dist_min, dist_max),
-                                     size_mu);
+    return kernel::skybakeOpticalDepthCoordMu(r, mu, top_radius_m, dist_min, dist_max, size_mu);
   }
 };
 
@@ -145,7 +144,7 @@ inline double transmittanceCoordMu(const AtmosphereDomain& d, int size_mu, doubl
 
 // The r coordinate alone, from rho = distanceToHorizon(r).
 inline double transmittanceCoordR(const AtmosphereDomain& d, int size_r, double rho) {
-  return textureCoordFromUnitRange(rho / d.horizonToTopDistance(), size_r);
+  return kernel::skybakeOpticalDepthCoordR(rho, d.horizonToTopDistance(), size_r);
 }
 
 inline TextureCoord2D transmittanceCoordFromRMu(const AtmosphereDomain& d, int size_mu, int size_r, double r,
@@ -192,9 +191,8 @@ struct MuSDistanceRange {
 // at the horizon, 1 at mu_s_min) and s in [0, 1] from the horizon down,
 // t = c s + (1 - c) s^2 for c = kSunAxisHorizonSpacing.
 struct SunBelowHorizonAxis {
-  static double depthFromSine(double t) {  // s for t in [0, 1]; stable as c -> 1
-    constexpr double c = kSunAxisHorizonSpacing;
-    return 2.0 * t / (c + std::sqrt(c * c + 4.0 * (1.0 - c) * t));
+  static double depthFromSine(double t) {  // s for t in [0, 1]
+    return kernel::skybakeSunDepthFromSine(t, kSunAxisHorizonSpacing);
   }
   static double sineFromDepth(double s) {
     constexpr double c = kSunAxisHorizonSpacing;
@@ -211,37 +209,25 @@ struct SunBelowHorizonAxis {
 // below_share (SunBelowHorizonAxis). below_share is 0 for DistanceToTop and
 // for a sun range that stays above the horizon.
 // muSUnitCoord with the domain's constants worked out once.
-struct MuSUnitCoordMap {
-  double bottom_radius_m, top_radius_m;
-  double d_min, inverse_d_span;
-  double inverse_A;
-  double defined;  // 1, or 0 where the sun range is empty (A = 0): every coordinate is 0 then
-  double below_share;
-  double day_coord_at_horizon;
-  double inverse_mu_s_min;  // 1 / mu_s_min (< 0) where below_share > 0
+struct MuSUnitCoordMap : kernel::SkybakeSunCoordMap {
   static MuSUnitCoordMap of(const AtmosphereDomain& d) {
     const MuSDistanceRange range = MuSDistanceRange::of(d);
     const double A = range.fraction(d, d.mu_s_min);
     const bool split = d.sun_axis == SunAxisMapping::SplitAtHorizon && d.mu_s_min < 0.0 && A > 1.0;
-    return {d.bottom_radius_m,
-            d.top_radius_m,
-            range.d_min,
-            1.0 / (range.d_max - range.d_min),
-            A > 0.0 ? 1.0 / A : 0.0,
-            A > 0.0 ? 1.0 : 0.0,
-            split ? kSunAxisBelowHorizonShare : 0.0,
-            split ? 0.5 * (1.0 - 1.0 / A) : 0.0,
-            split ? 1.0 / d.mu_s_min : 0.0};
+    MuSUnitCoordMap m;
+    m.bottom_radius_m = d.bottom_radius_m;
+    m.top_radius_m = d.top_radius_m;
+    m.d_min = range.d_min;
+    m.inverse_d_span = 1.0 / (range.d_max - range.d_min);
+    m.inverse_A = A > 0.0 ? 1.0 / A : 0.0;
+    m.defined = A > 0.0 ? 1.0 : 0.0;
+    m.below_share = split ? kSunAxisBelowHorizonShare : 0.0;
+    m.day_coord_at_horizon = split ? 0.5 * (1.0 - 1.0 / A) : 0.0;
+    m.inverse_mu_s_min = split ? 1.0 / d.mu_s_min : 0.0;
+    m.horizon_spacing = kSunAxisHorizonSpacing;
+    return m;
   }
-  double operator()(double mu_s) const {
-    if (below_share > 0.0 && mu_s < 0.0) {
-      return below_share * (1.0 - SunBelowHorizonAxis::depthFromSine(std::min(mu_s * inverse_mu_s_min, 1.0)));
-    }
-    const double a = (distanceToOuterSphere(bottom_radius_m, mu_s, top_radius_m) - d_min) * inverse_d_span;
-    const double bruneton = defined * std::max(1.0 - a * inverse_A, 0.0) / (1.0 + a);
-    if (below_share == 0.0) return bruneton;
-    return below_share + (1.0 - below_share) * (bruneton - day_coord_at_horizon) / (1.0 - day_coord_at_horizon);
-  }
+  double operator()(double mu_s) const { return kernel::skybakeSunUnitCoord(*this, mu_s); }
 };
 inline double muSUnitCoord(const AtmosphereDomain& d, double mu_s) { return MuSUnitCoordMap::of(d)(mu_s); }
 
@@ -261,7 +247,7 @@ struct ScatteringMuSCoordMap {
     return {MuSUnitCoordMap::of(d), d.scattering_mu_s_coord_min, span > 0.0 ? 1.0 / span : 0.0, size_mu_s};
   }
   double operator()(double mu_s) const {
-    return textureCoordFromUnitRange((unit(mu_s) - coord_min) * inverse_coord_span, size_mu_s);
+    return kernel::skybakeScatteringCoordMuS(unit(mu_s), coord_min, inverse_coord_span, size_mu_s);
   }
 };
 inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, double mu_s) {
@@ -270,30 +256,14 @@ inline double scatteringCoordMuS(const AtmosphereDomain& d, int size_mu_s, doubl
 
 // The 4D tables' r texture coordinate: rho over the tables' altitude range.
 inline double scatteringCoordR(const AtmosphereDomain& d, int size_r, double rho) {
-  return textureCoordFromUnitRange(fractionOfRange(rho, d.scattering_rho_min_m, d.scattering_rho_max_m), size_r);
+  return kernel::skybakeScatteringCoordR(rho, d.scattering_rho_min_m, d.scattering_rho_max_m, size_r);
 }
 
 // The mu coordinate alone (see transmittanceCoordMu).
 inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r, double rho, double H, double mu,
                                 bool ray_intersects_ground) {
-  const double r_mu = r * mu;
-  const double discriminant = r_mu * r_mu - r * r + d.bottom_radius_m * d.bottom_radius_m;
-  if (!d.scattering_ground_views) {
-    // Sky only, over the whole axis; a ray to the ground is read at the
-    // horizon (Sky does not look those up here).
-    const double dist = ray_intersects_ground ? rho + H : -r_mu + safeSqrt(discriminant + H * H);
-    return textureCoordFromUnitRange(fractionOfRange(dist, d.top_radius_m - r, rho + H), size_mu);
-  }
-  if (ray_intersects_ground) {
-    // Distance to the ground, between r - bottom (straight down) and rho (the horizon).
-    const double dist = -r_mu - safeSqrt(discriminant);
-    const double x = fractionOfRange(dist, r - d.bottom_radius_m, rho);
-    return 0.5 - 0.5 * textureCoordFromUnitRange(x, size_mu / 2);
-  }
-  // Distance to the top, between top - r (straight up) and rho + H (the horizon).
-  const double dist = -r_mu + safeSqrt(discriminant + H * H);
-  const double x = fractionOfRange(dist, d.top_radius_m - r, rho + H);
-  return 0.5 + 0.5 * textureCoordFromUnitRange(x, size_mu / 2);
+  return kernel::skybakeScatteringCoordMu(r, mu, d.bottom_radius_m, d.top_radius_m, rho, H, size_mu,
+                                          d.scattering_ground_views, ray_intersects_ground);
 }
 
 // ---- irradiance (2D: u = mu_s across, v = r down) ----
@@ -303,15 +273,15 @@ inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r
 // degrees, which a coordinate linear in mu_s would straddle with one texel.
 inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s, int size_r, double r,
                                               double mu_s) {
-  const double x_r = (r - d.bottom_radius_m) / (d.top_radius_m - d.bottom_radius_m);
-  return {textureCoordFromUnitRange(muSUnitCoord(d, mu_s), size_mu_s), textureCoordFromUnitRange(x_r, size_r)};
+  return {textureCoordFromUnitRange(muSUnitCoord(d, mu_s), size_mu_s),
+          kernel::skybakeIrradianceCoordR(r, d.bottom_radius_m, d.top_radius_m, size_r)};
 }
 
 inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d, const ScatteringSizes& s, double r,
                                                    double mu, double mu_s, double nu, bool ray_intersects_ground) {
   const double H = d.horizonToTopDistance();
   const double rho = d.distanceToHorizon(r);
-  return {(nu + 1.0) * 0.5, scatteringCoordMuS(d, s.mu_s, mu_s),
+  return {kernel::skybakeScatteringCoordNu(nu), scatteringCoordMuS(d, s.mu_s, mu_s),
           scatteringCoordMu(d, s.mu, r, rho, H, mu, ray_intersects_ground), scatteringCoordR(d, s.r, rho)};
 }
 
@@ -320,7 +290,7 @@ inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d, co
 // split: density depends on the direction only, not on where the ray ends,
 // and is smooth through the horizon. (In the split layout the ground half is
 // degenerate at r = bottom, where every ground ray points straight down.)
-inline double densityCoordMu(double mu, int size_mu) { return textureCoordFromUnitRange((mu + 1.0) * 0.5, size_mu); }
+inline constexpr auto& densityCoordMu = kernel::skybakeDensityCoordMu;
 inline double muFromDensityTexel(int i_mu, int size_mu) { return clampCosine(-1.0 + 2.0 * i_mu / (size_mu - 1)); }
 
 // The configuration at the centre of a texel.

@@ -1,19 +1,20 @@
 // Density of a constituent at an altitude, relative to where its coefficients
-// are quoted (density 1). See DensityLayer for the layer formula.
+// are quoted (density 1): the layer formula is the kernel
+// runtime/kernel/density_profile.glsl, which the shaders share.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
-
 #include "data_formats/atmosphere_parameters.h"
+#include "data_formats/kernel/kernel_language.h"
 
 namespace skybake {
+namespace kernel {
+#include "runtime/kernel/density_profile.glsl"
+}  // namespace kernel
 
 // Dimensionless density in [0, 1] at altitude_m above the ground.
 inline double layerDensity(const DensityLayer& layer, double altitude_m) {
-  const double value =
-      layer.exp_term * std::exp(layer.exp_scale * altitude_m) + layer.linear_term * altitude_m + layer.constant_term;
-  return std::clamp(value, 0.0, 1.0);
+  return kernel::skybakeLayerDensity(layer.exp_term, layer.exp_scale, layer.linear_term, layer.constant_term,
+                                     altitude_m);
 }
 
 // Layers stack from the ground up; the last one reaches the top whatever its width.

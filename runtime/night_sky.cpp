@@ -6,13 +6,7 @@
 namespace skybake {
 
 Spectrum NightContinuation::scaleBelowEdge(double mu_s) const {
-  mu_s = clampCosine(mu_s);
-  const double sin_s = safeSqrt(1.0 - mu_s * mu_s);
-  // The depression d below the edge: sin d and cos d from the angle
-  // difference formulas, tan(d / 2) = sin d / (1 + cos d).
-  const double sin_d = sin_s * edge_mu_s - mu_s * edge_sin;
-  const double cos_d = mu_s * edge_mu_s + sin_s * edge_sin;
-  const double x = std::clamp(1.0 - sin_d / (1.0 + cos_d) * inverse_tan_half_span, 0.0, 1.0);
+  const double x = kernel::skybakeNightScaleBase(mu_s, edge_mu_s, edge_sin, inverse_tan_half_span);
   Spectrum s(0.0f);
   for (int c = 0; c < kMaxChannels; ++c) s[c] = static_cast<float>(std::pow(x, static_cast<double>(exponent[c])));
   return s;

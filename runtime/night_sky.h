@@ -5,9 +5,8 @@
 // and the sky irradiance, is their value at the lowest baked sun scaled by
 // NightContinuation::scale, which is 1 at that sun, falls with the sun's
 // depression and reaches the night floor (0) where no sunlit air is left in
-// reach of light scattered twice (darkSunZenithRad). The GLSL runtime mirrors
-// it (skybakeNightScale in runtime/glsl/skybake_tables.glsl); the GL parity
-// test ties the two.
+// reach of light scattered twice (darkSunZenithRad). The scale's formula is
+// the kernel runtime/kernel/night_continuation.glsl, which the shaders share.
 #pragma once
 
 #include <algorithm>
@@ -20,6 +19,9 @@
 #include "data_formats/textures.h"
 
 namespace skybake {
+namespace kernel {
+#include "runtime/kernel/night_continuation.glsl"
+}  // namespace kernel
 
 // What the sky gives with the sun far below the horizon. skybake models
 // sunlight only (no airglow, starlight or moonlight), so the floor is 0: at
@@ -54,10 +56,7 @@ struct NightContinuation {
 
   // The share of the lowest baked sun's tabulated light left with the sun
   // at zenith cosine mu_s: 1 at and above the edge, non-increasing below it,
-  // 0 from the dark zenith angle on. tan(d / 2) comes from the sun's and the
-  // edge's cosines and sines without an inverse cosine, whose GLSL
-  // implementations are too coarse here (a 2e-4 rad error is 0.7 % of the
-  // scale at Earth's fall-off).
+  // 0 from the dark zenith angle on (kernel::skybakeNightScaleBase).
   Spectrum scale(double mu_s) const { return mu_s >= edge_mu_s ? Spectrum(1.0f) : scaleBelowEdge(mu_s); }
   Spectrum scaleBelowEdge(double mu_s) const;
 };

@@ -13,33 +13,25 @@
 #include "runtime/sun_disk.h"
 
 namespace skybake {
+namespace kernel {
+#include "runtime/kernel/table_weights.glsl"
+}  // namespace kernel
 
 // Linear interpolation position on an axis of `size` texels whose centres sit
-// at (i + 0.5) / size: the two neighbours and the weight of the upper one.
+// at (i + 0.5) / size: the two neighbours and the weight of the upper one
+// (the kernel runtime/kernel/table_weights.glsl's, the weight in float as the
+// texels are).
 struct AxisLerp {
   int i0;
   int i1;
   float w1;
+  static AxisLerp of(const kernel::SkybakeAxisLerp& k) { return {k.i0, k.i1, static_cast<float>(k.w1)}; }
 };
 
-// Positions outside the axis clamp to its ends; a NaN position (from a NaN
-// query) is taken as the first texel, so no lookup can index out of bounds.
-inline double clampedAxisPosition(double x, int size) {
-  return x > 0.0 ? std::min(x, static_cast<double>(size - 1)) : 0.0;
-}
-
-inline AxisLerp axisLerpFromTextureCoord(double u, int size) {
-  const double x = clampedAxisPosition(u * size - 0.5, size);
-  const int i0 = std::min(static_cast<int>(x), size - 2 >= 0 ? size - 2 : 0);
-  return {i0, std::min(i0 + 1, size - 1), static_cast<float>(x - i0)};
-}
+inline AxisLerp axisLerpFromTextureCoord(double u, int size) { return AxisLerp::of(kernel::skybakeAxisLerp(u, size)); }
 
 // nu texels sit at i / (size - 1) in u_nu: both ends tabulated.
-inline AxisLerp axisLerpNu(double u_nu, int size) {
-  const double x = clampedAxisPosition(u_nu * (size - 1), size);
-  const int i0 = std::min(static_cast<int>(x), size - 2);
-  return {i0, i0 + 1, static_cast<float>(x - i0)};
-}
+inline AxisLerp axisLerpNu(double u_nu, int size) { return AxisLerp::of(kernel::skybakeAxisLerpNu(u_nu, size)); }
 
 // The same from the axes' interpolation weights, for callers that reuse one
 // of them across lookups.
@@ -64,38 +56,20 @@ inline Spectrum sampleBilinear(const Texture2D& t, TextureCoord2D uv) {
 // linear one keeps lookups vectorized.
 enum class Blend { Linear, GeometricWhereSteep };
 
-// Neighbours closer than this ratio are blended linearly even in geometric
-// mode: the blends then differ by < 1 % and the pow is saved.
-inline constexpr float kGeometricBlendRatio = 1.5f;
-// From this ratio on the blend is wholly geometric; between the two it moves
-// from linear to geometric smoothly (smoothstep in the ratio). A switch at
-// one ratio made lookups jump: the ratio of two nu slices changes with the
-// sun, and where it crossed the switch the sky stepped by up to 2 % within
-// 0.001 deg of sun angle (deep twilight, horizon views).
-inline constexpr float kFullyGeometricBlendRatio = 2.0f;
+// The ratios of neighbours from which the blend starts to be geometric and
+// from which it is wholly so (the kernel's skybakeGeometricBlendShare says
+// why two).
+inline constexpr float kGeometricBlendRatio = SKYBAKE_GEOMETRIC_BLEND_RATIO;
+inline constexpr float kFullyGeometricBlendRatio = SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO;
 
-// a^(1-w) b^w for positive a and b, in logarithms: the ratio b / a of a
-// normal and a denormal number (thick or dark atmospheres reach 1e-40)
-// overflows to infinity, and a * (b / a)^w then gives inf or NaN.
-inline float geometricBlend(float a, float b, float w) { return std::exp((1.0f - w) * std::log(a) + w * std::log(b)); }
-
-// The geometric blend's share for neighbours `ratio` apart (>= 1; infinite
-// for a denormal beside a normal number: wholly geometric).
-inline float geometricBlendShare(float ratio) {
-  const float x =
-      std::clamp((ratio - kGeometricBlendRatio) / (kFullyGeometricBlendRatio - kGeometricBlendRatio), 0.0f, 1.0f);
-  return x * x * (3.0f - 2.0f * x);
+inline float geometricBlend(float a, float b, float w) {
+  return static_cast<float>(kernel::skybakeGeometricBlend(a, b, w));
 }
 
 inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, float w) {
-  Spectrum out = a + (b - a) * w;
+  Spectrum out;
   for (int c = 0; c < Spectrum::length(); ++c) {
-    if (a[c] > 0.0f && b[c] > 0.0f && (b[c] > kGeometricBlendRatio * a[c] || a[c] > kGeometricBlendRatio * b[c])) {
-      const float share = geometricBlendShare(a[c] > b[c] ? a[c] / b[c] : b[c] / a[c]);
-      // As a weighted sum, not out + (geometric - out) * share: with a
-      // denormal neighbour the difference cancels the geometric blend away.
-      out[c] = out[c] * (1.0f - share) + geometricBlend(a[c], b[c], w) * share;
-    }
+    out[c] = static_cast<float>(kernel::skybakeBlendGeometricWhereSteep(a[c], b[c], w));
   }
   return out;
 }
@@ -312,8 +286,7 @@ class TableSampler {
     const Spectrum high = irradianceRow(irradiance, x, y.i1);
     Spectrum out;
     for (int c = 0; c < kMaxChannels; ++c) {
-      out[c] =
-          low[c] > 0.0f && high[c] > 0.0f ? geometricBlend(low[c], high[c], y.w1) : low[c] + (high[c] - low[c]) * y.w1;
+      out[c] = static_cast<float>(kernel::skybakeBlendGeometricWherePositive(low[c], high[c], y.w1, 1.0));
     }
     return out * nightScale(mu_s);
   }
@@ -329,14 +302,13 @@ class TableSampler {
   // Row i_r of the irradiance table at the mu_s position x (see irradiance).
   Spectrum irradianceRow(const Texture2D& irradiance, const AxisLerp& x, int i_r) const {
     const Spectrum a = irradiance.at(x.i0, i_r), b = irradiance.at(x.i1, i_r);
-    Spectrum out = a + (b - a) * x.w1;
-    const float below_horizon =
-        std::clamp(1.0f + static_cast<float>(irradiance_horizon_unit_ * (irradiance.width - 1)) - x.i1, 0.0f, 1.0f);
-    if (below_horizon <= 0.0f) return out;
+    const double below_horizon =
+        kernel::skybakeBelowHorizonShare(irradiance_horizon_unit_ * (irradiance.width - 1), x.i1);
+    // Above the horizon the linear blend alone, in float (vectorized).
+    if (below_horizon <= 0.0) return a + (b - a) * x.w1;
+    Spectrum out;
     for (int c = 0; c < kMaxChannels; ++c) {
-      if (a[c] > 0.0f && b[c] > 0.0f) {
-        out[c] = out[c] * (1.0f - below_horizon) + geometricBlend(a[c], b[c], x.w1) * below_horizon;
-      }
+      out[c] = static_cast<float>(kernel::skybakeBlendGeometricWherePositive(a[c], b[c], x.w1, below_horizon));
     }
     return out;
   }

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "runtime/atmosphere_ray.h"
+#include "runtime/moon_occluder.h"
 
 namespace skybake {
 namespace {
@@ -36,11 +37,8 @@ constexpr int kMaxSubsamplesPerPixelSide = 256;
 // disk misses only costs its subsamples.
 constexpr double kPixelReachMargin = 1.5;
 
-double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
-  // atan2 rather than acos: exact for the sun's small angles, where acos of
-  // a cosine near 1 loses half its digits.
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
+// The angle between two directions, precise at the sun's small angles.
+constexpr auto& angleBetween = kernel::skybakeAngleBetween;
 
 // How far from its centre's direction pixel (x, y) reaches, radians.
 double pixelReach_rad(const SkyView& v, int x, int y, const glm::dvec3& centre) {

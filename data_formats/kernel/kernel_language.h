@@ -2,7 +2,7 @@
 // data_formats/kernel/ and runtime/kernel/) holds formulas the CPU and the
 // shaders both evaluate, written once in the subset of GLSL that is also
 // C++: functions marked SKYBAKE_KERNEL and named skybake*, the scalar type
-// Real and the vector type Real3, the built-ins of kernel_builtins.inc and
+// Real and the vector types Real2 and Real3, the built-ins of kernel_builtins.inc and
 // the constant SKYBAKE_PI; no `const` locals (GLSL ES needs constant
 // expressions there), no struct constructors (members are set one by one),
 // no out parameters, float literals written with a point (0.0).
@@ -17,8 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 // Kernel functions are defined in headers, included by many translation
@@ -29,6 +31,7 @@
 
 namespace skybake::kernel {
 using Real = double;
+using Real2 = glm::dvec2;
 using Real3 = glm::dvec3;
 #include "data_formats/kernel/kernel_builtins.inc"
 }  // namespace skybake::kernel

@@ -54,11 +54,17 @@ SKYBAKE_KERNEL Real skybakeDistanceToAtmosphereEnd(Real r, Real mu, Real bottom_
                                : skybakeDistanceToOuterSphere(r, mu, top_radius);
 }
 
+// The distance from r >= radius to the horizon of the sphere of radius
+// `radius`, along the ray tangent to it (rho, for the ground's sphere).
+SKYBAKE_KERNEL Real skybakeDistanceToHorizon(Real r, Real radius) {
+  return skybakeSafeSqrt((r - radius) * (r + radius));
+}
+
 // Zenith cosine of the rays from r >= radius tangent to the sphere of
 // radius `radius` (the horizon, for the ground's sphere):
 // -sqrt(1 - (radius / r)^2).
 SKYBAKE_KERNEL Real skybakeTangentZenithCosine(Real r, Real radius) {
-  return -skybakeSafeSqrt((r - radius) * (r + radius)) / r;
+  return -skybakeDistanceToHorizon(r, radius) / r;
 }
 
 // Radius and zenith cosine at distance d along the ray (r, mu).

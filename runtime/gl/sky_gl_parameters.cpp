@@ -168,8 +168,6 @@ std::string skyGlslDefines() {
   define("SKYBAKE_MAX_PIECE_OPTICAL_DEPTH", glslFloat(kMaxPieceOpticalDepth));
   define("SKYBAKE_REFINED_OPTICAL_DEPTH", glslFloat(kRefinedOpticalDepth));
   define("SKYBAKE_MAX_PIECES_PER_SUBINTERVAL", std::to_string(kMaxPiecesPerSubinterval));
-  define("SKYBAKE_GEOMETRIC_BLEND_RATIO", glslFloat(kGeometricBlendRatio));
-  define("SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO", glslFloat(kFullyGeometricBlendRatio));
   define("SKYBAKE_BROAD_PHASE", glslFloat(MultipleScatteringPhase::kBroad));
   define("SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE", glslFloat(kIntegratedSingleScatteringTopCosine));
   define("SKYBAKE_LOOKUP_SINGLE_SCATTERING_SEGMENTS", std::to_string(kLookupSingleScatteringSegments));

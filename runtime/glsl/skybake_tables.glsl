@@ -1,42 +1,12 @@
-// skybake GLSL library (README.md gives the files' order): where a configuration lives in the
-// tables (data_formats/texture_mapping.h) and the interpolated lookups
-// (runtime/table_sampler.h), the multiple-scattering shape
-// (runtime/multiple_scattering_phase.h) included.
-//
-// Interpolation is done here from texelFetch with the CPU's weights:
-// hardware filtering resolves the weights to 8 bits (1/256 of a texel), a
-// quantisation that shows as bands where tables change steeply (the
-// horizon, twilight), and it cannot do the geometric blends below.
-
-// [0, 1] -> texture coordinate whose texel centres hit 0 and 1 exactly.
-float skybakeTextureCoordFromUnitRange(float x, int size) {
-  return 0.5 / float(size) + x * (1.0 - 1.0 / float(size));
-}
-float skybakeFractionOfRange(float value, float lo, float hi) { return hi > lo ? (value - lo) / (hi - lo) : 0.0; }
-
-// Linear interpolation on an axis of `size` texels: the two neighbours and
-// the weight of the upper one.
-struct SkybakeAxisLerp {
-  int i0;
-  int i1;
-  float w1;
-};
-
-// Positions outside the axis clamp to its ends (a NaN position to the first).
-float skybakeClampedAxisPosition(float x, int size) { return x > 0.0 ? min(x, float(size - 1)) : 0.0; }
-
-SkybakeAxisLerp skybakeAxisLerp(float u, int size) {
-  float x = skybakeClampedAxisPosition(u * float(size) - 0.5, size);
-  int i0 = min(int(x), max(size - 2, 0));
-  return SkybakeAxisLerp(i0, min(i0 + 1, size - 1), x - float(i0));
-}
-
-// nu texels sit at i / (size - 1): both ends tabulated.
-SkybakeAxisLerp skybakeAxisLerpNu(float u_nu, int size) {
-  float x = skybakeClampedAxisPosition(u_nu * float(size - 1), size);
-  int i0 = min(int(x), size - 2);
-  return SkybakeAxisLerp(i0, i0 + 1, x - float(i0));
-}
+// skybake GLSL library (README.md gives the files' order): the interpolated
+// table lookups (runtime/table_sampler.h on the CPU), the
+// multiple-scattering shape (runtime/multiple_scattering_phase.h) included.
+// Where a configuration lives in the tables, the interpolation weights and
+// the night continuation's formula are kernel files the C++ shares
+// (data_formats/kernel/texture_coordinates.glsl,
+// runtime/kernel/table_weights.glsl, runtime/kernel/night_continuation.glsl),
+// read before this one; here they are given the bake's constants from the
+// uniform block and applied to the textures, read with texelFetch.
 
 // One row of a 2D table, interpolated along x.
 vec4 skybakeSampleRow(sampler2D table, SkybakeAxisLerp x, int row) {
@@ -51,23 +21,19 @@ vec4 skybakeSampleBilinear(sampler2D table, SkybakeAxisLerp x, SkybakeAxisLerp y
   return a + (b - a) * y.w1;
 }
 
-// a^(1-w) b^w per channel where both are positive and more than
-// SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO apart, linear where they are within
-// SKYBAKE_GEOMETRIC_BLEND_RATIO, moving smoothly from one to the other
-// between: exact for the exponential falloff of a twilight sky across mu_s
-// and nu, and without a jump as the ratio changes (table_sampler.h).
+// The kernel's blend per channel: geometric where both texels are positive
+// and far apart, linear where they are close (table_weights.glsl).
 vec4 skybakeBlendGeometricWhereSteep(vec4 a, vec4 b, float w) {
-  vec4 linear_blend = a + (b - a) * w;
-  bvec4 positive = bvec4(vec4(greaterThan(a, vec4(0.0))) * vec4(greaterThan(b, vec4(0.0))));
-  bvec4 apart = bvec4(max(vec4(greaterThan(b, SKYBAKE_GEOMETRIC_BLEND_RATIO * a)),
-                          vec4(greaterThan(a, SKYBAKE_GEOMETRIC_BLEND_RATIO * b))));
-  bvec4 steep = bvec4(vec4(positive) * vec4(apart));
-  // Logarithms of 1 where the blend is linear, so no log(0) is taken.
-  vec4 safe_a = mix(vec4(1.0), a, steep);
-  vec4 safe_b = mix(vec4(1.0), b, steep);
-  vec4 ratio = max(safe_a / safe_b, safe_b / safe_a);
-  vec4 share = smoothstep(vec4(SKYBAKE_GEOMETRIC_BLEND_RATIO), vec4(SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO), ratio);
-  return mix(linear_blend, exp((1.0 - w) * log(safe_a) + w * log(safe_b)), share * vec4(steep));
+  return vec4(skybakeBlendGeometricWhereSteep(a.x, b.x, w), skybakeBlendGeometricWhereSteep(a.y, b.y, w),
+              skybakeBlendGeometricWhereSteep(a.z, b.z, w), skybakeBlendGeometricWhereSteep(a.w, b.w, w));
+}
+
+// The same with the geometric blend's share given, where both are positive.
+vec4 skybakeBlendGeometricWherePositive(vec4 a, vec4 b, float w, float geometric_share) {
+  return vec4(skybakeBlendGeometricWherePositive(a.x, b.x, w, geometric_share),
+              skybakeBlendGeometricWherePositive(a.y, b.y, w, geometric_share),
+              skybakeBlendGeometricWherePositive(a.z, b.z, w, geometric_share),
+              skybakeBlendGeometricWherePositive(a.w, b.w, w, geometric_share));
 }
 
 vec4 skybakeBlendAcross(vec4 a, vec4 b, float w, bool geometric) {
@@ -145,13 +111,12 @@ SkybakeOpticalDepthAtR skybakeOpticalDepthAtR(float r) {
   float H = skybake_radii_m.z;
   int size_r = skybake_table_2d_size.y;
   return SkybakeOpticalDepthAtR(r, skybake_radii_m.y - r, rho + H,
-                                skybakeAxisLerp(skybakeTextureCoordFromUnitRange(rho / H, size_r), size_r));
+                                skybakeAxisLerp(skybakeOpticalDepthCoordR(rho, H, size_r), size_r));
 }
 
 float skybakeOpticalDepthMuCoord(SkybakeOpticalDepthAtR at, float mu) {
-  float dist = skybakeDistanceToOuterSphere(at.r, mu, skybake_radii_m.y);
-  return skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, at.dist_min_m, at.dist_max_m),
-                                          skybake_table_2d_size.x);
+  return skybakeOpticalDepthCoordMu(at.r, mu, skybake_radii_m.y, at.dist_min_m, at.dist_max_m,
+                                    skybake_table_2d_size.x);
 }
 
 vec4 skybakeOpticalDepthAtCoord(SkybakeOpticalDepthAtR at, float u_mu) {
@@ -188,43 +153,32 @@ vec4 skybakeTransmittanceToSun(float r, float mu_s) {
 // ---- scattering (4D) ----
 
 // The unit sun coordinate: 1 at the zenith, 0 at the lowest tabulated sun
-// (MuSUnitCoordMap, SunBelowHorizonAxis).
+// (the kernel's skybakeSunUnitCoord with the bake's constants).
 float skybakeMuSUnitCoord(float mu_s) {
-  vec4 m = skybake_mu_s_map;
-  vec4 below = skybake_mu_s_below;
-  float a = (skybakeDistanceToOuterSphere(skybake_radii_m.x, mu_s, skybake_radii_m.y) - m.x) * m.y;
-  float bruneton = m.w * max(1.0 - a * m.z, 0.0) / (1.0 + a);
-  if (below.x == 0.0) return bruneton;
-  if (mu_s >= 0.0) return below.x + (1.0 - below.x) * (bruneton - below.y) / (1.0 - below.y);
-  float t = min(mu_s * below.z, 1.0);
-  float c = below.w;
-  return below.x * (1.0 - 2.0 * t / (c + sqrt(c * c + 4.0 * (1.0 - c) * t)));
+  SkybakeSunCoordMap m;
+  m.bottom_radius_m = skybake_radii_m.x;
+  m.top_radius_m = skybake_radii_m.y;
+  m.d_min = skybake_mu_s_map.x;
+  m.inverse_d_span = skybake_mu_s_map.y;
+  m.inverse_A = skybake_mu_s_map.z;
+  m.defined = skybake_mu_s_map.w;
+  m.below_share = skybake_mu_s_below.x;
+  m.day_coord_at_horizon = skybake_mu_s_below.y;
+  m.inverse_mu_s_min = skybake_mu_s_below.z;
+  m.horizon_spacing = skybake_mu_s_below.w;
+  return skybakeSunUnitCoord(m, mu_s);
 }
 
+// A 4D table's texture coordinates at (r, mu, mu_s, nu).
 SkybakeScatteringCoord skybakeScatteringCoord(float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
-  float bottom = skybake_radii_m.x;
-  float top = skybake_radii_m.y;
-  float H = skybake_radii_m.z;
   ivec4 size = skybake_scattering_size;
-  float rho = skybakeDistanceToHorizon(r);
-  float u_mu;
-  if (skybake_parts.x == 0) {
-    // Sky only over the whole axis; a ray to the ground is read at the horizon.
-    float dist = ray_intersects_ground ? rho + H : skybakeDistanceToOuterSphere(r, mu, top);
-    u_mu = skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, top - r, rho + H), size.y);
-  } else if (ray_intersects_ground) {
-    // Distance to the ground, between r - bottom (straight down) and rho.
-    float dist = skybakeDistanceToInnerSphere(r, mu, bottom);
-    u_mu = 0.5 - 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, r - bottom, rho), size.y / 2);
-  } else {
-    // Distance to the top, between top - r (straight up) and rho + H.
-    float dist = skybakeDistanceToOuterSphere(r, mu, top);
-    u_mu = 0.5 + 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, top - r, rho + H), size.y / 2);
-  }
   vec4 domain = skybake_scattering_domain;
-  float u_mu_s = skybakeTextureCoordFromUnitRange((skybakeMuSUnitCoord(mu_s) - domain.z) * domain.w, size.z);
-  float u_r = skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(rho, domain.x, domain.y), size.x);
-  return SkybakeScatteringCoord((nu + 1.0) * 0.5, u_mu_s, u_mu, u_r);
+  float rho = skybakeDistanceToHorizon(r);
+  float u_mu = skybakeScatteringCoordMu(r, mu, skybake_radii_m.x, skybake_radii_m.y, rho, skybake_radii_m.z, size.y,
+                                        skybake_parts.x != 0, ray_intersects_ground);
+  float u_mu_s = skybakeScatteringCoordMuS(skybakeMuSUnitCoord(mu_s), domain.z, domain.w, size.z);
+  float u_r = skybakeScatteringCoordR(rho, domain.x, domain.y, size.x);
+  return SkybakeScatteringCoord(skybakeScatteringCoordNu(nu), u_mu_s, u_mu, u_r);
 }
 
 // ---- the night continuation (runtime/night_sky.h) ----
@@ -235,11 +189,7 @@ SkybakeScatteringCoord skybakeScatteringCoord(float r, float mu, float mu_s, flo
 // (NightContinuation::scaleBelowEdge; no acos, see there).
 vec4 skybakeNightScale(float mu_s) {
   if (mu_s >= skybake_night.x) return vec4(1.0);
-  mu_s = clamp(mu_s, -1.0, 1.0);
-  float sin_s = sqrt(max(1.0 - mu_s * mu_s, 0.0));
-  float sin_d = sin_s * skybake_night.x - mu_s * skybake_night.y;
-  float cos_d = mu_s * skybake_night.x + sin_s * skybake_night.y;
-  float x = clamp(1.0 - sin_d / (1.0 + cos_d) * skybake_night.z, 0.0, 1.0);
+  float x = skybakeNightScaleBase(mu_s, skybake_night.x, skybake_night.y, skybake_night.z);
   return pow(vec4(x), skybake_night_exponent);  // p >= 1: pow(0, p) is defined
 }
 
@@ -261,7 +211,7 @@ vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
   ivec4 size = skybake_scattering_size;
   size.y = textureSize(skybake_multiple_density, 0).y;
   SkybakeScatteringCoord c = skybakeScatteringCoord(r, 1.0, mu_s, nu, false);
-  c.u_mu = skybakeTextureCoordFromUnitRange((mu + 1.0) * 0.5, size.y);
+  c.u_mu = skybakeDensityCoordMu(mu, size.y);
   return skybakeSample4DOfSize(skybake_multiple_density, size, SKYBAKE_SCALE_MULTIPLE_DENSITY, c, mu_s < 0.0) *
          skybakeNightScale4D(mu_s);
 }
@@ -275,15 +225,10 @@ vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
 vec4 skybakeIrradianceRow(SkybakeAxisLerp x, int row) {
   vec4 a = texelFetch(skybake_irradiance, ivec2(x.i0, row), 0);
   vec4 b = texelFetch(skybake_irradiance, ivec2(x.i1, row), 0);
-  vec4 linear_blend = a + (b - a) * x.w1;
   float horizon_texel = skybakeMuSUnitCoord(0.0) * float(skybake_table_2d_size.z - 1);
-  float below_horizon = clamp(1.0 + horizon_texel - float(x.i1), 0.0, 1.0);
-  bvec4 positive = bvec4(vec4(greaterThan(a, vec4(0.0))) * vec4(greaterThan(b, vec4(0.0))));
-  // Logarithms of 1 where a texel is 0, so no log(0) is taken.
-  vec4 safe_a = mix(vec4(1.0), a, positive);
-  vec4 safe_b = mix(vec4(1.0), b, positive);
-  vec4 geometric = exp((1.0 - x.w1) * log(safe_a) + x.w1 * log(safe_b));
-  return mix(linear_blend, geometric, below_horizon * vec4(positive));
+  float below_horizon = skybakeBelowHorizonShare(horizon_texel, x.i1);
+  if (below_horizon <= 0.0) return a + (b - a) * x.w1;
+  return skybakeBlendGeometricWherePositive(a, b, x.w1, below_horizon);
 }
 
 // Sky irradiance on a horizontal surface at radius r: across mu_s as
@@ -297,7 +242,7 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
   float bottom = skybake_radii_m.x;
   float top = skybake_radii_m.y;
   float u = skybakeTextureCoordFromUnitRange(skybakeMuSUnitCoord(mu_s), size_mu_s);
-  float v = skybakeTextureCoordFromUnitRange((r - bottom) / (top - bottom), size_r);
+  float v = skybakeIrradianceCoordR(r, bottom, top, size_r);
   SkybakeAxisLerp x = skybakeAxisLerp(u, size_mu_s);
   SkybakeAxisLerp y = skybakeAxisLerp(v, size_r);
   vec4 low = skybakeIrradianceRow(x, y.i0);
@@ -312,11 +257,7 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
     return low * thinning * skybakeNightScale(mu_s);
   }
   vec4 high = skybakeIrradianceRow(x, y.i1);
-  bvec4 positive = bvec4(vec4(greaterThan(low, vec4(0.0))) * vec4(greaterThan(high, vec4(0.0))));
-  vec4 safe_low = mix(vec4(1.0), low, positive);
-  vec4 safe_high = mix(vec4(1.0), high, positive);
-  return mix(low + (high - low) * y.w1, exp((1.0 - y.w1) * log(safe_low) + y.w1 * log(safe_high)), positive) *
-         skybakeNightScale(mu_s);
+  return skybakeBlendGeometricWherePositive(low, high, y.w1, 1.0) * skybakeNightScale(mu_s);
 }
 
 // ---- the multiple-scattering shape f(r, nu), sr^-1 per channel ----

@@ -1,8 +1,9 @@
-// The kernel files (data_formats/kernel/) compiled as C++ in float, as the
-// shaders evaluate them, against the same text in double, as the CPU
-// runtime and the bake do: the tie between the two that holds on every
-// machine, GPU or not. Inputs are float values, so that the difference is
-// the float arithmetic's alone.
+// The kernel files of the shell and the ray (data_formats/kernel/,
+// runtime/kernel/) compiled as C++ in float, as the shaders evaluate them,
+// against the same text in double, as the CPU runtime and the bake do: the
+// tie between the two that holds on every machine, GPU or not. Inputs are
+// float values, so that the difference is the float arithmetic's alone.
+// kernel_tables_precision_test.cpp does the same for the tables' kernels.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,19 +15,10 @@
 
 #include "data_formats/ray_sphere.h"
 #include "runtime/atmosphere_ray.h"
+#include "runtime/density_profile.h"
 #include "runtime/phase_functions.h"
 #include "runtime/sun_disk.h"
-
-// Every kernel file, in float (the order of SKYBAKE_KERNEL_GLSL_FILES).
-namespace kernel_in_float {
-using Real = float;
-using Real3 = glm::vec3;
-#include "data_formats/kernel/kernel_builtins.inc"
-#include "data_formats/kernel/shell_geometry.glsl"
-#include "runtime/kernel/atmosphere_entry.glsl"
-#include "runtime/kernel/phase_functions.glsl"
-#include "runtime/kernel/sun_disk.glsl"
-}  // namespace kernel_in_float
+#include "tests/data_formats/kernel_in_float.h"
 
 namespace skybake {
 namespace {
@@ -214,6 +206,36 @@ TEST(KernelPrecision, SunDiskInFloatStaysWithinFloatRoundingOfDouble) {
   }
   EXPECT_NEAR(f::skybakeSunDiskHalfSizeAtHorizon(6360e3f, 6420e3f, 0.004675f),
               sunDiskHalfSizeAtHorizon(6360e3, 6420e3, 0.004675f), 4.0 * kFloatEpsilon * 0.004675);
+}
+
+// Density layers as the built-in Earth has them (Rayleigh's and Mie's
+// exponentials, the ozone's two linear halves) from the ground to 100 km.
+// exp(scale h) errs by a roundoff of its argument scale h, times the
+// result, and the sum by a few roundoffs of its largest term; the clamp
+// only removes error.
+TEST(KernelPrecision, DensityLayerInFloatStaysWithinFloatRoundingOfDouble) {
+  struct Layer {
+    float exp_term, exp_scale_per_m, linear_term_per_m, constant_term;
+  };
+  constexpr Layer kLayers[] = {{1.0f, -1.0f / 8000.0f, 0.0f, 0.0f},
+                               {1.0f, -1.0f / 1200.0f, 0.0f, 0.0f},
+                               {0.0f, 0.0f, 1.0f / 15000.0f, -2.0f / 3.0f},
+                               {0.0f, 0.0f, -1.0f / 15000.0f, 8.0f / 3.0f}};
+  for (const Layer& l : kLayers) {
+    for (int i = 0; i <= 1000; ++i) {
+      const float h = 100.0f * static_cast<float>(i);
+      const double exp_part = l.exp_term * std::exp(double(l.exp_scale_per_m) * h);
+      const double largest =
+          std::max({exp_part, std::abs(double(l.linear_term_per_m) * h), std::abs(double(l.constant_term))});
+      const double tolerance = 2.0 * kFloatEpsilon * (1.0 + std::abs(double(l.exp_scale_per_m) * h)) * exp_part +
+                               4.0 * kFloatEpsilon * largest;
+      EXPECT_NEAR(
+          f::skybakeLayerDensity(l.exp_term, l.exp_scale_per_m, l.linear_term_per_m, l.constant_term, h),
+          layerDensity(DensityLayer{0.0, l.exp_term, l.exp_scale_per_m, l.linear_term_per_m, l.constant_term}, h),
+          tolerance)
+          << h;
+    }
+  }
 }
 
 // The kernel's cancellation-free forms in double against the textbook

@@ -1,0 +1,133 @@
+// Kernel (kernel_language.h): where a configuration (r, mu, mu_s, nu)
+// lives in the tables, the forward maps of the parameterization that
+// data_formats/texture_mapping.h describes. The bake (reading earlier
+// scattering orders), the CPU lookups and the shaders all place a lookup
+// with these; the inverse maps (texel -> configuration) only the bake needs,
+// and they stay in texture_mapping.cpp.
+
+// [0, 1] -> texture coordinate whose texel centres hit 0 and 1 exactly.
+SKYBAKE_KERNEL Real skybakeTextureCoordFromUnitRange(Real x, int size) {
+  return 0.5 / Real(size) + x * (1.0 - 1.0 / Real(size));
+}
+
+// The position of value in [lo, hi]; 0 where the range is a point (r =
+// bottom in a ground half, r = top in a sky half), which guards 0 / 0.
+SKYBAKE_KERNEL Real skybakeFractionOfRange(Real value, Real lo, Real hi) {
+  return hi > lo ? (value - lo) / (hi - lo) : 0.0;
+}
+
+// ---- the optical-depth table (2D: u = mu, v = r) ----
+
+// The mu coordinate at radius r: the distance to the top between
+// dist_min_m (straight up, top - r) and dist_max_m (toward the horizon,
+// rho + H).
+SKYBAKE_KERNEL Real skybakeOpticalDepthCoordMu(Real r, Real mu, Real top_radius_m, Real dist_min_m, Real dist_max_m,
+                                               int size_mu) {
+  return skybakeTextureCoordFromUnitRange(
+      skybakeFractionOfRange(skybakeDistanceToOuterSphere(r, mu, top_radius_m), dist_min_m, dist_max_m), size_mu);
+}
+
+// The r coordinate from rho, the distance to the horizon, over H, the
+// distance from the ground to the top along the horizontal.
+SKYBAKE_KERNEL Real skybakeOpticalDepthCoordR(Real rho_m, Real H_m, int size_r) {
+  return skybakeTextureCoordFromUnitRange(rho_m / H_m, size_r);
+}
+
+// ---- the sun axis (4D tables and irradiance) ----
+
+// The sun axis's constants for one domain (MuSUnitCoordMap::of works them
+// out; the shaders read them from the uniform block's mu_s_map and
+// mu_s_below).
+struct SkybakeSunCoordMap {
+  Real bottom_radius_m;
+  Real top_radius_m;
+  // Bruneton's coordinate over the distance a from the ground to the top
+  // toward the sun: a = (distance - d_min) * inverse_d_span, 1 / A its
+  // value at the lowest sun, `defined` 0 where the sun range is empty
+  // (A = 0: every coordinate 0 then), else 1.
+  Real d_min;
+  Real inverse_d_span;
+  Real inverse_A;
+  Real defined;
+  // The share of the axis below the horizon (0: Bruneton's coordinate
+  // alone), Bruneton's coordinate at the horizon, 1 / mu_s_min, and the
+  // below-horizon axis's spacing c at the horizon.
+  Real below_share;
+  Real day_coord_at_horizon;
+  Real inverse_mu_s_min;
+  Real horizon_spacing;
+};
+
+// The depth s in [0, 1] below the horizon of a sun whose depression's sine
+// is the fraction t of the lowest sun's, from t = c s + (1 - c) s^2: the
+// root written so that it stays exact as c -> 1.
+SKYBAKE_KERNEL Real skybakeSunDepthFromSine(Real t, Real c) {
+  return 2.0 * t / (c + sqrt(c * c + 4.0 * (1.0 - c) * t));
+}
+
+// The unit sun coordinate: 1 at the zenith, 0 at the lowest sun.
+SKYBAKE_KERNEL Real skybakeSunUnitCoord(SkybakeSunCoordMap m, Real mu_s) {
+  if (m.below_share > 0.0 && mu_s < 0.0) {
+    return m.below_share *
+           (1.0 - skybakeSunDepthFromSine(min(mu_s * m.inverse_mu_s_min, 1.0), m.horizon_spacing));
+  }
+  Real a = (skybakeDistanceToOuterSphere(m.bottom_radius_m, mu_s, m.top_radius_m) - m.d_min) * m.inverse_d_span;
+  Real bruneton = m.defined * max(1.0 - a * m.inverse_A, 0.0) / (1.0 + a);
+  if (m.below_share == 0.0) return bruneton;
+  return m.below_share +
+         (1.0 - m.below_share) * (bruneton - m.day_coord_at_horizon) / (1.0 - m.day_coord_at_horizon);
+}
+
+// The 4D tables' mu_s coordinate: the unit coordinate over their sun range
+// [coord_min, coord_min + 1 / inverse_coord_span] (inverse_coord_span 0
+// where the range is a point).
+SKYBAKE_KERNEL Real skybakeScatteringCoordMuS(Real unit_coord, Real coord_min, Real inverse_coord_span,
+                                              int size_mu_s) {
+  return skybakeTextureCoordFromUnitRange((unit_coord - coord_min) * inverse_coord_span, size_mu_s);
+}
+
+// ---- the 4D tables' r and mu ----
+
+// The r coordinate: rho over the tables' range of it.
+SKYBAKE_KERNEL Real skybakeScatteringCoordR(Real rho_m, Real rho_min_m, Real rho_max_m, int size_r) {
+  return skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(rho_m, rho_min_m, rho_max_m), size_r);
+}
+
+// The mu coordinate. With ground views the axis's lower half holds the rays
+// that end on the ground, by their distance to it between r - bottom
+// (straight down) and rho (the horizon), and the upper half the others, by
+// their distance to the top between top - r (straight up) and rho + H, so
+// that no lookup interpolates across the horizon. Without them the sky
+// takes the whole axis and a ray to the ground is read at the horizon.
+SKYBAKE_KERNEL Real skybakeScatteringCoordMu(Real r, Real mu, Real bottom_radius_m, Real top_radius_m, Real rho_m,
+                                             Real H_m, int size_mu, bool ground_views, bool ray_intersects_ground) {
+  if (!ground_views) {
+    Real dist = ray_intersects_ground ? rho_m + H_m : skybakeDistanceToOuterSphere(r, mu, top_radius_m);
+    return skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, top_radius_m - r, rho_m + H_m), size_mu);
+  }
+  if (ray_intersects_ground) {
+    Real dist = skybakeDistanceToInnerSphere(r, mu, bottom_radius_m);
+    return 0.5 - 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, r - bottom_radius_m, rho_m),
+                                                        size_mu / 2);
+  }
+  Real dist = skybakeDistanceToOuterSphere(r, mu, top_radius_m);
+  return 0.5 + 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, top_radius_m - r, rho_m + H_m),
+                                                      size_mu / 2);
+}
+
+// The multiple-scattering density table's mu coordinate: linear over
+// [-1, 1] (density depends on the direction only, not on where the ray
+// ends, and is smooth through the horizon).
+SKYBAKE_KERNEL Real skybakeDensityCoordMu(Real mu, int size_mu) {
+  return skybakeTextureCoordFromUnitRange((mu + 1.0) * 0.5, size_mu);
+}
+
+// The 4D tables' nu coordinate: linear, texel i at i / (size - 1).
+SKYBAKE_KERNEL Real skybakeScatteringCoordNu(Real nu) { return (nu + 1.0) * 0.5; }
+
+// ---- the irradiance table (2D: u = mu_s, v = r) ----
+
+// The r coordinate: linear in r from the ground to the top.
+SKYBAKE_KERNEL Real skybakeIrradianceCoordR(Real r, Real bottom_radius_m, Real top_radius_m, int size_r) {
+  return skybakeTextureCoordFromUnitRange((r - bottom_radius_m) / (top_radius_m - bottom_radius_m), size_r);
+}
