@@ -134,6 +134,10 @@ struct TransmittanceMuCoordAtR {
   double operator()(double mu) const {
     return kernel::skybakeOpticalDepthCoordMu(r, mu, top_radius_m, dist_min, dist_max, size_mu);
   }
+  // The same from the direction's distance to the top.
+  double atDistance(double dist_to_top_m) const {
+    return kernel::skybakeOpticalDepthCoordMuAtDistance(dist_to_top_m, dist_min, dist_max, size_mu);
+  }
 };
 
 // The mu coordinate alone, for callers that hold rho = distanceToHorizon(r)
@@ -264,6 +268,12 @@ inline double scatteringCoordMu(const AtmosphereDomain& d, int size_mu, double r
                                 bool ray_intersects_ground) {
   return kernel::skybakeScatteringCoordMu(r, mu, d.bottom_radius_m, d.top_radius_m, rho, H, size_mu,
                                           d.scattering_ground_views, ray_intersects_ground);
+}
+// The same from the ray's distance to its end, for callers that hold it.
+inline double scatteringCoordMuAtDistance(const AtmosphereDomain& d, int size_mu, double r, double rho, double H,
+                                          double dist_m, bool ray_intersects_ground) {
+  return kernel::skybakeScatteringCoordMuAtDistance(r, dist_m, d.bottom_radius_m, d.top_radius_m, rho, H, size_mu,
+                                                    d.scattering_ground_views, ray_intersects_ground);
 }
 
 // ---- irradiance (2D: u = mu_s across, v = r down) ----

@@ -95,24 +95,24 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera_given, const glm::dvec3& sun
       store(i, v.radiance, v.transmittance);
       continue;
     }
-    const AxisLerp mu_lerp = axisLerpFromTextureCoord(scatteringCoordMu(d, ss.mu, r, rho, H, mu, ground), ss.mu);
-    const AxisLerp nu_lerp = axisLerpNu((nu + 1.0) * 0.5, ss.nu);
-    const SingleScattering single = singleScattering(
-        {r, mu, mu_s, nu, ground}, 0.0, distanceToAtmosphereEnd(r, mu, d.bottom_radius_m, d.top_radius_m, ground), [&] {
-          return SingleScattering{sampleSlice(rayleigh, mu_lerp, nu_lerp, blend) * night,
-                                  sampleSlice(mie, mu_lerp, nu_lerp, blend) * night};
-        });
+    const double end_m = distanceToAtmosphereEnd(r, mu, d.bottom_radius_m, d.top_radius_m, ground);
+    const AxisLerp mu_lerp =
+        axisLerpFromTextureCoord(scatteringCoordMuAtDistance(d, ss.mu, r, rho, H, end_m, ground), ss.mu);
+    const AxisLerp nu_lerp = axisLerpNu(kernel::skybakeScatteringCoordNu(nu), ss.nu);
+    const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, 0.0, end_m, [&] {
+      return SingleScattering{sampleSlice(rayleigh, mu_lerp, nu_lerp, blend) * night,
+                              sampleSlice(mie, mu_lerp, nu_lerp, blend) * night};
+    });
     const Spectrum l =
         single.rayleigh * static_cast<float>(rayleighPhase(nu)) + single.mie * static_cast<float>(mie_phase_(nu)) +
         sampleSlice(multiple, mu_lerp, nu_lerp, blend) * night * multiple_shape_(multiple_peak_weight, nu);
     // As TableSampler::opticalDepthAlongRay takes a ray to the ground: both legs reversed.
+    // end_m is the distance to the ground or to the top.
     const Spectrum tau =
         ground ? TableSampler::depthBetween(
-                     depth_at_ground.toTop(
-                         t.optical_depth,
-                         -cosineAlongRay(r, mu, distanceToInnerSphere(r, mu, d.bottom_radius_m), d.bottom_radius_m)),
+                     depth_at_ground.toTop(t.optical_depth, -cosineAlongRay(r, mu, end_m, d.bottom_radius_m)),
                      depth_here.toTop(t.optical_depth, -mu))
-               : depth_here.toTop(t.optical_depth, mu);
+               : depth_here.opticalDepth(t.optical_depth, depth_here.muCoordAtDistance(end_m));
     Spectrum t_out(0.0f);
     for (int c = 0; c < channels; ++c) t_out[c] = std::exp(-tau[c]);  // unused lanes stay 0
     store(i, l, t_out);

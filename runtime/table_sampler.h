@@ -16,6 +16,16 @@ namespace skybake {
 namespace kernel {
 #include "runtime/kernel/table_weights.glsl"
 }  // namespace kernel
+// The same kernel in float, for the blends of texels: the tables hold
+// floats, and the shaders blend them in float too (a blend in double costs
+// twilight lookups 5 %).
+namespace kernel_float {
+using Real = float;
+using Real2 = glm::vec2;
+using Real3 = glm::vec3;
+#include "data_formats/kernel/kernel_builtins.inc"
+#include "runtime/kernel/table_weights.glsl"
+}  // namespace kernel_float
 
 // Linear interpolation position on an axis of `size` texels whose centres sit
 // at (i + 0.5) / size: the two neighbours and the weight of the upper one
@@ -62,14 +72,12 @@ enum class Blend { Linear, GeometricWhereSteep };
 inline constexpr float kGeometricBlendRatio = SKYBAKE_GEOMETRIC_BLEND_RATIO;
 inline constexpr float kFullyGeometricBlendRatio = SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO;
 
-inline float geometricBlend(float a, float b, float w) {
-  return static_cast<float>(kernel::skybakeGeometricBlend(a, b, w));
-}
+inline float geometricBlend(float a, float b, float w) { return kernel_float::skybakeGeometricBlend(a, b, w); }
 
 inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, float w) {
   Spectrum out;
   for (int c = 0; c < Spectrum::length(); ++c) {
-    out[c] = static_cast<float>(kernel::skybakeBlendGeometricWhereSteep(a[c], b[c], w));
+    out[c] = kernel_float::skybakeBlendGeometricWhereSteep(a[c], b[c], w);
   }
   return out;
 }
@@ -213,6 +221,7 @@ class TableSampler {
           r_lerp_(axisLerpFromTextureCoord(textureCoordFromUnitRange(rho_ / sampler.H_, sampler.sizes_.transmittance_r),
                                            sampler.sizes_.transmittance_r)) {}
     double muCoord(double mu) const { return mu_coord_(mu); }
+    double muCoordAtDistance(double dist_to_top_m) const { return mu_coord_.atDistance(dist_to_top_m); }
     // Optical depth to the top at the mu coordinate `u_mu`.
     Spectrum opticalDepth(const Texture2D& optical_depth, double u_mu) const {
       return sampleBilinear(optical_depth, axisLerpFromTextureCoord(u_mu, optical_depth.width), r_lerp_);
@@ -286,7 +295,7 @@ class TableSampler {
     const Spectrum high = irradianceRow(irradiance, x, y.i1);
     Spectrum out;
     for (int c = 0; c < kMaxChannels; ++c) {
-      out[c] = static_cast<float>(kernel::skybakeBlendGeometricWherePositive(low[c], high[c], y.w1, 1.0));
+      out[c] = kernel_float::skybakeBlendGeometricWherePositive(low[c], high[c], y.w1, 1.0f);
     }
     return out * nightScale(mu_s);
   }
@@ -308,7 +317,7 @@ class TableSampler {
     if (below_horizon <= 0.0) return a + (b - a) * x.w1;
     Spectrum out;
     for (int c = 0; c < kMaxChannels; ++c) {
-      out[c] = static_cast<float>(kernel::skybakeBlendGeometricWherePositive(a[c], b[c], x.w1, below_horizon));
+      out[c] = kernel_float::skybakeBlendGeometricWherePositive(a[c], b[c], x.w1, static_cast<float>(below_horizon));
     }
     return out;
   }

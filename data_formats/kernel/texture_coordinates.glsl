@@ -21,10 +21,14 @@ SKYBAKE_KERNEL Real skybakeFractionOfRange(Real value, Real lo, Real hi) {
 // The mu coordinate at radius r: the distance to the top between
 // dist_min_m (straight up, top - r) and dist_max_m (toward the horizon,
 // rho + H).
+SKYBAKE_KERNEL Real skybakeOpticalDepthCoordMuAtDistance(Real dist_to_top_m, Real dist_min_m, Real dist_max_m,
+                                                         int size_mu) {
+  return skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist_to_top_m, dist_min_m, dist_max_m), size_mu);
+}
 SKYBAKE_KERNEL Real skybakeOpticalDepthCoordMu(Real r, Real mu, Real top_radius_m, Real dist_min_m, Real dist_max_m,
                                                int size_mu) {
-  return skybakeTextureCoordFromUnitRange(
-      skybakeFractionOfRange(skybakeDistanceToOuterSphere(r, mu, top_radius_m), dist_min_m, dist_max_m), size_mu);
+  return skybakeOpticalDepthCoordMuAtDistance(skybakeDistanceToOuterSphere(r, mu, top_radius_m), dist_min_m,
+                                              dist_max_m, size_mu);
 }
 
 // The r coordinate from rho, the distance to the horizon, over H, the
@@ -93,26 +97,35 @@ SKYBAKE_KERNEL Real skybakeScatteringCoordR(Real rho_m, Real rho_min_m, Real rho
   return skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(rho_m, rho_min_m, rho_max_m), size_r);
 }
 
-// The mu coordinate. With ground views the axis's lower half holds the rays
-// that end on the ground, by their distance to it between r - bottom
-// (straight down) and rho (the horizon), and the upper half the others, by
-// their distance to the top between top - r (straight up) and rho + H, so
-// that no lookup interpolates across the horizon. Without them the sky
-// takes the whole axis and a ray to the ground is read at the horizon.
-SKYBAKE_KERNEL Real skybakeScatteringCoordMu(Real r, Real mu, Real bottom_radius_m, Real top_radius_m, Real rho_m,
-                                             Real H_m, int size_mu, bool ground_views, bool ray_intersects_ground) {
+// The mu coordinate of a ray from r that ends after dist_m, on the ground
+// or at the top as ray_intersects_ground says. With ground views the
+// axis's lower half holds the rays that end on the ground, by their
+// distance to it between r - bottom (straight down) and rho (the horizon),
+// and the upper half the others, by their distance to the top between
+// top - r (straight up) and rho + H, so that no lookup interpolates across
+// the horizon. Without them the sky takes the whole axis and a ray to the
+// ground is read at the horizon (dist_m is not read then).
+SKYBAKE_KERNEL Real skybakeScatteringCoordMuAtDistance(Real r, Real dist_m, Real bottom_radius_m, Real top_radius_m,
+                                                       Real rho_m, Real H_m, int size_mu, bool ground_views,
+                                                       bool ray_intersects_ground) {
   if (!ground_views) {
-    Real dist = ray_intersects_ground ? rho_m + H_m : skybakeDistanceToOuterSphere(r, mu, top_radius_m);
+    Real dist = ray_intersects_ground ? rho_m + H_m : dist_m;
     return skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, top_radius_m - r, rho_m + H_m), size_mu);
   }
   if (ray_intersects_ground) {
-    Real dist = skybakeDistanceToInnerSphere(r, mu, bottom_radius_m);
-    return 0.5 - 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, r - bottom_radius_m, rho_m),
+    return 0.5 - 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist_m, r - bottom_radius_m, rho_m),
                                                         size_mu / 2);
   }
-  Real dist = skybakeDistanceToOuterSphere(r, mu, top_radius_m);
-  return 0.5 + 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist, top_radius_m - r, rho_m + H_m),
+  return 0.5 + 0.5 * skybakeTextureCoordFromUnitRange(skybakeFractionOfRange(dist_m, top_radius_m - r, rho_m + H_m),
                                                       size_mu / 2);
+}
+
+// The same for the ray (r, mu).
+SKYBAKE_KERNEL Real skybakeScatteringCoordMu(Real r, Real mu, Real bottom_radius_m, Real top_radius_m, Real rho_m,
+                                             Real H_m, int size_mu, bool ground_views, bool ray_intersects_ground) {
+  return skybakeScatteringCoordMuAtDistance(
+      r, skybakeDistanceToAtmosphereEnd(r, mu, bottom_radius_m, top_radius_m, ray_intersects_ground), bottom_radius_m,
+      top_radius_m, rho_m, H_m, size_mu, ground_views, ray_intersects_ground);
 }
 
 // The multiple-scattering density table's mu coordinate: linear over
