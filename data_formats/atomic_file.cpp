@@ -1,4 +1,4 @@
-#include "atomic_file.h"
+#include "data_formats/atomic_file.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "error.h"
-#include "input_file.h"
+#include "data_formats/error.h"
+#include "data_formats/input_file.h"
 
 namespace skybake {
 namespace {

@@ -1,4 +1,4 @@
-#include "input_file.h"
+#include "data_formats/input_file.h"
 
 #include <cerrno>
 #include <cstring>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "error.h"
+#include "data_formats/error.h"
 
 namespace skybake {
 

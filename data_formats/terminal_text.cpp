@@ -1,4 +1,4 @@
-#include "terminal_text.h"
+#include "data_formats/terminal_text.h"
 
 #include <fmt/format.h>
 

@@ -2,7 +2,7 @@
 // coefficients at density 1 times their density profiles.
 #pragma once
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/density_profile.h"
 
 namespace skybake {

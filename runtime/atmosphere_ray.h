@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "data_formats/ray_sphere.h"
+#include "data_formats/parameterization/ray_sphere.h"
 
 namespace skybake {
 namespace kernel {

@@ -3,7 +3,7 @@
 // runtime/kernel/density_profile.glsl, which the shaders share.
 #pragma once
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "data_formats/kernel/kernel_language.h"
 
 namespace skybake {

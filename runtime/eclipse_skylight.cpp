@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "data_formats/ray_sphere.h"
+#include "data_formats/parameterization/ray_sphere.h"
 #include "runtime/atmosphere_media.h"
 
 namespace skybake {

@@ -27,7 +27,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/moon_occluder.h"
 
 namespace skybake {

@@ -7,7 +7,7 @@
 
 #include <Imath/half.h>
 
-#include "data_formats/half_slices.h"
+#include "data_formats/bake_file/half_slices.h"
 
 namespace skybake {
 namespace {

@@ -5,7 +5,7 @@
 // Half (the default): each 4D table as 16-bit floats, one value per
 // channel (RGB16F for up to 3 channels, RGBA16F for 4), every (r, mu_s) slice
 // scaled by its own power of two as a half file stores it
-// (data_formats/half_slices.h), the scales in one small 2D table the shader
+// (data_formats/bake_file/half_slices.h), the scales in one small 2D table the shader
 // multiplies each texel by. A half bake (bake.precision = "half") uploads
 // exactly its values; a float bake loses half's rounding, 2^-11 (4.9e-4) of
 // each value at most. Float: RGBA32F, the values as loaded. The 2D tables
@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 
 namespace skybake {
 

@@ -41,8 +41,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "data_formats/atmosphere_parameters.h"
-#include "data_formats/spectrum.h"
+#include "data_formats/config/atmosphere_parameters.h"
+#include "data_formats/spectra/spectrum.h"
 #include "runtime/density_profile.h"
 #include "runtime/phase_functions.h"
 

@@ -13,10 +13,10 @@
 #include <cmath>
 
 #include "data_formats/angles.h"
-#include "data_formats/ray_sphere.h"
-#include "data_formats/spectrum.h"
-#include "data_formats/texture_mapping.h"
-#include "data_formats/textures.h"
+#include "data_formats/bake_file/textures.h"
+#include "data_formats/parameterization/ray_sphere.h"
+#include "data_formats/parameterization/texture_mapping.h"
+#include "data_formats/spectra/spectrum.h"
 
 namespace skybake {
 namespace kernel {

@@ -8,7 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/kernel/kernel_language.h"
-#include "data_formats/ray_sphere.h"
+#include "data_formats/parameterization/ray_sphere.h"
 
 namespace skybake {
 namespace kernel {

@@ -5,7 +5,7 @@
 // twilight, and bakes without views below the horizon for rays to the ground.
 #pragma once
 
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "runtime/multiple_scattering_phase.h"
 #include "runtime/sky.h"
 #include "runtime/table_sampler.h"

@@ -9,7 +9,7 @@
 // (forEachOpticallyThinNodeCutAt).
 #pragma once
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/moon_occluder.h"
 #include "runtime/planet_shadow.h"
 #include "runtime/table_sampler.h"

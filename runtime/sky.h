@@ -43,7 +43,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "runtime/atmosphere_ray.h"
 #include "runtime/moon_occluder.h"
 #include "runtime/multiple_scattering_phase.h"

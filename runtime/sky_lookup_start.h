@@ -4,7 +4,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/texture_mapping.h"
 #include "runtime/atmosphere_ray.h"
 
 namespace skybake {

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "data_formats/bake_file.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/bake_file/bake_file.h"
+#include "data_formats/parameterization/texture_mapping.h"
 #include "runtime/night_sky.h"
 #include "runtime/phase_functions.h"
 #include "runtime/sun_disk.h"

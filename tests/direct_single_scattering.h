@@ -10,8 +10,8 @@
 #include <glm/geometric.hpp>
 
 #include "baker/numerics/optical_depth_integral.h"
-#include "data_formats/atmosphere_parameters.h"
-#include "data_formats/ray_sphere.h"
+#include "data_formats/config/atmosphere_parameters.h"
+#include "data_formats/parameterization/ray_sphere.h"
 #include "runtime/atmosphere_media.h"
 #include "runtime/moon_occluder.h"
 #include "runtime/phase_functions.h"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The tree matches docs/ARCHITECTURE.md: baker/ holds nothing at its root but
-# its CMakeLists.txt, and every folder of baker/, runtime/ and data_formats/
-# is a room the architecture page names, so a new file lands in a room that
-# says what it is.
+# its CMakeLists.txt, data_formats/ nothing at its root but what every format
+# uses and the formats' two specifications, and every folder of baker/,
+# runtime/ and data_formats/ is a room the architecture page names, so a new
+# file lands in a room that says what it is.
 # Usage: layout_check.sh SOURCE_DIR
 set -u
 cd "$1"
@@ -11,6 +12,14 @@ fail() { echo "layout_check: $*"; failures=$((failures + 1)); }
 
 for f in baker/*; do
   [ -d "$f" ] || [ "$f" = baker/CMakeLists.txt ] || fail "$f sits in baker/'s root; put it in the room it belongs to"
+done
+for f in data_formats/*; do
+  [ -d "$f" ] && continue
+  case "${f#data_formats/}" in
+    CMakeLists.txt | CONFIG.md | FORMAT.md | angles.h | atomic_file.* | error.h | input_file.* | terminal_text.* | \
+      text_numbers.h) ;;
+    *) fail "$f sits in data_formats/'s root; put it in the room of its format" ;;
+  esac
 done
 for d in baker/* runtime/* data_formats/*; do
   [ -d "$d" ] || continue

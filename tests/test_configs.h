@@ -1,7 +1,7 @@
 // Configs for the analytic test cases.
 #pragma once
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 
 namespace skybake::test {
 

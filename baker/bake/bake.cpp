@@ -24,9 +24,9 @@
 #include "baker/bake/process_usage.h"
 #include "baker/bake/slice_tail.h"
 #include "baker/bake/spectral_bake.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 namespace {

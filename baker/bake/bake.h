@@ -3,7 +3,7 @@
 
 #include "baker/bake/bake_report.h"
 #include "baker/stages/progress.h"
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 
 namespace skybake {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "data_formats/angles.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 namespace {
@@ -110,7 +110,7 @@ TextureSizes iterationTextureSizes(const BakeConfig& config) {
 }
 
 TextureSizes orderRadianceSizes(const TextureSizes& iteration) {
-  // The smallest axes a table may have (data_formats/config_validate.cpp):
+  // The smallest axes a table may have (data_formats/config/config_validate.cpp):
   // mu even and at least 4 (two rows each side of the horizon), nu at least 2.
   // Three quarters of nu, rounded up: 16 -> 12.
   constexpr int kMinMu = 4, kMinNu = 2;

@@ -4,9 +4,9 @@
 // the domain it covers (data_formats/FORMAT.md).
 #pragma once
 
-#include "data_formats/atmosphere_parameters.h"
-#include "data_formats/bake_file.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/bake_file/bake_file.h"
+#include "data_formats/config/atmosphere_parameters.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 

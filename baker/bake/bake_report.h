@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "data_formats/spectrum.h"
+#include "data_formats/spectra/spectrum.h"
 
 namespace skybake {
 

@@ -13,7 +13,7 @@
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/process_usage.h"
 #include "baker/stages/order_shapes.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "runtime/colour/colour_bake_weights.h"
 #include "runtime/multiple_scattering_phase.h"

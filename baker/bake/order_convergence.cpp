@@ -5,7 +5,7 @@
 
 #include "data_formats/angles.h"
 #include "data_formats/error.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/texture_mapping.h"
 #include "runtime/phase_functions.h"
 
 namespace skybake {

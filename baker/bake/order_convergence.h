@@ -9,8 +9,8 @@
 
 #include <vector>
 
-#include "data_formats/spectrum.h"
-#include "data_formats/textures.h"
+#include "data_formats/bake_file/textures.h"
+#include "data_formats/spectra/spectrum.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 namespace {

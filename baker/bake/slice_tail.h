@@ -17,7 +17,7 @@
 
 #include <vector>
 
-#include "data_formats/spectrum.h"
+#include "data_formats/spectra/spectrum.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {

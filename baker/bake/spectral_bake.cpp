@@ -6,7 +6,7 @@
 #include "baker/bake/bake_passes.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/process_usage.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 
 namespace skybake {

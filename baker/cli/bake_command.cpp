@@ -25,10 +25,10 @@
 #include "baker/cli/size_choice.h"
 #include "baker/cli/terminal_progress.h"
 #include "data_formats/atomic_file.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
+#include "data_formats/parameterization/texture_mapping.h"
 #include "data_formats/terminal_text.h"
-#include "data_formats/texture_mapping.h"
 
 namespace skybake::cli {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "baker/cli/available_memory.h"
 #include "baker/stages/scattering_density_kernel.h"
-#include "data_formats/spectrum.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/texture_mapping.h"
+#include "data_formats/spectra/spectrum.h"
 
 namespace skybake {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 
 namespace skybake {
 

@@ -30,8 +30,8 @@
 #include "baker/validation/lane_group_validation.h"
 #include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
-#include "data_formats/config.h"
-#include "data_formats/config_at_wavelengths.h"
+#include "data_formats/config/config.h"
+#include "data_formats/config/config_at_wavelengths.h"
 #include "data_formats/error.h"
 
 namespace skybake::cli {

@@ -6,11 +6,11 @@
 
 #include "baker/bake/bake_policy.h"
 #include "baker/cli/commands.h"
-#include "data_formats/bake_file.h"
-#include "data_formats/config.h"
+#include "data_formats/bake_file/bake_file.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
+#include "data_formats/parameterization/texture_mapping.h"
 #include "data_formats/terminal_text.h"
-#include "data_formats/texture_mapping.h"
 #include "runtime/gpu_tables.h"
 #include "runtime/sky.h"
 

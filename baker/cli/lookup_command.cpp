@@ -5,11 +5,11 @@
 #include <glm/geometric.hpp>
 
 #include "baker/cli/commands.h"
-#include "baker/validation/csv_table.h"
-#include "baker/validation/local_frame.h"
 #include "baker/validation/validation_queries.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/error.h"
+#include "data_formats/queries/csv_table.h"
+#include "data_formats/queries/local_frame.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {

@@ -11,7 +11,7 @@
 
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "data_formats/error.h"
 
 namespace {

@@ -16,7 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "baker/stages/openmp_threads.h"  // kMaxThreadCount
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 
 namespace skybake::cli {
 

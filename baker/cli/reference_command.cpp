@@ -16,7 +16,7 @@
 #include "baker/cli/wavelength_channels.h"
 #include "baker/stages/openmp_threads.h"
 #include "baker/validation/validation.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "runtime/sky.h"
 
 namespace skybake::cli {

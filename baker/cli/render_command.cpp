@@ -22,7 +22,7 @@
 #endif
 #include "baker/validation/validation_queries.h"
 #include "data_formats/atomic_file.h"
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "data_formats/error.h"
 #include "runtime/colour/luminance.h"
 #include "runtime/colour/srgb_primaries.h"

@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "data_formats/error.h"
 
 namespace skybake::cli {

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "baker/comparators/sky_method.h"
-#include "data_formats/textures.h"
+#include "data_formats/bake_file/textures.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {

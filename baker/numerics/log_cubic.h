@@ -19,7 +19,7 @@
 #include <cmath>
 
 #include "baker/numerics/vector_exp.h"
-#include "data_formats/spectrum.h"
+#include "data_formats/spectra/spectrum.h"
 
 namespace skybake {
 

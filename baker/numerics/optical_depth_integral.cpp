@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "data_formats/ray_sphere.h"
+#include "data_formats/parameterization/ray_sphere.h"
 #include "runtime/ray_quadrature.h"
 
 namespace skybake {

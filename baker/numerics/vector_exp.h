@@ -12,7 +12,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "data_formats/spectrum.h"
+#include "data_formats/spectra/spectrum.h"
 
 extern "C" __attribute__((simd("notinbranch"))) float expf(float) noexcept;
 extern "C" __attribute__((simd("notinbranch"))) float logf(float) noexcept;

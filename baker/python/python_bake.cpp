@@ -24,11 +24,11 @@
 #include "baker/cli/terminal_progress.h"
 #include "baker/python/python_bindings.h"
 #include "data_formats/atomic_file.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
+#include "data_formats/config/toml_text_check.h"
 #include "data_formats/error.h"
 #include "data_formats/input_file.h"
 #include "data_formats/terminal_text.h"
-#include "data_formats/toml_text_check.h"
 
 namespace py = pybind11;
 

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/numerics/optical_depth_integral.h"
-#include "data_formats/ray_sphere.h"
+#include "data_formats/parameterization/ray_sphere.h"
 #include "runtime/atmosphere_ray.h"
 #include "runtime/phase_functions.h"
 

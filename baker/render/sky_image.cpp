@@ -1,6 +1,6 @@
 #include "baker/render/sky_image.h"
 
-#include "baker/validation/local_frame.h"
+#include "data_formats/queries/local_frame.h"
 #include "runtime/colour/srgb_transfer.h"
 
 #include <omp.h>

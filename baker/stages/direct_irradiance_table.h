@@ -2,7 +2,7 @@
 #pragma once
 
 #include "baker/stages/stage_context.h"
-#include "data_formats/textures.h"
+#include "data_formats/bake_file/textures.h"
 
 namespace skybake {
 

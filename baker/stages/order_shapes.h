@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "baker/stages/stage_context.h"
-#include "data_formats/textures.h"
+#include "data_formats/bake_file/textures.h"
 #include "runtime/multiple_scattering_phase.h"
 
 namespace skybake {

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "baker/stages/stage_context.h"
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "runtime/multiple_scattering_phase.h"
 
 namespace skybake {

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "baker/stages/progress.h"
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/table_sampler.h"
 
 namespace skybake {

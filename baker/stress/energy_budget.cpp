@@ -45,8 +45,8 @@
 #include <glm/vec3.hpp>
 
 #include "baker/numerics/gauss_legendre.h"
-#include "data_formats/ray_sphere.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/parameterization/ray_sphere.h"
+#include "data_formats/parameterization/texture_mapping.h"
 #include "runtime/phase_functions.h"
 
 namespace skybake {

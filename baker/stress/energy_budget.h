@@ -14,7 +14,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/sky.h"
 
 namespace skybake {

@@ -10,7 +10,7 @@
 
 #include "baker/bake/bake.h"
 #include "baker/stress/energy_budget.h"
-#include "data_formats/spectrum.h"
+#include "data_formats/spectra/spectrum.h"
 
 namespace skybake {
 

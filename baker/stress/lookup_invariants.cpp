@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "data_formats/ray_sphere.h"
+#include "data_formats/parameterization/ray_sphere.h"
 
 namespace skybake {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 
 namespace skybake {
 

@@ -8,10 +8,10 @@
 #include <fmt/ranges.h>
 
 #include "baker/reference/path_sampler.h"
-#include "baker/validation/local_frame.h"
-#include "data_formats/config.h"
-#include "data_formats/config_at_wavelengths.h"
+#include "data_formats/config/config.h"
+#include "data_formats/config/config_at_wavelengths.h"
 #include "data_formats/error.h"
+#include "data_formats/queries/local_frame.h"
 #include "runtime/colour/colour_bake_weights.h"
 #include "runtime/colour/spectral_to_xyz.h"
 

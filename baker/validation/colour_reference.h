@@ -34,7 +34,7 @@
 #include "baker/validation/reference_cache.h"
 #include "baker/validation/validation.h"
 #include "baker/validation/validation_queries.h"
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 
 namespace skybake {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "data_formats/error.h"
 
 namespace skybake {

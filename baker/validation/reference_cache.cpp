@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "data_formats/atomic_file.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 
 namespace skybake {

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 
 namespace skybake {
 

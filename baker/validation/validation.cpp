@@ -11,9 +11,9 @@
 #include <glm/geometric.hpp>
 
 #include "baker/reference/reference_solver.h"
-#include "baker/validation/local_frame.h"
 #include "baker/validation/validation_queries.h"
 #include "data_formats/error.h"
+#include "data_formats/queries/local_frame.h"
 #include "runtime/atmosphere_ray.h"
 #include "runtime/colour/spectral_to_xyz.h"
 

@@ -1,6 +1,6 @@
 #include "baker/validation/validation_queries.h"
 
-#include "baker/validation/csv_table.h"
+#include "data_formats/queries/csv_table.h"
 
 namespace skybake {
 namespace {

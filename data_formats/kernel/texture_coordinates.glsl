@@ -1,6 +1,6 @@
 // Kernel (kernel_language.h): where a configuration (r, mu, mu_s, nu)
 // lives in the tables, the forward maps of the parameterization that
-// data_formats/texture_mapping.h describes. The bake (reading earlier
+// data_formats/parameterization/texture_mapping.h describes. The bake (reading earlier
 // scattering orders), the CPU lookups and the shaders all place a lookup
 // with these; the inverse maps (texel -> configuration) only the bake needs,
 // and they stay in texture_mapping.cpp.

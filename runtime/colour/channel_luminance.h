@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "data_formats/atmosphere_parameters.h"
-#include "data_formats/spectrum.h"
+#include "data_formats/config/atmosphere_parameters.h"
+#include "data_formats/spectra/spectrum.h"
 
 namespace skybake::colour {
 

@@ -26,7 +26,7 @@
 #include <span>
 #include <vector>
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/colour/spectral_to_xyz.h"
 
 namespace skybake::colour {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "data_formats/error.h"
-#include "data_formats/spectral_samples.h"
+#include "data_formats/spectra/spectral_samples.h"
 #include "runtime/colour/cie1931_observer.h"
 
 namespace skybake::colour {

@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "baker/bake/bake.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 
 namespace {
 

@@ -18,7 +18,7 @@
 #include "baker/bake/bake.h"
 #include "baker/bake/bake_passes.h"
 #include "baker/bake/bake_policy.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "runtime/colour/colour_bake_weights.h"
 #include "runtime/sky.h"

@@ -25,8 +25,8 @@
 #include "baker/bake/bake_passes.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/render/image_colour.h"
-#include "data_formats/bake_file_attributes.h"
-#include "data_formats/config.h"
+#include "data_formats/bake_file/bake_file_attributes.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "runtime/colour/colour_bake_weights.h"
 #include "runtime/colour/luminance.h"
@@ -86,7 +86,7 @@ std::vector<BakeOutput>* ColourBakeTest::passes_ = nullptr;
 // pass, the test in double: they differ by a few float roundings of the
 // largest term, well below 1e-5 of the sum of the terms' magnitudes. The
 // stored sum is then rounded to the stored fraction bits, at most 2^-17
-// (7.6e-6) of itself (data_formats/stored_float_bits.h).
+// (7.6e-6) of itself (data_formats/bake_file/stored_float_bits.h).
 constexpr double kLinearSumTolerance = 1e-5 + 7.6e-6;
 
 template <typename Member>

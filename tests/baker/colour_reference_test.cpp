@@ -16,9 +16,9 @@
 #include "baker/reference/reference_solver.h"
 #include "baker/validation/colour_error.h"
 #include "baker/validation/colour_reference.h"
-#include "baker/validation/local_frame.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
+#include "data_formats/queries/local_frame.h"
 #include "runtime/colour/cielab.h"
 #include "runtime/colour/spectral_to_xyz.h"
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "baker/validation/csv_table.h"
 #include "data_formats/error.h"
+#include "data_formats/queries/csv_table.h"
 
 namespace skybake {
 namespace {

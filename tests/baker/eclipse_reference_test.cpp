@@ -15,7 +15,7 @@
 #include "baker/reference/reference_solver.h"
 #include "baker/validation/validation.h"
 #include "baker/validation/validation_queries.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "runtime/sky.h"
 #include "test_configs.h"
 

@@ -16,7 +16,7 @@
 
 #include "baker/bake/bake.h"
 #include "batch_lookups.h"
-#include "data_formats/bake_file_attributes.h"
+#include "data_formats/bake_file/bake_file_attributes.h"
 #include "data_formats/error.h"
 #include "runtime/sky.h"
 #include "test_configs.h"

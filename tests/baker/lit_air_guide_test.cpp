@@ -10,7 +10,7 @@
 
 #include "baker/reference/lit_air_guide.h"
 #include "baker/reference/path_sampler.h"
-#include "baker/validation/local_frame.h"
+#include "data_formats/queries/local_frame.h"
 #include "runtime/phase_functions.h"
 #include "test_configs.h"
 

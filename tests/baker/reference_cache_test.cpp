@@ -15,7 +15,7 @@
 
 #include "baker/validation/reference_cache.h"
 #include "baker/validation/validation.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 
 namespace skybake {
 namespace {

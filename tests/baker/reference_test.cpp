@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "baker/reference/reference_solver.h"
-#include "baker/validation/local_frame.h"
+#include "data_formats/queries/local_frame.h"
 #include "runtime/phase_functions.h"
 #include "test_configs.h"
 

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "baker/bake/bake.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "test_configs.h"
 
 namespace skybake {

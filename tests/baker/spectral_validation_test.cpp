@@ -17,7 +17,7 @@
 #include "baker/validation/colour_error.h"
 #include "baker/validation/lane_group_validation.h"
 #include "baker/validation/validation.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "runtime/sky.h"
 #include "small_wide_atmosphere.h"
 

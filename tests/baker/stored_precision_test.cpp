@@ -16,8 +16,8 @@
 #include <glm/geometric.hpp>
 
 #include "baker/bake/bake.h"
-#include "data_formats/half_slices.h"
-#include "data_formats/stored_float_bits.h"
+#include "data_formats/bake_file/half_slices.h"
+#include "data_formats/bake_file/stored_float_bits.h"
 #include "runtime/sky.h"
 #include "test_configs.h"
 

@@ -6,7 +6,7 @@
 #include "baker/bake/bake.h"
 #include "baker/numerics/optical_depth_integral.h"
 #include "baker/stages/optical_depth_table.h"
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 
 namespace skybake {
 namespace {

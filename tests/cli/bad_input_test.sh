@@ -138,7 +138,7 @@ kept "$work/kept.exr" "c.toml:39: bake.tail_estimate = 'yes': must be true or fa
 config_with 'orders = "many"'
 kept "$work/kept.exr" "c.toml:38: bake.orders = 'many': must be a whole number or \"auto\"" -- bake "$work/c.toml" -o "$work/kept.exr"
 # A colour bake's wavelengths must span the colour-matching functions: an
-# end short of them would bake a grey sky (data_formats/atmosphere_parameters.h).
+# end short of them would bake a grey sky (data_formats/config/atmosphere_parameters.h).
 colour_with() {
   sed -e "s|^wavelengths_nm = .*|wavelengths_nm = $1|" -e "s|\.\./\.\./|$source_dir/|" \
     "$source_dir/tests/cli/small_earth_colour.toml" >"$work/c.toml"

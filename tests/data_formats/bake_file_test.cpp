@@ -16,9 +16,9 @@
 #include <OpenEXR/ImfOutputPart.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
-#include "data_formats/bake_file.h"
-#include "data_formats/bake_file_attributes.h"
-#include "data_formats/config.h"
+#include "data_formats/bake_file/bake_file.h"
+#include "data_formats/bake_file/bake_file_attributes.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 
 namespace skybake {

@@ -9,8 +9,8 @@
 
 #include <unistd.h>
 
-#include "data_formats/bake_file.h"
-#include "data_formats/config.h"
+#include "data_formats/bake_file/bake_file.h"
+#include "data_formats/config/config.h"
 #include "runtime/sky.h"
 
 namespace skybake {

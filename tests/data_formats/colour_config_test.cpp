@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "expect_config_rejected.h"
 
 namespace skybake {

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "data_formats/config.h"
-#include "data_formats/config_at_wavelengths.h"
+#include "data_formats/config/config.h"
+#include "data_formats/config/config_at_wavelengths.h"
 #include "data_formats/error.h"
 
 namespace skybake {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "expect_config_rejected.h"
 

@@ -8,7 +8,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 
 namespace skybake::test {

@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "data_formats/ray_sphere.h"
+#include "data_formats/parameterization/ray_sphere.h"
 #include "runtime/atmosphere_ray.h"
 #include "runtime/density_profile.h"
 #include "runtime/phase_functions.h"

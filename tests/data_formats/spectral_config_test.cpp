@@ -13,10 +13,10 @@
 #include <fstream>
 #include <string>
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
-#include "data_formats/spectral_samples.h"
-#include "data_formats/spectrum_csv.h"
+#include "data_formats/spectra/spectral_samples.h"
+#include "data_formats/spectra/spectrum_csv.h"
 #include "expect_config_rejected.h"
 
 namespace skybake {

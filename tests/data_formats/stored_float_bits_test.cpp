@@ -1,4 +1,4 @@
-// Rounding a float to fewer fraction bits (data_formats/stored_float_bits.h):
+// Rounding a float to fewer fraction bits (data_formats/bake_file/stored_float_bits.h):
 // the nearest such float, within half its last kept bit, idempotent, and
 // every float class kept.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <limits>
 #include <random>
 
-#include "data_formats/stored_float_bits.h"
+#include "data_formats/bake_file/stored_float_bits.h"
 
 namespace skybake {
 namespace {

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "data_formats/config.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/config/config.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 namespace {

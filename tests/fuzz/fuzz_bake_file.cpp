@@ -9,7 +9,7 @@
 #include <span>
 #include <string>
 
-#include "data_formats/bake_file.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "data_formats/error.h"
 #include "fuzz_checks.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "fuzz_checks.h"
 

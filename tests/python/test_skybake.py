@@ -30,7 +30,7 @@ def sky():
 
 
 def direction(zenith_deg, azimuth_deg):
-    """The command line's local frame (baker/validation/local_frame.h)."""
+    """The command line's local frame (data_formats/queries/local_frame.h)."""
     t, p = np.broadcast_arrays(np.radians(zenith_deg), np.radians(azimuth_deg))
     return np.stack([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)], axis=-1)
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "data_formats/atmosphere_parameters.h"
+#include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/colour/cie1931_observer.h"
 #include "runtime/colour/ciede2000.h"
 #include "runtime/colour/cielab.h"

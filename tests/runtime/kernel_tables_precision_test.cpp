@@ -15,8 +15,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "data_formats/config.h"
-#include "data_formats/texture_mapping.h"
+#include "data_formats/config/config.h"
+#include "data_formats/parameterization/texture_mapping.h"
 #include "runtime/moon_occluder.h"
 #include "runtime/night_sky.h"
 #include "runtime/planet_shadow.h"

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "data_formats/config.h"
+#include "data_formats/config/config.h"
 
 namespace skybake {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "data_formats/spectrum.h"
+#include "data_formats/spectra/spectrum.h"
 
 namespace skybake {
 namespace {
