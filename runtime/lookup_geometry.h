@@ -23,7 +23,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "runtime/moon_occluder.h"
+#include "runtime/physics/moon_occluder.h"
 
 namespace skybake {
 

@@ -26,7 +26,7 @@ double degreesOfCosine(double cosine) { return degreesFromRadians(std::acos(clam
 }  // namespace
 
 // Tables whose sun axis reaches the domain's lowest sun go on below it to
-// the nadir (the night continuation, runtime/night_sky.h): every sun.
+// the nadir (the night continuation, runtime/physics/night_sky.h): every sun.
 BakedRanges bakedRangesOf(const AtmosphereDomain& d) {
   const double thickness_m = d.top_radius_m - d.bottom_radius_m;
   const double high_m = d.radiusAtDistanceToHorizon(d.scattering_rho_max_m) - d.bottom_radius_m;

@@ -13,7 +13,7 @@
 //    (sun.max_zenith_deg) single scattering is integrated along the ray for
 //    the sun where it is, and what the tables give (multiple scattering, the
 //    sky irradiance) is their value at that angle scaled by the night
-//    continuation (runtime/night_sky.h): continuous there, non-increasing as
+//    continuation (runtime/physics/night_sky.h): continuous there, non-increasing as
 //    the sun sinks, and 0 (kNightFloor) from the point where no sunlit air
 //    is in reach of light scattered twice (121 deg for Earth) to the nadir;
 //  - a bake whose [scene] narrows the altitudes and sun angles (bakedRanges)
@@ -44,12 +44,12 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/bake_file/bake_file.h"
-#include "runtime/atmosphere_ray.h"
-#include "runtime/moon_occluder.h"
-#include "runtime/multiple_scattering_phase.h"
-#include "runtime/phase_functions.h"
-#include "runtime/single_scattering_ray.h"
-#include "runtime/table_sampler.h"
+#include "runtime/physics/atmosphere_ray.h"
+#include "runtime/physics/moon_occluder.h"
+#include "runtime/physics/multiple_scattering_phase.h"
+#include "runtime/physics/phase_functions.h"
+#include "runtime/physics/single_scattering_ray.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 
@@ -232,7 +232,7 @@ class Sky {
   Spectrum transmittance(const glm::dvec3& a, const glm::dvec3& b) const;
 
   // ---- a solar eclipse: the same lookups with a moon before the sun ----
-  // (docs/ECLIPSES.md; runtime/moon_occluder.h, runtime/eclipse_skylight.h)
+  // (docs/ECLIPSES.md; runtime/physics/moon_occluder.h, runtime/physics/eclipse_skylight.h)
   // Single scattering follows the moon's shadow exactly along the ray (the
   // sun's visible fraction at each point, with the moon's parallax);
   // multiple scattering and the sky's irradiance are the tables' scaled by
@@ -256,7 +256,7 @@ class Sky {
                                             const glm::dvec3& sun_dir, const Moon& moon,
                                             const Spectrum& camera_skylight) const;
   // The share of the uneclipsed multiple scattering and sky irradiance left
-  // at `point` (runtime/eclipse_skylight.h), per channel.
+  // at `point` (runtime/physics/eclipse_skylight.h), per channel.
   Spectrum eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
   // The direct sun times the part of its disk the moon leaves visible from
   // `point`; the sky part scaled as multiple scattering is.

@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "runtime/eclipse_skylight.h"
 #include "runtime/lookup_geometry.h"
+#include "runtime/physics/eclipse_skylight.h"
 #include "runtime/sky.h"
 #include "runtime/sky_lookup_constants.h"
 #include "runtime/sky_lookup_start.h"

@@ -5,7 +5,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/parameterization/texture_mapping.h"
-#include "runtime/atmosphere_ray.h"
+#include "runtime/physics/atmosphere_ray.h"
 
 namespace skybake {
 

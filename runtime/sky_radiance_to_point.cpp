@@ -6,7 +6,7 @@
 
 #include "data_formats/error.h"
 #include "runtime/lookup_geometry.h"
-#include "runtime/segment_radiance.h"
+#include "runtime/physics/segment_radiance.h"
 #include "runtime/sky.h"
 #include "runtime/sky_lookup_constants.h"
 #include "runtime/sky_lookup_start.h"

@@ -9,7 +9,7 @@
 // below the lowest baked sun by runtime/night_sky.h.
 #include <algorithm>
 
-#include "runtime/single_scattering_ray.h"
+#include "runtime/physics/single_scattering_ray.h"
 #include "runtime/sky.h"
 #include "runtime/sky_lookup_constants.h"
 

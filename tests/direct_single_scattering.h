@@ -12,11 +12,11 @@
 #include "baker/numerics/optical_depth_integral.h"
 #include "data_formats/config/atmosphere_parameters.h"
 #include "data_formats/parameterization/ray_sphere.h"
-#include "runtime/atmosphere_media.h"
-#include "runtime/moon_occluder.h"
-#include "runtime/phase_functions.h"
-#include "runtime/ray_quadrature.h"
-#include "runtime/sun_disk.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/moon_occluder.h"
+#include "runtime/physics/phase_functions.h"
+#include "runtime/physics/ray_quadrature.h"
+#include "runtime/physics/sun_disk.h"
 
 namespace skybake {
 

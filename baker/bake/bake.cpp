@@ -230,7 +230,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   // integrated along each ray once, rather than every order's integrated
   // and summed: the integral is linear in the density. Texels are divided by
   // the multiple-scattering shape at their r and nu
-  // (runtime/multiple_scattering_phase.h): while iterating, each order's by
+  // (runtime/physics/multiple_scattering_phase.h): while iterating, each order's by
   // its own; summed into the file, by the stored one, which a lookup
   // multiplies back.
   const TableSampler order_sampler(sampler.domain(), orderRadianceSizes(sampler.sizes()));

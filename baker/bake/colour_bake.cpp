@@ -16,8 +16,8 @@
 #include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "runtime/colour/colour_bake_weights.h"
-#include "runtime/multiple_scattering_phase.h"
-#include "runtime/table_sampler.h"
+#include "runtime/physics/multiple_scattering_phase.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 namespace {

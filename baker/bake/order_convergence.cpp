@@ -6,7 +6,7 @@
 #include "data_formats/angles.h"
 #include "data_formats/error.h"
 #include "data_formats/parameterization/texture_mapping.h"
-#include "runtime/phase_functions.h"
+#include "runtime/physics/phase_functions.h"
 
 namespace skybake {
 

@@ -11,7 +11,7 @@
 
 #include "data_formats/bake_file/textures.h"
 #include "data_formats/spectra/spectrum.h"
-#include "runtime/table_sampler.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "data_formats/spectra/spectrum.h"
-#include "runtime/table_sampler.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 

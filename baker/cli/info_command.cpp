@@ -11,8 +11,8 @@
 #include "data_formats/error.h"
 #include "data_formats/parameterization/texture_mapping.h"
 #include "data_formats/terminal_text.h"
-#include "runtime/gpu_tables.h"
 #include "runtime/sky.h"
+#include "runtime/tables/gpu_tables.h"
 
 namespace skybake::cli {
 namespace {
@@ -117,7 +117,7 @@ void runInfo(const std::string& path) {
           "toward the ground are integrated at lookup (about 20 times slower)\n");
     }
   }
-  // What skybake_gl uploads, each choice (runtime/gpu_tables.h).
+  // What skybake_gl uploads, each choice (runtime/tables/gpu_tables.h).
   constexpr double kMiB = 1024.0 * 1024.0;
   const GpuUploadBytes half = gpuUploadBytes(c, GpuTablePrecision::Half);
   const GpuUploadBytes full = gpuUploadBytes(c, GpuTablePrecision::Float);

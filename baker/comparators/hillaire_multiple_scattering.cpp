@@ -6,8 +6,8 @@
 
 #include "baker/stages/optical_depth_table.h"
 #include "baker/stages/progress.h"
-#include "runtime/atmosphere_media.h"
-#include "runtime/atmosphere_ray.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/atmosphere_ray.h"
 
 namespace skybake {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "baker/comparators/sky_method.h"
 #include "data_formats/bake_file/textures.h"
-#include "runtime/table_sampler.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 

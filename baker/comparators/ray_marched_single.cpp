@@ -2,8 +2,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "runtime/atmosphere_media.h"
-#include "runtime/atmosphere_ray.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/atmosphere_ray.h"
 
 namespace skybake {
 namespace {

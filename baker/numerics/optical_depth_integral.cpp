@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "data_formats/parameterization/ray_sphere.h"
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/ray_quadrature.h"
 
 namespace skybake {
 namespace {

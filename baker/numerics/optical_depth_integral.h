@@ -1,7 +1,7 @@
 // Optical depth along a ray, integrated directly from the density profiles.
 #pragma once
 
-#include "runtime/atmosphere_media.h"
+#include "runtime/physics/atmosphere_media.h"
 
 namespace skybake {
 

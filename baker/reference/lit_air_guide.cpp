@@ -8,8 +8,8 @@
 
 #include "baker/numerics/optical_depth_integral.h"
 #include "data_formats/parameterization/ray_sphere.h"
-#include "runtime/atmosphere_ray.h"
-#include "runtime/phase_functions.h"
+#include "runtime/physics/atmosphere_ray.h"
+#include "runtime/physics/phase_functions.h"
 
 namespace skybake {
 namespace {

@@ -30,7 +30,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/config/atmosphere_parameters.h"
-#include "runtime/atmosphere_media.h"
+#include "runtime/physics/atmosphere_media.h"
 
 namespace skybake {
 

@@ -8,12 +8,12 @@
 #include "baker/reference/lit_air_guide.h"
 #include "baker/reference/log_linear_proposal.h"
 #include "baker/reference/path_sampler.h"
-#include "runtime/atmosphere_media.h"
-#include "runtime/atmosphere_ray.h"
-#include "runtime/phase_functions.h"
-#include "runtime/planet_shadow.h"
-#include "runtime/ray_quadrature.h"
-#include "runtime/sun_disk.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/atmosphere_ray.h"
+#include "runtime/physics/phase_functions.h"
+#include "runtime/physics/planet_shadow.h"
+#include "runtime/physics/ray_quadrature.h"
+#include "runtime/physics/sun_disk.h"
 
 namespace skybake {
 namespace {

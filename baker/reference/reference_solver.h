@@ -6,7 +6,7 @@
 // off the ground) is integrated deterministically along the view ray to high
 // accuracy. Higher orders are path traced in the spherical shell: vertices
 // sampled along each ray, next-event estimation toward the sun's centre
-// weighted by the part of its disk above the horizon (runtime/sun_disk.h, the
+// weighted by the part of its disk above the horizon (runtime/physics/sun_disk.h, the
 // bake's own count, so a sun at the horizon is no model mismatch), exact
 // optical depths by quadrature of the density profiles, Lambertian ground,
 // Rayleigh + Cornette-Shanks Mie + absorption, Russian roulette. Only that
@@ -24,7 +24,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/config/atmosphere_parameters.h"
-#include "runtime/moon_occluder.h"
+#include "runtime/physics/moon_occluder.h"
 
 namespace skybake {
 

@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "runtime/atmosphere_ray.h"
-#include "runtime/moon_occluder.h"
+#include "runtime/physics/atmosphere_ray.h"
+#include "runtime/physics/moon_occluder.h"
 
 namespace skybake {
 namespace {

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "baker/stages/indirect_irradiance_table.h"
-#include "runtime/single_scattering_ray.h"
+#include "runtime/physics/single_scattering_ray.h"
 #include "runtime/sky_lookup_constants.h"
 
 namespace skybake {

@@ -7,9 +7,9 @@
 #include "baker/numerics/vector_exp.h"
 #include "baker/stages/multiple_scattering_table.h"
 #include "baker/stages/row_sun_texels.h"
-#include "runtime/atmosphere_media.h"
-#include "runtime/ray_quadrature.h"
-#include "runtime/table_sampler.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/ray_quadrature.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 namespace {

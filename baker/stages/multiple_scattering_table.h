@@ -3,12 +3,12 @@
 
 #include "baker/stages/stage_context.h"
 #include "data_formats/bake_file/textures.h"
-#include "runtime/multiple_scattering_phase.h"
+#include "runtime/physics/multiple_scattering_phase.h"
 
 namespace skybake {
 
 // Sub-intervals of each ray's 4-point Gauss-Legendre rule
-// (runtime/ray_quadrature.h; optically thick ones are split further). The
+// (runtime/physics/ray_quadrature.h; optically thick ones are split further). The
 // density varies smoothly along a ray, falling with the constituents' scale
 // heights. The stored table: against 8 sub-intervals, 4 moved the default
 // bake's sky radiance, ground rays, rays to points and sky irradiance by at

@@ -5,8 +5,8 @@
 
 #include "baker/stages/stage_context.h"
 #include "data_formats/bake_file/textures.h"
-#include "runtime/multiple_scattering_phase.h"
-#include "runtime/table_sampler.h"
+#include "runtime/physics/multiple_scattering_phase.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 

@@ -1,5 +1,5 @@
 // Multiple-scattering tables are stored divided by a shape that depends on
-// the texel's r and nu (runtime/multiple_scattering_phase.h), a different one
+// the texel's r and nu (runtime/physics/multiple_scattering_phase.h), a different one
 // for each order while the bake iterates. These walk a table's texels with
 // the nu each was computed for.
 #pragma once
@@ -9,7 +9,7 @@
 
 #include "baker/stages/stage_context.h"
 #include "data_formats/bake_file/textures.h"
-#include "runtime/multiple_scattering_phase.h"
+#include "runtime/physics/multiple_scattering_phase.h"
 
 namespace skybake {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "baker/numerics/gauss_legendre.h"
-#include "runtime/phase_functions.h"
+#include "runtime/physics/phase_functions.h"
 
 namespace skybake {
 namespace {

@@ -16,7 +16,7 @@
 
 #include "baker/stages/scattering_density_kernel.h"
 #include "baker/stages/scattering_density_table.h"
-#include "runtime/atmosphere_media.h"
+#include "runtime/physics/atmosphere_media.h"
 
 namespace skybake {
 namespace {

@@ -10,7 +10,7 @@ namespace skybake {
 // Light scattered once more at each point, per unit length (W m^-3 sr^-1 nm^-1),
 // from the radiance of order n - 1 and, off the ground, the irradiance of
 // order n - 2 (`ground_irradiance`), divided by order n's multiple-scattering
-// `shape` at the texel's r and nu (runtime/multiple_scattering_phase.h), on
+// `shape` at the texel's r and nu (runtime/physics/multiple_scattering_phase.h), on
 // the texels of the stored density table: mu linear over [-1, 1] (see
 // densityCoordMu). The multiple-scattering stage reads it there too: the
 // density depends on the direction only and has no horizon split, and a

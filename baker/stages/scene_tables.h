@@ -6,7 +6,7 @@
 
 #include "baker/stages/stage_context.h"
 #include "data_formats/bake_file/bake_file.h"
-#include "runtime/multiple_scattering_phase.h"
+#include "runtime/physics/multiple_scattering_phase.h"
 
 namespace skybake {
 

@@ -5,9 +5,9 @@
 #include "baker/numerics/vector_exp.h"
 #include "baker/stages/row_sun_texels.h"
 #include "baker/stages/single_scattering_tables.h"
-#include "runtime/atmosphere_media.h"
-#include "runtime/planet_shadow.h"
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/planet_shadow.h"
+#include "runtime/physics/ray_quadrature.h"
 
 namespace skybake {
 namespace {

@@ -3,7 +3,7 @@
 
 #include "baker/stages/stage_context.h"
 #include "data_formats/bake_file/textures.h"
-#include "runtime/single_scattering_ray.h"
+#include "runtime/physics/single_scattering_ray.h"
 
 namespace skybake {
 

@@ -6,7 +6,7 @@
 
 #include "baker/stages/progress.h"
 #include "data_formats/config/atmosphere_parameters.h"
-#include "runtime/table_sampler.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 

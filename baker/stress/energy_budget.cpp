@@ -29,7 +29,7 @@
 //    ground's ramp so that its kinks do not spoil the quadrature.
 //  - Suns below the tables. The scattering and irradiance tables stop at
 //    mu_s_min, below which Sky scales their value there by its night
-//    continuation (runtime/night_sky.h). The flux beyond is twilight that
+//    continuation (runtime/physics/night_sky.h). The flux beyond is twilight that
 //    keeps dimming; the budget extrapolates it with the decay rate the tables
 //    hold at their edge, and keeps the edge's value over the whole night
 //    side (the tables clamped, as lookups were before the continuation) as
@@ -47,7 +47,7 @@
 #include "baker/numerics/gauss_legendre.h"
 #include "data_formats/parameterization/ray_sphere.h"
 #include "data_formats/parameterization/texture_mapping.h"
-#include "runtime/phase_functions.h"
+#include "runtime/physics/phase_functions.h"
 
 namespace skybake {
 namespace {

@@ -14,8 +14,8 @@
 #include "baker/validation/validation_queries.h"
 #include "data_formats/error.h"
 #include "data_formats/queries/local_frame.h"
-#include "runtime/atmosphere_ray.h"
 #include "runtime/colour/spectral_to_xyz.h"
+#include "runtime/physics/atmosphere_ray.h"
 
 namespace skybake {
 namespace {

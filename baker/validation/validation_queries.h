@@ -31,7 +31,7 @@ inline constexpr double kPointOnGroundTolerance_m = 1e-3;
 // A moon before the sun (a solar eclipse), as the camera sees it: its
 // centre `separation_deg` from the sun's, turned from it across the sun's
 // vertical plane (toward +y of the query's local frame, perpendicular to the
-// sun), at the mean lunar distance (runtime/moon_occluder.h). Angular radius
+// sun), at the mean lunar distance (runtime/physics/moon_occluder.h). Angular radius
 // 0: no moon.
 struct MoonQuery {
   double separation_deg = 0.0;

@@ -63,7 +63,7 @@ struct BakeTables {
   // the bake has no Mie scattering (bakeStoresSingleMie).
   Texture4D single_mie;
   // Scattering orders 2..N divided by the multiple-scattering shape at the
-  // texel's r and own nu (runtime/multiple_scattering_phase.h), W m^-2 nm^-1.
+  // texel's r and own nu (runtime/physics/multiple_scattering_phase.h), W m^-2 nm^-1.
   Texture4D multiple_scattering;
   // Sky irradiance on a horizontal surface (direct sun excluded), W m^-2 nm^-1.
   Texture2D irradiance;

@@ -5,9 +5,9 @@
 #include <fmt/format.h>
 
 #include "data_formats/error.h"
-#include "runtime/atmosphere_media.h"
-#include "runtime/eclipse_skylight.h"
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/eclipse_skylight.h"
+#include "runtime/physics/ray_quadrature.h"
 #include "runtime/sky_lookup_constants.h"
 
 namespace skybake::gl {
@@ -178,7 +178,7 @@ std::string skyGlslDefines() {
   define("SKYBAKE_DIFFERENCE_SEGMENT_MIN_LENGTH_M", glslFloat(kDifferenceSegmentMinLength_m));
   define("SKYBAKE_DIRECT_SEGMENT_SUBINTERVALS", std::to_string(kDirectSegmentSubintervals));
   define("SKYBAKE_GROUND_GRAZE_TOLERANCE_M", glslFloat(kGroundGrazeTolerance_m));
-  // Solar eclipses (runtime/eclipse_skylight.h, sky_lookup_constants.h).
+  // Solar eclipses (runtime/physics/eclipse_skylight.h, sky_lookup_constants.h).
   define("SKYBAKE_ECLIPSE_SINGLE_SCATTERING_SEGMENTS", std::to_string(kEclipseSingleScatteringSegments));
   define("SKYBAKE_ECLIPSE_SMALLEST_UNECLIPSED_SINGLE", glslFloat(kEclipseSmallestUneclipsedSingle));
   define("SKYBAKE_ECLIPSE_IRRADIANCE_BANDS", std::to_string(kEclipseIrradianceBands));

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "data_formats/error.h"
-#include "runtime/gpu_tables.h"
+#include "runtime/tables/gpu_tables.h"
 
 namespace skybake::gl {
 namespace {

@@ -3,7 +3,7 @@
 // textures of their atlas, x = nu * mu_s_size + mu_s, y = mu, z = r), and
 // its constants in a uniform buffer (SkyUniformBlock). The 4D tables are
 // half floats with a power of two per (r, mu_s) slice by default, or
-// RGBA32F on request (runtime/gpu_tables.h: formats and sizes); the 2D
+// RGBA32F on request (runtime/tables/gpu_tables.h: formats and sizes); the 2D
 // tables and the slice scales are RGBA32F. Lanes are the bake's channels in
 // its channel order. Needs a current OpenGL 3.3 core context; everything is
 // deleted with this object.
@@ -12,8 +12,8 @@
 #include <array>
 
 #include "runtime/gl/sky_gl_parameters.h"
-#include "runtime/gpu_tables.h"
 #include "runtime/sky.h"
+#include "runtime/tables/gpu_tables.h"
 
 namespace skybake::gl {
 

@@ -27,7 +27,7 @@ bool skybakeMoonHidesSunNear(vec3 point_m, vec3 sun_dir, SkybakeMoon moon) {
 }
 
 // F per channel for the neighbourhood of `point_m` (eclipseSkylightFraction,
-// the kernel's quadrature of runtime/eclipse_skylight.h): the visible
+// the kernel's quadrature of runtime/physics/eclipse_skylight.h): the visible
 // fraction averaged over directions and distances, weighted by the
 // scattering there and an optical depth back to the point that counts
 // absorption and the share 1 - SKYBAKE_ECLIPSE_REDIRECTED_SCATTERING_SHARE

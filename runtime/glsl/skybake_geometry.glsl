@@ -1,7 +1,7 @@
 // skybake GLSL library (README.md gives the files' order): rays in the
 // atmosphere's shell, the planet's shadow, the sun disk, a moon and the
 // media, with the bake's radii and constants. The media mirror
-// runtime/atmosphere_media.h; the shell's geometry itself (clamped cosines,
+// runtime/physics/atmosphere_media.h; the shell's geometry itself (clamped cosines,
 // distances to spheres, radius and cosine along a ray), the phase functions,
 // the sun disk's visible fraction, the planet's shadow and the moon's
 // occlusion are kernel files the C++ shares (data_formats/kernel/,
@@ -48,7 +48,7 @@ bool skybakeInSunDisk(vec3 view_dir, vec3 sun_dir) {
   return dot(chord, chord) < skybake_sun_disk.y;
 }
 
-// ---- a moon before the sun (runtime/moon_occluder.h) ----
+// ---- a moon before the sun (runtime/physics/moon_occluder.h) ----
 
 // A sphere: centre in metres from the planet's centre (the frame of
 // cameras), radius in metres; radius 0: no moon, nothing hidden.
@@ -95,7 +95,7 @@ float skybakeMoonVisibleSunFractionAt(SkybakeMoonAlongRay along, float t) {
 float skybakeMiePhase(float nu) { return skybakeCornetteShanksPhase(skybake_phase.x, skybake_phase.z, nu); }
 
 // Density in [0, 1] of profile 0 (Rayleigh), 1 (Mie) or 2 (absorption) at
-// an altitude (runtime/density_profile.h).
+// an altitude (runtime/physics/density_profile.h).
 float skybakeLayerDensity(int layer, float altitude_m) {
   vec4 shape = skybake_layer_shape[layer];
   return skybakeLayerDensity(shape.y, shape.z, shape.w, skybake_layer_constant[layer].x, altitude_m);

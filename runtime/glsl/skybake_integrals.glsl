@@ -1,5 +1,5 @@
 // skybake GLSL library (README.md gives the files' order): integrals along a ray
-// (runtime/ray_quadrature.h, single_scattering_ray.cpp, segment_radiance.cpp):
+// (runtime/physics/ray_quadrature.h, single_scattering_ray.cpp, segment_radiance.cpp):
 // composite 4-point Gauss-Legendre rules whose optically thick sub-intervals
 // are split into pieces, single scattering with the ray cut at the edges of
 // the planet's shadow, and the direct integral of a segment's scattering

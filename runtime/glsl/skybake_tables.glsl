@@ -1,6 +1,6 @@
 // skybake GLSL library (README.md gives the files' order): the interpolated
-// table lookups (runtime/table_sampler.h on the CPU), the
-// multiple-scattering shape (runtime/multiple_scattering_phase.h) included.
+// table lookups (runtime/tables/table_sampler.h on the CPU), the
+// multiple-scattering shape (runtime/physics/multiple_scattering_phase.h) included.
 // Where a configuration lives in the tables, the interpolation weights and
 // the night continuation's formula are kernel files the C++ shares
 // (data_formats/kernel/texture_coordinates.glsl,
@@ -181,7 +181,7 @@ SkybakeScatteringCoord skybakeScatteringCoord(float r, float mu, float mu_s, flo
   return SkybakeScatteringCoord(skybakeScatteringCoordNu(nu), u_mu_s, u_mu, u_r);
 }
 
-// ---- the night continuation (runtime/night_sky.h) ----
+// ---- the night continuation (runtime/physics/night_sky.h) ----
 
 // The share of the lowest baked sun's tabulated light left with the sun at
 // zenith cosine mu_s: 1 at and above it, (1 - tan(d / 2) / tan(span / 2))^p

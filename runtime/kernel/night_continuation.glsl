@@ -1,5 +1,5 @@
 // Kernel (data_formats/kernel/kernel_language.h): the night continuation
-// of the tables below their lowest sun (runtime/night_sky.h says what it
+// of the tables below their lowest sun (runtime/physics/night_sky.h says what it
 // models). Per channel the scale is x^p, x from here and the exponent p
 // from the bake's irradiance table.
 

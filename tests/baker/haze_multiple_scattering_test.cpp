@@ -1,5 +1,5 @@
 // Multiple scattering in haze is forward-peaked; the tables must carry that
-// peak between their sun-angle texels (runtime/multiple_scattering_phase.h).
+// peak between their sun-angle texels (runtime/physics/multiple_scattering_phase.h).
 #include <gtest/gtest.h>
 
 #include <cmath>

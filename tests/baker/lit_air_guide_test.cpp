@@ -11,7 +11,7 @@
 #include "baker/reference/lit_air_guide.h"
 #include "baker/reference/path_sampler.h"
 #include "data_formats/queries/local_frame.h"
-#include "runtime/phase_functions.h"
+#include "runtime/physics/phase_functions.h"
 #include "test_configs.h"
 
 namespace skybake {

@@ -14,27 +14,18 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/parameterization/ray_sphere.h"
-#include "runtime/atmosphere_ray.h"
-#include "runtime/density_profile.h"
-#include "runtime/phase_functions.h"
-#include "runtime/sun_disk.h"
+#include "runtime/physics/atmosphere_ray.h"
+#include "runtime/physics/density_profile.h"
+#include "runtime/physics/phase_functions.h"
+#include "runtime/physics/sun_disk.h"
 #include "tests/data_formats/kernel_in_float.h"
+#include "tests/data_formats/kernel_precision_support.h"
 
 namespace skybake {
 namespace {
 
 namespace f = kernel_in_float;
-
-// Float's unit roundoff.
-constexpr double kFloatEpsilon = std::numeric_limits<float>::epsilon() / 2.0;
-
-// Earth's shell, and a thin and a thick one (ratios top / bottom of
-// 1.0005 and 2), where the cancellations the kernel avoids are worst and
-// least.
-struct Shell {
-  float bottom_m, top_m;
-};
-constexpr Shell kShells[] = {{6360e3f, 6420e3f}, {6360e3f, 6363e3f}, {1000e3f, 2000e3f}};
+using namespace kernel_precision;
 
 // Radii from the ground to the top and zenith cosines from -1 to 1, on
 // grids that include the ends and rays within a few texels of the horizon.
@@ -51,24 +42,6 @@ void forEachRay(const Shell& s, Visit visit) {
     const float horizon = static_cast<float>(tangentZenithCosine(r, s.bottom_m));
     for (int k = -20; k <= 20; ++k) visit(r, std::clamp(horizon + 1e-4f * static_cast<float>(k), -1.0f, 1.0f));
   }
-}
-
-// A distance of the shell in float against double. Its inputs are exact;
-// the float result errs by a few roundoffs of the terms it combines, r |mu|
-// and sqrt(discriminant), and by the error of the discriminant itself
-// ((r mu)^2 +- (R - r)(R + r), a few roundoffs of its two terms), which the
-// square root turns into up to its own square root where the discriminant
-// is near 0: a ray near tangent to the sphere, whose distance there changes
-// by as much for a change of mu by a float roundoff. The factors 8 allow
-// for the rounding of each product and sum on the way.
-double distanceTolerance(double r, double mu, double radius) {
-  const double rmu_squared = r * mu * r * mu, q = (radius - r) * (radius + r);
-  const double discriminant = rmu_squared + q;
-  const double discriminant_error = 8.0 * kFloatEpsilon * (rmu_squared + std::abs(q));
-  const double root = std::sqrt(std::max(discriminant, 0.0));
-  const double root_error =
-      discriminant_error > 0.0 ? discriminant_error / (root + std::sqrt(discriminant_error)) : 0.0;
-  return 8.0 * kFloatEpsilon * (r * std::abs(mu) + root) + root_error;
 }
 
 // Whether the ray's discriminant with the sphere is under a quarter of

@@ -169,7 +169,7 @@ GLuint floatTexture(int width, int height, const std::vector<glm::vec4>& texels)
 class GlLookups {
  public:
   // `main`: kQueryMain or kEclipseQueryMain.
-  // `precision`: how the 4D tables are uploaded (runtime/gpu_tables.h).
+  // `precision`: how the 4D tables are uploaded (runtime/tables/gpu_tables.h).
   explicit GlLookups(const Sky& sky, const char* main = kQueryMain,
                      GpuTablePrecision precision = GpuTablePrecision::Half)
       : resources_(sky, precision),

@@ -13,12 +13,12 @@
 #include "baker/numerics/optical_depth_integral.h"
 #include "data_formats/error.h"
 #include "direct_single_scattering.h"
-#include "runtime/atmosphere_media.h"
-#include "runtime/eclipse_skylight.h"
-#include "runtime/moon_occluder.h"
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/eclipse_skylight.h"
+#include "runtime/physics/moon_occluder.h"
+#include "runtime/physics/ray_quadrature.h"
+#include "runtime/physics/sun_disk.h"
 #include "runtime/sky.h"
-#include "runtime/sun_disk.h"
 
 namespace skybake {
 namespace {

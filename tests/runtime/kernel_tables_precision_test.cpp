@@ -17,37 +17,23 @@
 
 #include "data_formats/config/config.h"
 #include "data_formats/parameterization/texture_mapping.h"
-#include "runtime/moon_occluder.h"
-#include "runtime/night_sky.h"
-#include "runtime/planet_shadow.h"
-#include "runtime/table_sampler.h"
+#include "runtime/physics/moon_occluder.h"
+#include "runtime/physics/night_sky.h"
+#include "runtime/physics/planet_shadow.h"
+#include "runtime/tables/table_sampler.h"
 #include "tests/data_formats/kernel_in_float.h"
+#include "tests/data_formats/kernel_precision_support.h"
 
 namespace skybake {
 namespace {
 
 namespace f = kernel_in_float;
 
-// Float's unit roundoff.
-constexpr double kEps = std::numeric_limits<float>::epsilon() / 2.0;
-
-// Earth's shell, and a thin and a thick one.
-struct Shell {
-  float bottom_m, top_m;
-};
-constexpr Shell kShells[] = {{6360e3f, 6420e3f}, {6360e3f, 6363e3f}, {1000e3f, 2000e3f}};
-
-// The float error of a distance to a sphere, as kernel_precision_test.cpp
-// derives it: a few roundoffs of its terms, plus the discriminant's error
-// through the square root near tangency.
-double distanceError(double r, double mu, double radius) {
-  const double rmu_squared = r * mu * r * mu, q = (radius - r) * (radius + r);
-  const double discriminant = rmu_squared + q;
-  const double discriminant_error = 8.0 * kEps * (rmu_squared + std::abs(q));
-  const double root = std::sqrt(std::max(discriminant, 0.0));
-  return 8.0 * kEps * (r * std::abs(mu) + root) +
-         (discriminant_error > 0.0 ? discriminant_error / (root + std::sqrt(discriminant_error)) : 0.0);
-}
+using namespace kernel_precision;
+// Float's unit roundoff, under a short name.
+constexpr double kEps = kFloatEpsilon;
+// The float error of a distance to a sphere.
+constexpr auto& distanceError = distanceTolerance;
 
 // The error of x = (dist - lo) / (hi - lo) from the distance's and the
 // ends' errors (each end a few roundoffs of itself).

@@ -1,4 +1,4 @@
-#include "runtime/multiple_scattering_phase.h"
+#include "runtime/physics/multiple_scattering_phase.h"
 
 #include <gtest/gtest.h>
 

@@ -16,7 +16,7 @@
 #include <fmt/format.h>
 
 #include "batch_lookups.h"
-#include "runtime/night_sky.h"
+#include "runtime/physics/night_sky.h"
 #include "runtime/sky.h"
 
 namespace skybake {

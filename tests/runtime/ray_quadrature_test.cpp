@@ -1,5 +1,5 @@
 // Quadrature along rays through optically thick media.
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/ray_quadrature.h"
 
 #include <cmath>
 

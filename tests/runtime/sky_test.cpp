@@ -14,7 +14,7 @@
 #include "batch_lookups.h"
 #include "data_formats/error.h"
 #include "direct_single_scattering.h"
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/ray_quadrature.h"
 #include "runtime/sky.h"
 
 namespace skybake {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "data_formats/config/config.h"
-#include "runtime/table_sampler.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 namespace {

@@ -53,7 +53,7 @@ def moon_seen_from(camera_m, direction, angular_radius_rad):
     """A solar eclipse's moon for the lookups' moon argument: (centre_m,
     radius_m) of the moon seen from camera_m in unit direction `direction`
     with angular radius angular_radius_rad, at the mean lunar distance
-    (runtime/moon_occluder.h, Moon::seenFrom)."""
+    (runtime/physics/moon_occluder.h, Moon::seenFrom)."""
     centre, radius = _skybake._moon_seen_from(list(map(float, camera_m)), list(map(float, direction)),
                                               float(angular_radius_rad))
     return _np.asarray(centre), radius

@@ -1,4 +1,4 @@
-#include "runtime/eclipse_skylight.h"
+#include "runtime/physics/eclipse_skylight.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "data_formats/parameterization/ray_sphere.h"
-#include "runtime/atmosphere_media.h"
+#include "runtime/physics/atmosphere_media.h"
 
 namespace skybake {
 

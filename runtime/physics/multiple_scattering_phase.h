@@ -43,8 +43,8 @@
 
 #include "data_formats/config/atmosphere_parameters.h"
 #include "data_formats/spectra/spectrum.h"
-#include "runtime/density_profile.h"
-#include "runtime/phase_functions.h"
+#include "runtime/physics/density_profile.h"
+#include "runtime/physics/phase_functions.h"
 
 namespace skybake {
 

@@ -1,10 +1,10 @@
-#include "runtime/segment_radiance.h"
+#include "runtime/physics/segment_radiance.h"
 
 #include <algorithm>
 
-#include "runtime/atmosphere_media.h"
-#include "runtime/phase_functions.h"
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/phase_functions.h"
+#include "runtime/physics/ray_quadrature.h"
 
 namespace skybake {
 

@@ -28,7 +28,7 @@
 #include <glm/vec3.hpp>
 
 #include "data_formats/config/atmosphere_parameters.h"
-#include "runtime/moon_occluder.h"
+#include "runtime/physics/moon_occluder.h"
 
 namespace skybake {
 

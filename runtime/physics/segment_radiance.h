@@ -6,9 +6,9 @@
 #pragma once
 
 #include "data_formats/bake_file/bake_file.h"
-#include "runtime/multiple_scattering_phase.h"
+#include "runtime/physics/multiple_scattering_phase.h"
 #include "runtime/sky.h"
-#include "runtime/table_sampler.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 

@@ -8,9 +8,9 @@
 
 #include "data_formats/bake_file/bake_file.h"
 #include "data_formats/parameterization/texture_mapping.h"
-#include "runtime/night_sky.h"
-#include "runtime/phase_functions.h"
-#include "runtime/sun_disk.h"
+#include "runtime/physics/night_sky.h"
+#include "runtime/physics/phase_functions.h"
+#include "runtime/physics/sun_disk.h"
 
 namespace skybake {
 namespace kernel {
@@ -148,7 +148,7 @@ inline Spectrum sample4D(const Texture4D& t, const ScatteringCoord& c, const Axi
 
 class TableSampler {
  public:
-  // `night`: how the tables go on below their lowest sun (runtime/night_sky.h);
+  // `night`: how the tables go on below their lowest sun (runtime/physics/night_sky.h);
   // by default they do not (the bake reads them only inside its domain).
   TableSampler(const AtmosphereDomain& domain, const TextureSizes& sizes, const NightContinuation& night = {})
       : domain_(domain),

@@ -1,10 +1,10 @@
-#include "runtime/single_scattering_ray.h"
+#include "runtime/physics/single_scattering_ray.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "runtime/atmosphere_media.h"
-#include "runtime/ray_quadrature.h"
+#include "runtime/physics/atmosphere_media.h"
+#include "runtime/physics/ray_quadrature.h"
 #include "runtime/sky_lookup_constants.h"
 
 namespace skybake {

@@ -10,9 +10,9 @@
 #pragma once
 
 #include "data_formats/config/atmosphere_parameters.h"
-#include "runtime/moon_occluder.h"
-#include "runtime/planet_shadow.h"
-#include "runtime/table_sampler.h"
+#include "runtime/physics/moon_occluder.h"
+#include "runtime/physics/planet_shadow.h"
+#include "runtime/tables/table_sampler.h"
 
 namespace skybake {
 

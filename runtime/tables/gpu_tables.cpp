@@ -1,5 +1,5 @@
 // The 4D tables as skybake_gl uploads them (gpu_tables.h).
-#include "runtime/gpu_tables.h"
+#include "runtime/tables/gpu_tables.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "runtime/night_sky.h"
+#include "runtime/physics/night_sky.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "data_formats/config/atmosphere_parameters.h"
-#include "runtime/density_profile.h"
+#include "runtime/physics/density_profile.h"
 
 namespace skybake {
 
