@@ -193,11 +193,9 @@ struct MuSDistanceRange {
 // The unit coordinate of the suns below the horizon (SplitAtHorizon): with
 // t = mu_s / mu_s_min (the sine of the depression over the lowest sun's; 0
 // at the horizon, 1 at mu_s_min) and s in [0, 1] from the horizon down,
-// t = c s + (1 - c) s^2 for c = kSunAxisHorizonSpacing.
+// t = c s + (1 - c) s^2 for c = kSunAxisHorizonSpacing. The lookups' s from
+// t is the kernel's skybakeSunDepthFromSine; the bake's t from s is here.
 struct SunBelowHorizonAxis {
-  static double depthFromSine(double t) {  // s for t in [0, 1]
-    return kernel::skybakeSunDepthFromSine(t, kSunAxisHorizonSpacing);
-  }
   static double sineFromDepth(double s) {
     constexpr double c = kSunAxisHorizonSpacing;
     return c * s + (1.0 - c) * s * s;

@@ -66,12 +66,9 @@ inline Spectrum sampleBilinear(const Texture2D& t, TextureCoord2D uv) {
 // linear one keeps lookups vectorized.
 enum class Blend { Linear, GeometricWhereSteep };
 
-// The ratios of neighbours from which the blend starts to be geometric and
-// from which it is wholly so (the kernel's skybakeGeometricBlendShare says
-// why two).
-inline constexpr float kGeometricBlendRatio = SKYBAKE_GEOMETRIC_BLEND_RATIO;
-inline constexpr float kFullyGeometricBlendRatio = SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO;
-
+// Where the blend starts to be geometric and where it is wholly so: the
+// kernel's SKYBAKE_GEOMETRIC_BLEND_RATIO and SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO
+// (skybakeGeometricBlendShare says why two).
 inline float geometricBlend(float a, float b, float w) { return kernel_float::skybakeGeometricBlend(a, b, w); }
 
 inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, float w) {

@@ -30,13 +30,13 @@ TEST(TableSampler, GeometricBlendFollowsAnExponential) {
   EXPECT_NEAR(geometricBlend(1.0f, 100.0f, 0.5f), 10.0f, 1e-5f);
   const Spectrum b = blendGeometricWhereSteep(Spectrum(1.0f), Spectrum(100.0f), 0.5f);
   EXPECT_NEAR(b[0], 10.0f, 1e-5f);
-  // Neighbours within kGeometricBlendRatio blend linearly.
+  // Neighbours within SKYBAKE_GEOMETRIC_BLEND_RATIO blend linearly.
   const Spectrum near = blendGeometricWhereSteep(Spectrum(1.0f), Spectrum(1.2f), 0.5f);
   EXPECT_FLOAT_EQ(near[0], 1.1f);
 }
 
-// No jump where the neighbours' ratio reaches kGeometricBlendRatio (or
-// kFullyGeometricBlendRatio): as the ratio of two nu slices changes with the
+// No jump where the neighbours' ratio reaches SKYBAKE_GEOMETRIC_BLEND_RATIO
+// (or SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO): as the ratio of two nu slices changes with the
 // sun, a switch there made the sky step. Midway between 1 and b the linear
 // and geometric blends differ by (1 + b) / 2 - sqrt(b): 0.0253 at b = 1.5
 // (1.0 % of 1.25), so a switch jumps by that. With the smooth move from one to
@@ -55,7 +55,7 @@ TEST(TableSampler, GeometricBlendMovesSmoothlyFromLinearAsNeighboursDrawApart) {
     ASSERT_GE(blended, std::sqrt(b) * (1.0f - 1e-6f)) << "between the geometric and linear blends, b " << b;
     previous = blended;
   }
-  EXPECT_NEAR(previous, std::sqrt(2.2f), 1e-6f);  // wholly geometric from kFullyGeometricBlendRatio on
+  EXPECT_NEAR(previous, std::sqrt(2.2f), 1e-6f);  // wholly geometric from SKYBAKE_FULLY_GEOMETRIC_BLEND_RATIO on
 }
 
 // The scattering density falls steeply with the sun below the horizon (tenfold
