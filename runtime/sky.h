@@ -34,11 +34,17 @@
 // table lookup).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -53,9 +59,42 @@
 
 namespace skybake {
 
-struct RadianceAndTransmittance {
-  Spectrum radiance;       // W m^-2 sr^-1 nm^-1 scattered toward the camera
-  Spectrum transmittance;  // along the same path, dimensionless
+// A lookup's result holds one or more per-channel values (Values): a
+// Spectrum for one lane group (the lookups below), std::vector<float> for
+// every channel of a bake (Sky::everyChannel). lookupParts lists them in
+// order, so that code joining or storing results handles every lookup alike.
+template <typename Values>
+struct RadianceAndTransmittanceOf {
+  Values radiance;       // W m^-2 sr^-1 nm^-1 scattered toward the camera
+  Values transmittance;  // along the same path, dimensionless
+};
+using RadianceAndTransmittance = RadianceAndTransmittanceOf<Spectrum>;
+template <typename Values>
+auto lookupParts(RadianceAndTransmittanceOf<Values>& v) {
+  return std::tie(v.radiance, v.transmittance);
+}
+inline auto lookupParts(Spectrum& v) { return std::tie(v); }
+inline auto lookupParts(std::vector<float>& v) { return std::tie(v); }
+
+// What lights a lookup: the sun and, during a solar eclipse, the moon before
+// it. A sun direction alone converts to it (no moon), so a plain lookup reads
+// sky.skyRadiance(camera, view_dir, sun_dir); an eclipse
+// sky.skyRadiance(camera, view_dir, {sun_dir, moon}).
+struct Sunlight {
+  // Implicit: a direction is the uneclipsed sun.
+  Sunlight(const glm::dvec3& sun_direction) : direction(sun_direction) {}  // NOLINT(google-explicit-constructor)
+  Sunlight(const glm::dvec3& sun_direction, const Moon& eclipse_moon) : direction(sun_direction), moon(eclipse_moon) {}
+  Sunlight(const glm::dvec3& sun_direction, const Moon& eclipse_moon, const Spectrum& skylight_at_camera)
+      : direction(sun_direction), moon(eclipse_moon), camera_skylight(skylight_at_camera) {}
+
+  glm::dvec3 direction;  // unit vector toward the sun (the same everywhere: the sun is far)
+  Moon moon;             // radius 0: no eclipse
+  // Sky::eclipseSkylight at the camera, given by a caller that looks up
+  // many views from one camera in the atmosphere (an image): each lookup
+  // then costs about a third as much. A camera in space enters the
+  // atmosphere at another point for each view: leave it unset there. Used
+  // only with a moon.
+  std::optional<Spectrum> camera_skylight;
 };
 
 // The camera altitudes and sun zenith angles a bake's scattering tables
@@ -84,9 +123,30 @@ struct BakedRanges {
 // what Sky::bakedRanges gives, without loading the tables.
 BakedRanges bakedRangesOf(const AtmosphereDomain& domain);
 
-struct SunAndSkyIrradiance {
-  Spectrum sun;  // direct sun, W m^-2 nm^-1
-  Spectrum sky;  // scattered skylight, W m^-2 nm^-1
+template <typename Values>
+struct SunAndSkyIrradianceOf {
+  Values sun;  // direct sun, W m^-2 nm^-1
+  Values sky;  // scattered skylight, W m^-2 nm^-1
+};
+using SunAndSkyIrradiance = SunAndSkyIrradianceOf<Spectrum>;
+template <typename Values>
+auto lookupParts(SunAndSkyIrradianceOf<Values>& v) {
+  return std::tie(v.sun, v.sky);
+}
+
+// A lookup's result with every channel of a bake in place of each Spectrum
+// (Sky::everyChannel): std::vector<float> for a Spectrum,
+// RadianceAndTransmittanceOf<std::vector<float>> for a
+// RadianceAndTransmittance, and so on for any result template of Values.
+template <typename Result>
+struct EveryChannelOf;
+template <>
+struct EveryChannelOf<Spectrum> {
+  using type = std::vector<float>;
+};
+template <template <typename> class Result>
+struct EveryChannelOf<Result<Spectrum>> {
+  using type = Result<std::vector<float>>;
 };
 
 // Many view directions from one camera under one sun, as separate arrays
@@ -103,17 +163,10 @@ struct SpectrumBatch {
   float* channel[kMaxChannels];
 };
 
-// N-channel results of a spectral bake's lookups (and of any bake's: an
-// ordinary bake has channelCount() entries), one float per channel in the
+// Every channel's results (Sky::everyChannel), one float per channel in the
 // file's channel order.
-struct ChannelRadianceAndTransmittance {
-  std::vector<float> radiance;       // W m^-2 sr^-1 nm^-1
-  std::vector<float> transmittance;  // dimensionless
-};
-struct ChannelSunAndSkyIrradiance {
-  std::vector<float> sun;  // W m^-2 nm^-1
-  std::vector<float> sky;  // W m^-2 nm^-1
-};
+using ChannelRadianceAndTransmittance = RadianceAndTransmittanceOf<std::vector<float>>;
+using ChannelSunAndSkyIrradiance = SunAndSkyIrradianceOf<std::vector<float>>;
 
 // What a bake's channels hold (skybake:channels in FORMAT.md).
 struct BakeChannels {
@@ -148,25 +201,22 @@ class Sky {
   // wavelengths (FORMAT.md, "Spectral bakes"). Group g is an ordinary Sky of
   // its wavelengths (channels 4 g to 4 g + 3), whose every lookup works as
   // on a bake of those wavelengths alone; an ordinary bake's only group is
-  // the Sky itself. The lookups above that return a Spectrum serve one
-  // group: on a spectral Sky they throw Error(BadInput) (use laneGroup(g) or
-  // the channel lookups below).
+  // the Sky itself. The lookups below return a Spectrum, one group's lanes:
+  // on a spectral Sky they throw Error(BadInput) (use everyChannel).
   int laneGroupCount() const { return lane_groups_.empty() ? 1 : static_cast<int>(lane_groups_.size()); }
   const Sky& laneGroup(int g) const;
   // The file channel of lane 0 of group g.
   int laneGroupFirstChannel(int g) const { return g * kMaxChannels; }
-  // The lookups of the same names, on every group, their lanes joined into
-  // channelCount() values (entries past a group's channels left out).
-  ChannelRadianceAndTransmittance channelSkyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                                     const glm::dvec3& sun_dir, double shadow_length_m = 0.0) const;
-  ChannelRadianceAndTransmittance channelReceivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                                          const glm::dvec3& sun_dir) const;
-  ChannelRadianceAndTransmittance channelRadianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
-                                                         const glm::dvec3& sun_dir, double shadow_length_m = 0.0) const;
-  ChannelSunAndSkyIrradiance channelIrradiance(const glm::dvec3& point, const glm::dvec3& normal,
-                                               const glm::dvec3& sun_dir) const;
-  std::vector<float> channelTransmittance(const glm::dvec3& a, const glm::dvec3& b) const;
-  std::vector<float> channelSolarRadiance() const;
+  // Any lookup on every channel of any bake: `lookup(group)` (or
+  // `lookup(group, g)`) on each lane group in turn, each Spectrum of its
+  // results joined into channelCount() values (EveryChannelOf), e.g.
+  //   sky.everyChannel([&](const Sky& group) { return group.skyRadiance(camera, view_dir, sun); }).radiance
+  template <typename Lookup>
+  auto everyChannel(Lookup&& lookup) const;
+  // The same written to the caller's arrays, one per Spectrum of the result
+  // (in lookupParts order), channelCount() floats each: no allocation.
+  template <typename Lookup, size_t Parts>
+  void writeEveryChannel(Lookup&& lookup, const std::array<float*, Parts>& out) const;
   // Luminance (cd m^-2) of channelCount() values this bake returns
   // (illuminance in lx of an irradiance): with channelLuminanceWeights(),
   // the CIE ybar weights of all N wavelengths together, as luminance() for
@@ -191,36 +241,61 @@ class Sky {
   // The bake report the file carries (JSON text, opaque to lookups).
   const std::string& bakeReportJson() const { return bake_.report_json; }
 
+  // ---- the lookups ----
+  // Each takes the sun as a Sunlight: a sun direction, or a direction and a
+  // moon for a solar eclipse (docs/ECLIPSES.md; runtime/physics/
+  // moon_occluder.h, eclipse_skylight.h). Under an eclipse single
+  // scattering follows the moon's shadow exactly along the ray (the sun's
+  // visible fraction at each point, with the moon's parallax); multiple
+  // scattering and the sky's irradiance are the tables' scaled by the
+  // visible fraction averaged over the neighbourhood light comes from (an
+  // approximation: the light of totality comes from sunlit air outside the
+  // umbra). A moon that hides no part of the sun from anywhere in the
+  // atmosphere gives the uneclipsed values exactly; while it is near the
+  // sun a lookup costs about 10 times a day lookup.
+
   // Radiance of the sky seen from `camera` looking along `view_dir`, and the
   // transmittance to where the ray leaves the atmosphere or meets the ground.
-  // The ground's own reflected light is not included (see groundRadiance).
+  // The ground's own reflected light is not included (see receivedRadiance).
   // shadow_length_m: the length of the ray's first part that lies in the
   // shadow of scene geometry (0 for none), for light shafts.
-  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
+  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const Sunlight& sun,
                                        double shadow_length_m = 0.0) const;
 
   // What a viewer receives along the ray, the sun disk aside: skyRadiance
   // plus, for a ray that ends on the ground, the transmitted radiance of the
   // Lambertian ground (the bake's albedo) lit by the sun and the sky.
   RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                            const glm::dvec3& sun_dir) const;
+                                            const Sunlight& sun) const;
 
   // Radiance scattered toward `camera` between it and `point` (aerial
-  // perspective), and the transmittance between them.
-  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point, const glm::dvec3& sun_dir,
+  // perspective), and the transmittance between them. shadow_length_m: the
+  // part of the segment in the shadow of scene geometry, as for skyRadiance.
+  // Under an eclipse the segment's single scattering is integrated with the
+  // moon's shadow, the rest (its multiple scattering) scaled by the skylight
+  // share at the segment's start, as skyRadiance scales it.
+  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point, const Sunlight& sun,
                                            double shadow_length_m = 0.0) const;
 
   // Sun and sky irradiance on a surface at `point` with unit `normal`. The sky
   // part assumes the surface sees the sky hemisphere around its normal as a
-  // horizontal surface would, scaled by (1 + normal . up) / 2.
-  SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const;
+  // horizontal surface would, scaled by (1 + normal . up) / 2. Under an
+  // eclipse the sun part is the disk's visible fraction of it, the sky part
+  // scaled as multiple scattering is.
+  SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal, const Sunlight& sun) const;
 
   // The direct sun's part of irradiance, W m^-2 nm^-1: the sun's irradiance
   // at the top of the atmosphere times the transmittance to it and the part
-  // of its disk above the horizon, times the cosine of incidence (0 facing
-  // away; a normal along sun_dir gives the sun's irradiance at normal
-  // incidence). It needs no table a bake can leave out.
-  Spectrum sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir) const;
+  // of its disk above the horizon (and past the moon), times the cosine of
+  // incidence (0 facing away; a normal along the sun direction gives the
+  // sun's irradiance at normal incidence). It needs no table a bake can
+  // leave out.
+  Spectrum sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const Sunlight& sun) const;
+
+  // The share of the uneclipsed multiple scattering and sky irradiance left
+  // at `point` under sun.moon (runtime/physics/eclipse_skylight.h), per
+  // channel; 1 without a moon. Sunlight::camera_skylight takes it.
+  Spectrum eclipseSkylight(const glm::dvec3& point, const Sunlight& sun) const;
 
   // Radiance of the sun disk at the top of the atmosphere: irradiance over the
   // disk's solid angle. Multiply by the transmittance along the view ray.
@@ -231,50 +306,9 @@ class Sky {
   // segment passes through the ground).
   Spectrum transmittance(const glm::dvec3& a, const glm::dvec3& b) const;
 
-  // ---- a solar eclipse: the same lookups with a moon before the sun ----
-  // (docs/ECLIPSES.md; runtime/physics/moon_occluder.h, runtime/physics/eclipse_skylight.h)
-  // Single scattering follows the moon's shadow exactly along the ray (the
-  // sun's visible fraction at each point, with the moon's parallax);
-  // multiple scattering and the sky's irradiance are the tables' scaled by
-  // the visible fraction averaged over the neighbourhood light comes from
-  // (an approximation: the light of totality comes from sunlit air outside
-  // the umbra). A moon that hides no part of the sun from anywhere in the
-  // atmosphere gives the uneclipsed lookups' values exactly. About 10 times
-  // a day lookup while the moon is near the sun.
-  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
-                                       const Moon& moon) const;
-  RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                            const glm::dvec3& sun_dir, const Moon& moon) const;
-  // The same with the camera's skylight share given (eclipseSkylight of the
-  // camera): it is one for every view from a camera in the atmosphere, so an
-  // image computes it once and its lookups cost about a third as much. (A
-  // camera in space enters the atmosphere at another point for each view:
-  // use the lookups above.)
-  RadianceAndTransmittance skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
-                                       const Moon& moon, const Spectrum& camera_skylight) const;
-  RadianceAndTransmittance receivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                            const glm::dvec3& sun_dir, const Moon& moon,
-                                            const Spectrum& camera_skylight) const;
-  // The share of the uneclipsed multiple scattering and sky irradiance left
-  // at `point` (runtime/physics/eclipse_skylight.h), per channel.
-  Spectrum eclipseSkylight(const glm::dvec3& point, const glm::dvec3& sun_dir, const Moon& moon) const;
-  // The direct sun times the part of its disk the moon leaves visible from
-  // `point`; the sky part scaled as multiple scattering is.
-  SunAndSkyIrradiance irradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
-                                 const Moon& moon) const;
-  Spectrum sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const glm::dvec3& sun_dir,
-                         const Moon& moon) const;
-  // Radiance to a point under an eclipse (aerial perspective; no light
-  // shafts): single scattering along the segment integrated with the moon's
-  // shadow, the rest of the plain radiance to the point (its multiple
-  // scattering) scaled by the skylight share at the segment's start, as
-  // skyRadiance scales it. The second form takes that share given.
-  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point, const glm::dvec3& sun_dir,
-                                           const Moon& moon) const;
-  RadianceAndTransmittance radianceToPoint(const glm::dvec3& camera, const glm::dvec3& point, const glm::dvec3& sun_dir,
-                                           const Moon& moon, const Spectrum& camera_skylight) const;
-
-  // skyRadiance for many view directions at once; same results.
+  // skyRadiance for many view directions at once, uneclipsed and without
+  // light shafts (vectorized across rays: a renderer's or a sweep's bulk
+  // path); the same results.
   void skyRadianceBatch(const glm::dvec3& camera, const glm::dvec3& sun_dir, const ViewRayBatch& rays,
                         SpectrumBatch radiance, SpectrumBatch transmittance) const;
 
@@ -330,6 +364,16 @@ class Sky {
   };
   SkyRadianceParts skyRadianceParts(const glm::dvec3& camera, const glm::dvec3& view_dir, const glm::dvec3& sun_dir,
                                     double shadow_length_m) const;
+  // The lookups under an eclipse (sky_eclipse.cpp); the public lookups
+  // call them when sun.moon is present.
+  RadianceAndTransmittance eclipsedSkyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
+                                               const Sunlight& sun, double shadow_length_m) const;
+  RadianceAndTransmittance eclipsedRadianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
+                                                   const Sunlight& sun, double shadow_length_m) const;
+  SunAndSkyIrradiance eclipsedIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const Sunlight& sun) const;
+  // Whether the lookup is eclipsed: sun.moon checked (Error(BadInput) for a
+  // moon that is not finite) and present.
+  static bool eclipsed(const Sunlight& sun);
   // Whether the moon may hide part of the sun from some point of the
   // atmosphere within reach of a ray from `point` (false: the eclipse
   // lookups are the plain ones).
@@ -350,9 +394,15 @@ class Sky {
     if (!lane_groups_.empty()) refuseSpectrumLookup(lookup);
   }
   [[noreturn]] void refuseSpectrumLookup(const char* lookup) const;
-  // Group g's lanes of every group's `lookup(group)` (a Spectrum) into channelCount() values.
+  // lookup(group, g) where the lookup takes the group's index, else lookup(group).
   template <typename Lookup>
-  std::vector<float> joinedChannels(Lookup&& lookup) const;
+  static decltype(auto) callOnGroup(Lookup& lookup, const Sky& group, int g) {
+    if constexpr (std::is_invocable_v<Lookup&, const Sky&, int>) {
+      return lookup(group, g);
+    } else {
+      return lookup(group);
+    }
+  }
 
   // A spectral bake's lane groups, each an ordinary Sky (empty otherwise).
   // Before bake_: built from the file's groups, which the constructor moves
@@ -368,5 +418,34 @@ class Sky {
   BakedRanges ranges_;
   double baked_mu_s_min_, baked_mu_s_max_;  // ranges_' sun angles as zenith cosines
 };
+
+template <typename Lookup, size_t Parts>
+void Sky::writeEveryChannel(Lookup&& lookup, const std::array<float*, Parts>& out) const {
+  for (int g = 0; g < laneGroupCount(); ++g) {
+    const Sky& group = laneGroup(g);
+    auto result = callOnGroup(lookup, group, g);
+    const auto parts = lookupParts(result);
+    static_assert(std::tuple_size_v<std::decay_t<decltype(parts)>> == Parts,
+                  "writeEveryChannel: one output array per Spectrum of the lookup's result");
+    const int first = laneGroupFirstChannel(g), count = group.channelCount();
+    [&]<size_t... K>(std::index_sequence<K...>) { (std::copy_n(&std::get<K>(parts)[0], count, out[K] + first), ...); }
+    (std::make_index_sequence<Parts>{});
+  }
+}
+
+template <typename Lookup>
+auto Sky::everyChannel(Lookup&& lookup) const {
+  using Result = std::decay_t<decltype(callOnGroup(lookup, *this, 0))>;
+  typename EveryChannelOf<Result>::type out{};
+  auto parts = lookupParts(out);
+  constexpr size_t kParts = std::tuple_size_v<decltype(parts)>;
+  std::array<float*, kParts> arrays{};
+  [&]<size_t... K>(std::index_sequence<K...>) {
+    ((std::get<K>(parts).resize(static_cast<size_t>(channelCount())), arrays[K] = std::get<K>(parts).data()), ...);
+  }
+  (std::make_index_sequence<kParts>{});
+  writeEveryChannel(lookup, arrays);
+  return out;
+}
 
 }  // namespace skybake

@@ -1,6 +1,5 @@
-// Every channel of a bake through its lane groups: a spectral bake's groups
-// are ordinary Skies (sky.h), whose Spectrum lookups are joined here into
-// one value per channel.
+// A bake's lane groups: a spectral bake's groups are ordinary Skies
+// (sky.h), whose lookups Sky::everyChannel joins into one value per channel.
 #include <string>
 
 #include "data_formats/error.h"
@@ -19,78 +18,8 @@ const Sky& Sky::laneGroup(int g) const {
 void Sky::refuseSpectrumLookup(const char* lookup) const {
   throw Error(ErrorKind::BadInput,
               std::string(lookup) + ": a spectral bake of " + std::to_string(channelCount()) +
-                  " wavelengths returns them from the channel lookups (channelSkyRadiance, ...) or per lane group "
-                  "of 4 (laneGroup(g)); a Spectrum holds 4");
-}
-
-template <typename Lookup>
-std::vector<float> Sky::joinedChannels(Lookup&& lookup) const {
-  std::vector<float> out;
-  out.reserve(static_cast<size_t>(channelCount()));
-  for (int g = 0; g < laneGroupCount(); ++g) {
-    const Sky& group = laneGroup(g);
-    const Spectrum lanes = lookup(group);
-    for (int c = 0; c < group.channelCount(); ++c) out.push_back(lanes[c]);
-  }
-  return out;
-}
-
-namespace {
-
-// The radiance and transmittance lanes of every group, from one lookup per group.
-template <typename Lookup>
-ChannelRadianceAndTransmittance joinedRadiance(const Sky& sky, Lookup&& lookup) {
-  ChannelRadianceAndTransmittance out;
-  for (int g = 0; g < sky.laneGroupCount(); ++g) {
-    const Sky& group = sky.laneGroup(g);
-    const RadianceAndTransmittance v = lookup(group);
-    for (int c = 0; c < group.channelCount(); ++c) {
-      out.radiance.push_back(v.radiance[c]);
-      out.transmittance.push_back(v.transmittance[c]);
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
-ChannelRadianceAndTransmittance Sky::channelSkyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                                        const glm::dvec3& sun_dir, double shadow_length_m) const {
-  return joinedRadiance(
-      *this, [&](const Sky& group) { return group.skyRadiance(camera, view_dir, sun_dir, shadow_length_m); });
-}
-
-ChannelRadianceAndTransmittance Sky::channelReceivedRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                                             const glm::dvec3& sun_dir) const {
-  return joinedRadiance(*this, [&](const Sky& group) { return group.receivedRadiance(camera, view_dir, sun_dir); });
-}
-
-ChannelRadianceAndTransmittance Sky::channelRadianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
-                                                            const glm::dvec3& sun_dir, double shadow_length_m) const {
-  return joinedRadiance(
-      *this, [&](const Sky& group) { return group.radianceToPoint(camera, point, sun_dir, shadow_length_m); });
-}
-
-ChannelSunAndSkyIrradiance Sky::channelIrradiance(const glm::dvec3& point, const glm::dvec3& normal,
-                                                  const glm::dvec3& sun_dir) const {
-  ChannelSunAndSkyIrradiance out;
-  for (int g = 0; g < laneGroupCount(); ++g) {
-    const Sky& group = laneGroup(g);
-    const SunAndSkyIrradiance v = group.irradiance(point, normal, sun_dir);
-    for (int c = 0; c < group.channelCount(); ++c) {
-      out.sun.push_back(v.sun[c]);
-      out.sky.push_back(v.sky[c]);
-    }
-  }
-  return out;
-}
-
-std::vector<float> Sky::channelTransmittance(const glm::dvec3& a, const glm::dvec3& b) const {
-  return joinedChannels([&](const Sky& group) { return group.transmittance(a, b); });
-}
-
-std::vector<float> Sky::channelSolarRadiance() const {
-  return joinedChannels([](const Sky& group) { return group.solarRadiance(); });
+                  " wavelengths returns them through everyChannel or per lane group of 4 (laneGroup(g)); a Spectrum "
+                  "holds 4");
 }
 
 double Sky::luminance(std::span<const float> channel_values) const {

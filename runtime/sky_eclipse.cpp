@@ -43,33 +43,28 @@ bool Sky::moonHidesSunNear(const glm::dvec3& point, const glm::dvec3& sun_dir, c
   return separation_rad < atmosphere().sun_angular_radius_rad + moon_radius_rad + parallax_rad;
 }
 
-Spectrum Sky::eclipseSkylight(const glm::dvec3& point_given, const glm::dvec3& sun_dir_given, const Moon& moon) const {
+bool Sky::eclipsed(const Sunlight& sun) {
+  requireLookupMoon(sun.moon);
+  return sun.moon.present();
+}
+
+Spectrum Sky::eclipseSkylight(const glm::dvec3& point_given, const Sunlight& sun) const {
   const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
-  requireLookupMoon(moon);
+  const glm::dvec3 sun_dir = lookupDirection(sun.direction, "sun direction");
+  requireLookupMoon(sun.moon);
   requireOneLaneGroup("eclipseSkylight");
   // The kernel's points lie within the atmosphere's reach of `point`: a moon
   // that hides the sun from none of them leaves F exactly 1.
-  if (!moonHidesSunNear(point, sun_dir, moon)) return Spectrum(1.0f);
-  return eclipseSkylightFraction(atmosphere(), moon, point, sun_dir);
+  if (!moonHidesSunNear(point, sun_dir, sun.moon)) return Spectrum(1.0f);
+  return eclipseSkylightFraction(atmosphere(), sun.moon, point, sun_dir);
 }
 
-RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
-                                          const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
-  requireLookupMoon(moon);
-  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
-  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
-  return skyRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
-}
-
-RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
-                                          const glm::dvec3& sun_dir_given, const Moon& moon,
-                                          const Spectrum& camera_skylight) const {
-  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
-  requireLookupMoon(moon);
+RadianceAndTransmittance Sky::eclipsedSkyRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
+                                                  const Sunlight& sun, double shadow_length_m) const {
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun.direction);
+  const Moon& moon = sun.moon;
   if (insideMoon(camera, moon)) return {Spectrum(0.0f), Spectrum(0.0f)};
-  SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, 0.0);
+  SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, shadow_length_m);
   if (!p.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   if (moonHidesSunNear(p.start.origin, sun_dir, moon)) {
     const AtmosphereRay& s = p.start;
@@ -83,83 +78,40 @@ RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera_given, const 
     p.single.rayleigh *= eclipsedShare(with_moon.rayleigh, without.rayleigh);
     p.single.mie *= eclipsedShare(with_moon.mie, without.mie);
   }
-  p.multiple *= camera_skylight;
+  // The skylight share where the ray starts in the atmosphere.
+  p.multiple *= sun.camera_skylight ? *sun.camera_skylight : eclipseSkylight(p.start.origin, {sun_dir, moon});
   return {p.single.rayleigh * static_cast<float>(rayleighPhase(p.nu)) +
               p.single.mie * static_cast<float>(mie_phase_(p.nu)) + p.multiple,
           p.transmittance};
 }
 
-RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
-                                               const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
-  requireLookupMoon(moon);
-  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
-  if (!start.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
-  return receivedRadiance(camera, view_dir, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
-}
-
-RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
-                                               const glm::dvec3& sun_dir_given, const Moon& moon,
-                                               const Spectrum& camera_skylight) const {
-  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
-  requireLookupMoon(moon);
-  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir, moon, camera_skylight);
-  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
-  if (!start.inside || !start.ends_on_ground) return v;
-  const glm::dvec3 ground = start.origin + view_dir * start.length;
-  const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun_dir, moon);
-  v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
-  return v;
-}
-
-Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
-                            const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
-  requireLookupMoon(moon);
-  return sunIrradiance(point, normal, sun_dir) *
-         static_cast<float>(moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad));
-}
-
-SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
-                                    const glm::dvec3& sun_dir_given, const Moon& moon) const {
-  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
-  requireLookupMoon(moon);
+SunAndSkyIrradiance Sky::eclipsedIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
+                                            const Sunlight& sun) const {
+  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun.direction);
   SunAndSkyIrradiance e = irradiance(point, normal, sun_dir);
-  const double visible = moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad);
+  const double visible = sun.moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad);
   e.sun *= static_cast<float>(visible);
-  if (moonHidesSunNear(point, sun_dir, moon)) e.sky *= eclipsedSkyIrradianceShare(point, sun_dir, moon);
+  if (moonHidesSunNear(point, sun_dir, sun.moon)) e.sky *= eclipsedSkyIrradianceShare(point, sun_dir, sun.moon);
   return e;
 }
 
-RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera_given, const glm::dvec3& point_given,
-                                              const glm::dvec3& sun_dir_given, const Moon& moon) const {
+RadianceAndTransmittance Sky::eclipsedRadianceToPoint(const glm::dvec3& camera_given, const glm::dvec3& point_given,
+                                                      const Sunlight& sun, double shadow_length_m_given) const {
   const glm::dvec3 camera = lookupPosition(camera_given, "camera");
   const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
-  requireLookupMoon(moon);
-  const glm::dvec3 offset = point - camera;
-  const double distance = glm::length(offset);
-  const AtmosphereRay start =
-      distance > 0.0 ? enterAtmosphere(sampler_.domain(), camera, offset / distance) : AtmosphereRay{};
-  if (!(distance > 0.0) || !start.inside) return radianceToPoint(camera, point, sun_dir);
-  return radianceToPoint(camera, point, sun_dir, moon, eclipseSkylight(start.origin, sun_dir, moon));
-}
-
-RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera_given, const glm::dvec3& point_given,
-                                              const glm::dvec3& sun_dir_given, const Moon& moon,
-                                              const Spectrum& camera_skylight) const {
-  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
-  const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
-  requireLookupMoon(moon);
+  const glm::dvec3 sun_dir = lookupDirection(sun.direction, "sun direction");
+  const double shadow_length_m = lookupShadowLength(shadow_length_m_given);
+  const Moon& moon = sun.moon;
   if (insideMoon(camera, moon)) return {Spectrum(0.0f), Spectrum(0.0f)};
-  RadianceAndTransmittance v = radianceToPoint(camera, point, sun_dir);
+  RadianceAndTransmittance v = radianceToPoint(camera, point, sun_dir, shadow_length_m);
   const glm::dvec3 offset = point - camera;
   const double distance = glm::length(offset);
   if (!(distance > 0.0)) return v;
   const glm::dvec3 view_dir = offset / distance;
   const AtmosphereRay s = enterAtmosphere(sampler_.domain(), camera, view_dir);
-  const double d = std::min(distance - s.moved, s.length);
+  // The segment's lit part, as the plain lookup takes it: from its start in
+  // the atmosphere to the shadow of scene geometry before the point.
+  const double d = std::min(distance - s.moved, s.length) - std::max(shadow_length_m - s.moved, 0.0);
   if (!s.inside || d <= 0.0 || !moonHidesSunNear(s.origin, sun_dir, moon)) return v;
   const double mu_s = clampCosine(glm::dot(s.origin, sun_dir) / s.r);
   const double nu = clampCosine(glm::dot(view_dir, sun_dir));
@@ -177,7 +129,8 @@ RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera_given, co
   // the segment's own lookup matches to its accuracy) is what the tables
   // scattered more than once.
   const Spectrum multiple = glm::max(v.radiance - withPhases(without), Spectrum(0.0f));
-  v.radiance = multiple * camera_skylight + withPhases(with_moon);
+  const Spectrum skylight = sun.camera_skylight ? *sun.camera_skylight : eclipseSkylight(s.origin, {sun_dir, moon});
+  v.radiance = multiple * skylight + withPhases(with_moon);
   return v;
 }
 
@@ -189,7 +142,7 @@ Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dve
   const glm::dvec3 from = up * std::clamp(length, domain.bottom_radius_m, domain.top_radius_m);
   const glm::dvec3 helper = std::abs(up.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
   const glm::dvec3 east = glm::normalize(glm::cross(helper, up)), north = glm::cross(up, east);
-  const Spectrum skylight = eclipseSkylight(from, sun_dir, moon);
+  const Spectrum skylight = eclipseSkylight(from, {sun_dir, moon});
   Spectrum eclipsed(0.0f), plain(0.0f);
   for (int b = 0; b < kEclipseIrradianceBands; ++b) {
     const double sin_squared = (b + 0.5) / kEclipseIrradianceBands;
@@ -197,7 +150,7 @@ Spectrum Sky::eclipsedSkyIrradianceShare(const glm::dvec3& point, const glm::dve
     for (int j = 0; j < kEclipseIrradianceAzimuths; ++j) {
       const double phi = 2.0 * kPi * (j + 0.5 * (b % 2)) / kEclipseIrradianceAzimuths;
       const glm::dvec3 dir = up * cos_theta + (east * std::cos(phi) + north * std::sin(phi)) * sin_theta;
-      eclipsed += skyRadiance(from, dir, sun_dir, moon, skylight).radiance;
+      eclipsed += skyRadiance(from, dir, {sun_dir, moon, skylight}).radiance;
       plain += skyRadiance(from, dir, sun_dir).radiance;
     }
   }

@@ -25,20 +25,24 @@ SurfacePoint surfacePoint(const AtmosphereDomain& domain, const glm::dvec3& poin
 
 }  // namespace
 
-Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
-                            const glm::dvec3& sun_dir_given) const {
-  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
+Spectrum Sky::sunIrradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given, const Sunlight& sun) const {
+  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun.direction);
   requireOneLaneGroup("sunIrradiance");
   const SurfacePoint p = surfacePoint(sampler_.domain(), point);
   const double mu_s = clampCosine(glm::dot(p.up, sun_dir));
-  return atmosphere().sun_irradiance *
-         sampler_.transmittanceToSun(bake_.tables.optical_depth, p.r, mu_s, atmosphere().sun_angular_radius_rad) *
-         static_cast<float>(std::max(glm::dot(normal, sun_dir), 0.0));
+  const Spectrum uneclipsed =
+      atmosphere().sun_irradiance *
+      sampler_.transmittanceToSun(bake_.tables.optical_depth, p.r, mu_s, atmosphere().sun_angular_radius_rad) *
+      static_cast<float>(std::max(glm::dot(normal, sun_dir), 0.0));
+  if (!eclipsed(sun)) return uneclipsed;
+  return uneclipsed *
+         static_cast<float>(sun.moon.visibleSunFraction(point, sun_dir, atmosphere().sun_angular_radius_rad));
 }
 
 SunAndSkyIrradiance Sky::irradiance(const glm::dvec3& point_given, const glm::dvec3& normal_given,
-                                    const glm::dvec3& sun_dir_given) const {
-  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun_dir_given);
+                                    const Sunlight& sun) const {
+  if (eclipsed(sun)) return eclipsedIrradiance(point_given, normal_given, sun);
+  const auto [point, normal, sun_dir] = checkedSurface(point_given, normal_given, sun.direction);
   requireOneLaneGroup("irradiance");
   if (!outputs().ground_irradiance) {
     throw Error(ErrorKind::BadInput,

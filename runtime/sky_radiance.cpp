@@ -12,9 +12,10 @@
 
 namespace skybake {
 
-RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir,
-                                          const glm::dvec3& sun_dir, double shadow_length_m) const {
-  const SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun_dir, shadow_length_m);
+RadianceAndTransmittance Sky::skyRadiance(const glm::dvec3& camera, const glm::dvec3& view_dir, const Sunlight& sun,
+                                          double shadow_length_m) const {
+  if (eclipsed(sun)) return eclipsedSkyRadiance(camera, view_dir, sun, shadow_length_m);
+  const SkyRadianceParts p = skyRadianceParts(camera, view_dir, sun.direction, shadow_length_m);
   if (!p.inside) return {Spectrum(0.0f), Spectrum(1.0f)};
   return {p.single.rayleigh * static_cast<float>(rayleighPhase(p.nu)) +
               p.single.mie * static_cast<float>(mie_phase_(p.nu)) + p.multiple,
@@ -88,14 +89,19 @@ void Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, 
 }
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
-                                               const glm::dvec3& sun_dir_given) const {
-  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_dir_given);
+                                               const Sunlight& sun_given) const {
+  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_given.direction);
+  Sunlight sun = sun_given;
+  sun.direction = sun_dir;
   const AtmosphereDomain& domain = sampler_.domain();
-  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun_dir);
+  RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun);
   const AtmosphereRay start = enterAtmosphere(domain, camera, view_dir);
   if (!start.inside || !start.ends_on_ground) return v;
   const glm::dvec3 ground = start.origin + view_dir * start.length;
-  const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun_dir);
+  // The ground is lit by the sun the moon leaves it and by its own skylight
+  // share, not the camera's.
+  sun.camera_skylight.reset();
+  const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun);
   v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
   return v;
 }

@@ -47,10 +47,11 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
 }  // namespace
 
 RadianceAndTransmittance Sky::radianceToPoint(const glm::dvec3& camera_given, const glm::dvec3& point_given,
-                                              const glm::dvec3& sun_dir_given, double shadow_length_m_given) const {
+                                              const Sunlight& sun, double shadow_length_m_given) const {
+  if (eclipsed(sun)) return eclipsedRadianceToPoint(camera_given, point_given, sun, shadow_length_m_given);
   const glm::dvec3 camera = lookupPosition(camera_given, "camera");
   const glm::dvec3 point = lookupPosition(point_given, "point");
-  const glm::dvec3 sun_dir = lookupDirection(sun_dir_given, "sun direction");
+  const glm::dvec3 sun_dir = lookupDirection(sun.direction, "sun direction");
   const double shadow_length_m = lookupShadowLength(shadow_length_m_given);
   requireOneLaneGroup("radianceToPoint");
   if (!outputs().radiance_to_points) {

@@ -47,23 +47,18 @@ void appendInputCells(std::string& line, const CsvRow& row) {
   }
 }
 
-void appendSpectrum(std::string& line, const Spectrum& s, int channels) {
-  for (int c = 0; c < channels; ++c) fmt::format_to(std::back_inserter(line), ",{:.9g}", s[c]);
-}
-// A spectral bake's channels, all of them.
-void appendSpectrum(std::string& line, const std::vector<float>& s, int channels) {
-  for (int c = 0; c < channels; ++c) fmt::format_to(std::back_inserter(line), ",{:.9g}", s[c]);
+void appendChannels(std::string& line, const std::vector<float>& values) {
+  for (float v : values) fmt::format_to(std::back_inserter(line), ",{:.9g}", v);
 }
 
 // One output row in `line` (reused across rows): the query's own cells, then
-// the two looked-up spectra (Spectrum, or every channel of a spectral bake).
-template <typename Values>
-const std::string& outputRow(std::string& line, const CsvRow& row, const Values& first, const Values& second,
-                             int channels) {
+// the two looked-up quantities, every channel of each.
+const std::string& outputRow(std::string& line, const CsvRow& row, const std::vector<float>& first,
+                             const std::vector<float>& second) {
   line.clear();
   appendInputCells(line, row);
-  appendSpectrum(line, first, channels);
-  appendSpectrum(line, second, channels);
+  appendChannels(line, first);
+  appendChannels(line, second);
   line += '\n';
   return line;
 }
@@ -127,7 +122,6 @@ void runRadiance(const LookupOptions& o) {
   CsvReader q(o.queries_path);
   const RadianceQueryColumns columns = radianceQueryColumns(q);
   const Sky sky = Sky::load(o.bake_path);
-  const int n = sky.channelCount();
   writeCsvOutput(o.output_path, [&](const std::function<void(std::string_view)>& emit) {
     emit(headerWith(q, sky, {"radiance", "transmittance"}));
     std::string line;
@@ -140,16 +134,11 @@ void runRadiance(const LookupOptions& o) {
       const double d = columns.distance_m ? v[*columns.distance_m] : 0.0;
       if (d > 0.0) requireOutput(o.bake_path, sky.outputs().radiance_to_points, "radiance_to_points");
       requireInsideRanges(q, row, columns, sky, o.bake_path);
-      if (sky.laneGroupCount() > 1) {
-        // A spectral bake: every lane group's channels.
-        const ChannelRadianceAndTransmittance r = d > 0.0 ? sky.channelRadianceToPoint(camera, camera + view * d, sun)
-                                                          : sky.channelSkyRadiance(camera, view, sun);
-        emit(outputRow(line, row, r.radiance, r.transmittance, n));
-        continue;
-      }
-      const RadianceAndTransmittance r =
-          d > 0.0 ? sky.radianceToPoint(camera, camera + view * d, sun) : sky.skyRadiance(camera, view, sun);
-      emit(outputRow(line, row, r.radiance, r.transmittance, n));
+      // Every channel (a spectral bake's in lane groups of 4).
+      const ChannelRadianceAndTransmittance r = sky.everyChannel([&](const Sky& group) {
+        return d > 0.0 ? group.radianceToPoint(camera, camera + view * d, sun) : group.skyRadiance(camera, view, sun);
+      });
+      emit(outputRow(line, row, r.radiance, r.transmittance));
     }
   });
 }
@@ -161,7 +150,6 @@ void runIrradiance(const LookupOptions& o) {
   const size_t sun_zenith = q.require("sun_zenith_deg");
   const Sky sky = Sky::load(o.bake_path);
   requireOutput(o.bake_path, sky.outputs().ground_irradiance, "ground_irradiance");
-  const int n = sky.channelCount();
   writeCsvOutput(o.output_path, [&](const std::function<void(std::string_view)>& emit) {
     emit(headerWith(q, sky, {"sky_irradiance", "sun_irradiance"}));
     std::string line;
@@ -170,13 +158,10 @@ void runIrradiance(const LookupOptions& o) {
       q.requireRange(row, sun_zenith, 0.0, kMaxZenithAngle_deg);
       const glm::dvec3 point = cameraAtAltitude(sky.atmosphere().bottom_radius_m, row.values[altitude]);
       const glm::dvec3 sun = directionFromZenithAzimuthDeg(row.values[sun_zenith], 0.0);
-      if (sky.laneGroupCount() > 1) {
-        const ChannelSunAndSkyIrradiance e = sky.channelIrradiance(point, {0.0, 0.0, 1.0}, sun);
-        emit(outputRow(line, row, e.sky, e.sun, n));
-        continue;
-      }
-      const SunAndSkyIrradiance e = sky.irradiance(point, {0.0, 0.0, 1.0}, sun);
-      emit(outputRow(line, row, e.sky, e.sun, n));
+      const ChannelSunAndSkyIrradiance e = sky.everyChannel([&](const Sky& group) {
+        return group.irradiance(point, {0.0, 0.0, 1.0}, sun);
+      });
+      emit(outputRow(line, row, e.sky, e.sun));
     }
   });
 }

@@ -176,12 +176,9 @@ std::vector<ImageAttribute> exrAttributes(const Sky& sky, const SkyView& view, b
   out.push_back({"skybake:sun_in_image", Kind::Int, {}, {}, view.sun_disk ? 1 : 0});
   // The sun at the camera, on a surface facing it (the part the moon leaves),
   // every lane group's channels.
-  std::vector<float> irradiance;
-  for (int g = 0; g < sky.laneGroupCount(); ++g) {
-    const Sky& group = sky.laneGroup(g);
-    const Spectrum lanes = group.sunIrradiance(cameraPosition(group, view), sun, sun, view.moon);
-    irradiance.insert(irradiance.end(), &lanes[0], &lanes[0] + group.channelCount());
-  }
+  const std::vector<float> irradiance = sky.everyChannel([&](const Sky& group) {
+    return group.sunIrradiance(cameraPosition(group, view), sun, {sun, view.moon});
+  });
   if (view.moon.present()) {
     const glm::dvec3 m = view.moon.centre_m;
     text("skybake:moon_centre_m", fmt::format("{} {} {}", m.x, m.y, m.z));

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <exception>
+#include <initializer_list>
 #include <string>
 #include <thread>
 #include <vector>
@@ -73,38 +74,47 @@ Spectra spectra(size_t n, int channels) {
   return Spectra({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(channels)});
 }
 
-// Row i's lanes of lane group g (a spectral bake's channels 4 g.., or the
-// whole row of any other bake) from `s`, the group's lookup.
-void storeGroup(float* out, size_t i, int channels, const Sky& sky, int g, const Spectrum& s) {
-  const int first = sky.laneGroupFirstChannel(g);
-  for (int c = 0; c < sky.laneGroup(g).channelCount(); ++c) out[i * channels + first + c] = s[c];
+// Arrays of shape (n, channels), one per Spectrum of a lookup's result
+// (lookupParts order), filled with row_lookup(group, i) of every row i on
+// every lane group of the bake (Sky::writeEveryChannel): any lookup, one
+// code path for all of them.
+template <size_t Parts, typename RowLookup>
+std::array<Spectra, Parts> lookupRows(const Sky& sky, size_t n, RowLookup row_lookup) {
+  const int channels = sky.channelCount();
+  std::array<Spectra, Parts> out;
+  std::array<float*, Parts> base{};
+  for (size_t k = 0; k < Parts; ++k) {
+    out[k] = spectra(n, channels);
+    base[k] = out[k].mutable_data();
+  }
+  forRows(n, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      std::array<float*, Parts> row{};
+      for (size_t k = 0; k < Parts; ++k) row[k] = base[k] + i * static_cast<size_t>(channels);
+      sky.writeEveryChannel([&](const Sky& group) { return row_lookup(group, i); }, row);
+    }
+  });
+  return out;
+}
+
+py::tuple pair(std::array<Spectra, 2>&& arrays) { return py::make_tuple(arrays[0], arrays[1]); }
+
+void requireRows(size_t n, std::initializer_list<size_t> others) {
+  for (size_t other : others) {
+    if (other != n) throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
+  }
 }
 
 py::tuple radianceRows(const Sky& sky, const Rows& from, const Rows& to, const Rows& sun, const Rows& shadow_m,
                        bool to_point) {
-  const size_t n = rowCount(from, 3, to_point ? "camera_m" : "camera_m");
-  if (rowCount(to, 3, to_point ? "point_m" : "view_dir") != n || rowCount(sun, 3, "sun_dir") != n ||
-      static_cast<size_t>(shadow_m.size()) != n) {
-    throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
-  }
-  const int channels = sky.channelCount();
-  Spectra radiance = spectra(n, channels), transmittance = spectra(n, channels);
+  const size_t n = rowCount(from, 3, "camera_m");
+  requireRows(n, {rowCount(to, 3, to_point ? "point_m" : "view_dir"), rowCount(sun, 3, "sun_dir"),
+                  static_cast<size_t>(shadow_m.size())});
   const double *a = from.data(), *b = to.data(), *s = sun.data(), *shadow = shadow_m.data();
-  float *r = radiance.mutable_data(), *t = transmittance.mutable_data();
-  forRows(n, [&](size_t first, size_t last) {
-    for (size_t i = first; i < last; ++i) {
-      // Every lane group's channels: one group but for a spectral bake.
-      for (int g = 0; g < sky.laneGroupCount(); ++g) {
-        const Sky& group = sky.laneGroup(g);
-        const RadianceAndTransmittance v = to_point
-                                               ? group.radianceToPoint(row3(a, i), row3(b, i), row3(s, i), shadow[i])
-                                               : group.skyRadiance(row3(a, i), row3(b, i), row3(s, i), shadow[i]);
-        storeGroup(r, i, channels, sky, g, v.radiance);
-        storeGroup(t, i, channels, sky, g, v.transmittance);
-      }
-    }
-  });
-  return py::make_tuple(radiance, transmittance);
+  return pair(lookupRows<2>(sky, n, [&](const Sky& group, size_t i) {
+    return to_point ? group.radianceToPoint(row3(a, i), row3(b, i), row3(s, i), shadow[i])
+                    : group.skyRadiance(row3(a, i), row3(b, i), row3(s, i), shadow[i]);
+  }));
 }
 
 // The eclipse lookups: a moon per row (its centre, m from the planet's
@@ -116,35 +126,19 @@ py::tuple eclipseRows(const Sky& sky, const Rows& camera, const Rows& view, cons
   const bool irradiance = lookup == EclipseLookup::Irradiance;
   const size_t n = rowCount(camera, 3, irradiance ? "point_m" : "camera_m");
   const char* second_name = irradiance ? "normal" : lookup == EclipseLookup::RadianceToPoint ? "point_m" : "view_dir";
-  if (rowCount(view, 3, second_name) != n || rowCount(sun, 3, "sun_dir") != n ||
-      rowCount(moon_centre, 3, "moon centre_m") != n || static_cast<size_t>(moon_radius.size()) != n) {
-    throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
-  }
-  const int channels = sky.channelCount();
-  Spectra first = spectra(n, channels), second = spectra(n, channels);
+  requireRows(n, {rowCount(view, 3, second_name), rowCount(sun, 3, "sun_dir"),
+                  rowCount(moon_centre, 3, "moon centre_m"), static_cast<size_t>(moon_radius.size())});
   const double *a = camera.data(), *b = view.data(), *s = sun.data(), *m = moon_centre.data(),
                *radius = moon_radius.data();
-  float *f = first.mutable_data(), *g = second.mutable_data();
-  forRows(n, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      const Moon moon{row3(m, i), radius[i]};
-      for (int lg = 0; lg < sky.laneGroupCount(); ++lg) {
-        const Sky& group = sky.laneGroup(lg);
-        if (irradiance) {
-          const SunAndSkyIrradiance e = group.irradiance(row3(a, i), row3(b, i), row3(s, i), moon);
-          storeGroup(f, i, channels, sky, lg, e.sun);
-          storeGroup(g, i, channels, sky, lg, e.sky);
-        } else {
-          const RadianceAndTransmittance v = lookup == EclipseLookup::RadianceToPoint
-                                                 ? group.radianceToPoint(row3(a, i), row3(b, i), row3(s, i), moon)
-                                                 : group.skyRadiance(row3(a, i), row3(b, i), row3(s, i), moon);
-          storeGroup(f, i, channels, sky, lg, v.radiance);
-          storeGroup(g, i, channels, sky, lg, v.transmittance);
-        }
-      }
-    }
-  });
-  return py::make_tuple(first, second);
+  auto sunlight = [&](size_t i) { return Sunlight{row3(s, i), Moon{row3(m, i), radius[i]}}; };
+  if (irradiance) {
+    return pair(lookupRows<2>(
+        sky, n, [&](const Sky& group, size_t i) { return group.irradiance(row3(a, i), row3(b, i), sunlight(i)); }));
+  }
+  return pair(lookupRows<2>(sky, n, [&](const Sky& group, size_t i) {
+    return lookup == EclipseLookup::RadianceToPoint ? group.radianceToPoint(row3(a, i), row3(b, i), sunlight(i))
+                                                    : group.skyRadiance(row3(a, i), row3(b, i), sunlight(i));
+  }));
 }
 
 // The atmosphere the file states, every per-channel value in channel order
@@ -218,49 +212,25 @@ void registerLookups(py::module_& m) {
       .def("_irradiance",
            [](const Sky& sky, const Rows& point, const Rows& normal, const Rows& sun) {
              const size_t n = rowCount(point, 3, "point_m");
-             if (rowCount(normal, 3, "normal") != n || rowCount(sun, 3, "sun_dir") != n) {
-               throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
-             }
-             const int channels = sky.channelCount();
-             Spectra direct = spectra(n, channels), diffuse = spectra(n, channels);
+             requireRows(n, {rowCount(normal, 3, "normal"), rowCount(sun, 3, "sun_dir")});
              const double *p = point.data(), *q = normal.data(), *s = sun.data();
-             float *d = direct.mutable_data(), *f = diffuse.mutable_data();
-             forRows(n, [&](size_t first, size_t last) {
-               for (size_t i = first; i < last; ++i) {
-                 for (int g = 0; g < sky.laneGroupCount(); ++g) {
-                   const SunAndSkyIrradiance e = sky.laneGroup(g).irradiance(row3(p, i), row3(q, i), row3(s, i));
-                   storeGroup(d, i, channels, sky, g, e.sun);
-                   storeGroup(f, i, channels, sky, g, e.sky);
-                 }
-               }
-             });
-             return py::make_tuple(direct, diffuse);
+             return pair(lookupRows<2>(sky, n, [&](const Sky& group, size_t i) {
+               return group.irradiance(row3(p, i), row3(q, i), row3(s, i));
+             }));
            })
       .def("_transmittance",
            [](const Sky& sky, const Rows& a, const Rows& b) {
              const size_t n = rowCount(a, 3, "a_m");
-             if (rowCount(b, 3, "b_m") != n) throw Error(ErrorKind::BadInput, "the arguments' rows differ in number");
-             const int channels = sky.channelCount();
-             Spectra out = spectra(n, channels);
+             requireRows(n, {rowCount(b, 3, "b_m")});
              const double *pa = a.data(), *pb = b.data();
-             float* o = out.mutable_data();
-             forRows(n, [&](size_t first, size_t last) {
-               for (size_t i = first; i < last; ++i) {
-                 for (int g = 0; g < sky.laneGroupCount(); ++g) {
-                   storeGroup(o, i, channels, sky, g, sky.laneGroup(g).transmittance(row3(pa, i), row3(pb, i)));
-                 }
-               }
-             });
-             return out;
+             return lookupRows<1>(
+                 sky, n, [&](const Sky& group, size_t i) { return group.transmittance(row3(pa, i), row3(pb, i)); })[0];
            })
       .def(
           "solar_radiance",
           [](const Sky& sky) {
-            Spectra out = spectra(1, sky.channelCount());
-            for (int g = 0; g < sky.laneGroupCount(); ++g) {
-              storeGroup(out.mutable_data(), 0, sky.channelCount(), sky, g, sky.laneGroup(g).solarRadiance());
-            }
-            return out.reshape({sky.channelCount()});
+            return lookupRows<1>(sky, 1, [](const Sky& group, size_t) { return group.solarRadiance(); })[0].reshape(
+                {sky.channelCount()});
           },
           "Radiance of the sun disk above the atmosphere, W m^-2 sr^-1 nm^-1, one value per channel.")
       .def_property_readonly("channel_count", &Sky::channelCount)

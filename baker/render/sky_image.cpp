@@ -14,19 +14,8 @@ namespace {
 
 // What a pixel sees along `dir`, the sun disk aside: what the viewer
 // receives (sky and lit ground; the air alone where the bake left out
-// ground irradiance). Under an eclipse the camera's skylight share is given
-// (the same for every pixel of a camera in the atmosphere).
-Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const glm::dvec3& sun,
-                       const Moon& moon, const Spectrum* camera_skylight) {
-  if (moon.present()) {
-    const bool ground = sky.outputs().ground_irradiance;
-    if (camera_skylight) {
-      return (ground ? sky.receivedRadiance(camera, dir, sun, moon, *camera_skylight)
-                     : sky.skyRadiance(camera, dir, sun, moon, *camera_skylight))
-          .radiance;
-    }
-    return (ground ? sky.receivedRadiance(camera, dir, sun, moon) : sky.skyRadiance(camera, dir, sun, moon)).radiance;
-  }
+// ground irradiance).
+Spectrum radianceAlong(const Sky& sky, const glm::dvec3& camera, const glm::dvec3& dir, const Sunlight& sun) {
   return (sky.outputs().ground_irradiance ? sky.receivedRadiance(camera, dir, sun) : sky.skyRadiance(camera, dir, sun))
       .radiance;
 }
@@ -121,19 +110,18 @@ SpectralImage renderSkyRadiance(const Sky& sky, const SkyView& v) {
   SpectralImage image{v.width, v.height, sky.channelCount(), {}};
   image.radiance.assign(static_cast<size_t>(v.width) * v.height * image.channels, 0.0f);
   const glm::dvec3 camera = cameraPosition(sky, v);
-  const glm::dvec3 sun = sunDirection(v);
+  Sunlight sun{sunDirection(v), v.moon};
   // A camera in the atmosphere starts every ray where it is: its skylight
   // share under an eclipse is computed once.
-  const bool camera_inside = glm::length(camera) <= sky.atmosphere().top_radius_m;
-  const Spectrum camera_skylight =
-      v.moon.present() && camera_inside ? sky.eclipseSkylight(camera, sun, v.moon) : Spectrum(1.0f);
+  if (v.moon.present() && glm::length(camera) <= sky.atmosphere().top_radius_m) {
+    sun.camera_skylight = sky.eclipseSkylight(camera, sun);
+  }
 #pragma omp parallel for schedule(dynamic)
   for (int y = 0; y < v.height; ++y) {
     for (int x = 0; x < v.width; ++x) {
       glm::dvec3 dir;
       if (!directionAtImagePoint(v, x + 0.5, y + 0.5, dir)) continue;
-      const Spectrum radiance =
-          radianceAlong(sky, camera, dir, sun, v.moon, camera_inside ? &camera_skylight : nullptr);
+      const Spectrum radiance = radianceAlong(sky, camera, dir, sun);
       float* pixel = image.pixel(x, y);
       for (int c = 0; c < image.channels; ++c) pixel[c] = radiance[c];
     }

@@ -1,6 +1,7 @@
 #include "baker/validation/colour_error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <span>
@@ -83,11 +84,9 @@ std::vector<colour::Xyz> bakeXyz(const Sky& sky, const std::vector<std::vector<S
   const colour::SpectralToXyz to_xyz(sky.atmosphere().wavelengths_nm);
   std::vector<float> channels(static_cast<size_t>(sky.channelCount()));
   for (size_t i = 0; i < queries; ++i) {
-    size_t c = 0;
-    for (int g = 0; g < sky.laneGroupCount(); ++g) {
-      const Spectrum& lanes = group_channels.at(static_cast<size_t>(g)).at(i);
-      for (int l = 0; l < sky.laneGroup(g).channelCount(); ++l) channels.at(c++) = lanes[l];
-    }
+    // Query i's values of every lane group, joined into the bake's channels.
+    sky.writeEveryChannel([&](const Sky&, int g) { return group_channels.at(static_cast<size_t>(g)).at(i); },
+                          std::array{channels.data()});
     out.push_back(to_xyz(std::span<const float>(channels)));
   }
   return out;

@@ -236,11 +236,10 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
   for (const RadianceQuery& q : queries.radiance) {
     const QueryGeometry g = geometryOf(a, q);
     const glm::dvec3 point = g.camera + g.view * q.distance_m;
-    const RadianceAndTransmittance v = q.distance_m > 0.0
-                                           ? (q.moon.present() ? sky.radianceToPoint(g.camera, point, g.sun, g.moon)
-                                                               : sky.radianceToPoint(g.camera, point, g.sun))
-                                       : q.moon.present() ? sky.receivedRadiance(g.camera, g.view, g.sun, g.moon)
-                                                          : sky.receivedRadiance(g.camera, g.view, g.sun);
+    // A query without a moon has one of radius 0: the uneclipsed lookups.
+    const Sunlight sun{g.sun, g.moon};
+    const RadianceAndTransmittance v =
+        q.distance_m > 0.0 ? sky.radianceToPoint(g.camera, point, sun) : sky.receivedRadiance(g.camera, g.view, sun);
     out.radiance.push_back(v.radiance);
     out.transmittance.push_back(v.transmittance);
   }
@@ -248,8 +247,7 @@ MethodValues evaluateBake(const Sky& sky, const QuerySet& queries) {
                         std::max<size_t>(queries.radiance.size(), 1);
   for (const IrradianceQuery& q : queries.irradiance) {
     const QueryGeometry g = geometryOf(a, q);
-    out.irradiance.push_back(q.moon.present() ? sky.irradiance(g.camera, g.view, g.sun, g.moon).sky
-                                              : sky.irradiance(g.camera, g.view, g.sun).sky);
+    out.irradiance.push_back(sky.irradiance(g.camera, g.view, {g.sun, g.moon}).sky);
   }
   return out;
 }

@@ -72,10 +72,12 @@ void BM_SkyRadianceScalar(benchmark::State& state) {
 BENCHMARK(BM_SkyRadianceScalar)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95);
 
 // Every channel of any bake, a spectral one's lane groups included
-// (Sky::channelSkyRadiance): one skyRadiance per lane group and the joining.
+// (Sky::everyChannel): one skyRadiance per lane group and the joining.
 void BM_ChannelSkyRadiance(benchmark::State& state) {
-  timeScalarLookups(state, [](const skybake::Sky& sky, const glm::dvec3& camera, const glm::dvec3& view,
-                              const glm::dvec3& sun) { return sky.channelSkyRadiance(camera, view, sun); });
+  timeScalarLookups(
+      state, [](const skybake::Sky& sky, const glm::dvec3& camera, const glm::dvec3& view, const glm::dvec3& sun) {
+        return sky.everyChannel([&](const skybake::Sky& group) { return group.skyRadiance(camera, view, sun); });
+      });
   state.counters["channels"] = benchSky().channelCount();
 }
 BENCHMARK(BM_ChannelSkyRadiance)->ArgName("sun_zenith_deg")->Arg(30)->Arg(95);
@@ -115,12 +117,12 @@ void BM_SkyRadianceEclipse(benchmark::State& state) {
   const glm::dvec3 sun(std::sin(zenith), 0.0, std::cos(zenith));
   const skybake::Moon moon = skybake::Moon::seenFrom(camera, sun, skybake::radiansFromDegrees(0.28));
   const bool shared_skylight = state.range(0) != 0;
-  const skybake::Spectrum skylight = sky.eclipseSkylight(camera, sun, moon);
+  const skybake::Spectrum skylight = sky.eclipseSkylight(camera, {sun, moon});
   size_t i = 0;
   for (auto _ : state) {
     const glm::dvec3 view(d.x[i], d.y[i], d.z[i]);
-    const auto v =
-        shared_skylight ? sky.skyRadiance(camera, view, sun, moon, skylight) : sky.skyRadiance(camera, view, sun, moon);
+    const auto v = shared_skylight ? sky.skyRadiance(camera, view, {sun, moon, skylight})
+                                   : sky.skyRadiance(camera, view, {sun, moon});
     benchmark::DoNotOptimize(v);
     i = (i + 1) % kRays;
   }

@@ -169,7 +169,7 @@ TEST(SunDiskPixels, TheMoonHidesItsShareOfTheDisk) {
         }
       }
     }
-    const Spectrum expected = sky.sunIrradiance(cameraPosition(sky, v), sun, sun, v.moon);
+    const Spectrum expected = sky.sunIrradiance(cameraPosition(sky, v), sun, {sun, v.moon});
     for (int ch = 0; ch < sky.channelCount(); ++ch) {
       if (expected[ch] == 0.0f) {
         EXPECT_EQ(integral[ch], 0.0f) << "totality";

@@ -294,29 +294,29 @@ Outputs evaluateOnCpu(const Sky& sky, const std::vector<Query>& queries) {
         break;
       }
       case Kind::EclipseSkyRadiance: {
-        const RadianceAndTransmittance v = sky.skyRadiance(a, b, sun, moonOf(q));
+        const RadianceAndTransmittance v = sky.skyRadiance(a, b, {sun, moonOf(q)});
         first = v.radiance, second = v.transmittance;
         break;
       }
       case Kind::EclipseReceived: {
-        const RadianceAndTransmittance v = sky.receivedRadiance(a, b, sun, moonOf(q));
+        const RadianceAndTransmittance v = sky.receivedRadiance(a, b, {sun, moonOf(q)});
         first = v.radiance, second = v.transmittance;
         break;
       }
       case Kind::EclipseRadianceToPoint: {
-        const RadianceAndTransmittance v = sky.radianceToPoint(a, b, sun, moonOf(q));
+        const RadianceAndTransmittance v = sky.radianceToPoint(a, b, {sun, moonOf(q)});
         first = v.radiance, second = v.transmittance;
         break;
       }
       case Kind::EclipseIrradiance: {
-        const SunAndSkyIrradiance e = sky.irradiance(a, b, sun, moonOf(q));
+        const SunAndSkyIrradiance e = sky.irradiance(a, b, {sun, moonOf(q)});
         first = e.sun, second = e.sky;
         break;
       }
       case Kind::EclipseSkylightAndSun:
       case Kind::EclipseSun: {
         const Moon moon = moonOf(q);
-        if (q.kind == Kind::EclipseSkylightAndSun) first = sky.eclipseSkylight(a, sun, moon);
+        if (q.kind == Kind::EclipseSkylightAndSun) first = sky.eclipseSkylight(a, {sun, moon});
         const double alpha = sky.atmosphere().sun_angular_radius_rad;
         second = Spectrum(static_cast<float>(moon.visibleSunFraction(a, sun, alpha)),
                           inSunDiskPastMoon(a, glm::normalize(b), sun, alpha, moon) ? 1.0f : 0.0f, 0.0f, 0.0f);

@@ -122,7 +122,9 @@ TEST(LookupGeometry, HostileGeometryGivesBadInputOrPhysicalResultsInEveryLookup)
         "skyRadiance");
     expectContract(
         bad_camera || refusedDirection(view) || refusedDirection(sun) || bad_moon,
-        [&] { expectPhysical(sky.skyRadiance(camera, view, sun, moon), "eclipse skyRadiance"); },
+        [&] {
+          expectPhysical(sky.skyRadiance(camera, view, {sun, moon}), "eclipse skyRadiance");
+        },
         "eclipse skyRadiance");
     expectContract(
         bad_camera || bad_point || refusedDirection(sun),
@@ -136,7 +138,10 @@ TEST(LookupGeometry, HostileGeometryGivesBadInputOrPhysicalResultsInEveryLookup)
         [&] { expectPhysical(sky.irradiance(point, normal, sun), "irradiance"); }, "irradiance");
     expectContract(
         bad_point || refusedDirection(normal) || refusedDirection(sun) || bad_moon,
-        [&] { expectPhysical(sky.irradiance(point, normal, sun, moon), "eclipse irradiance"); }, "eclipse irradiance");
+        [&] {
+          expectPhysical(sky.irradiance(point, normal, {sun, moon}), "eclipse irradiance");
+        },
+        "eclipse irradiance");
     // The batch path: float directions, one hostile among ordinary ones.
     const glm::vec3 ray(view);
     std::vector<float> x{0.0f, static_cast<float>(ray.x)}, y{0.6f, static_cast<float>(ray.y)},
@@ -215,11 +220,15 @@ TEST(LookupGeometry, MoonsAreCheckedAndTheirInsideIsDark) {
   const Sky& sky = earth();
   const glm::dvec3 camera(0.0, 0.0, sky.atmosphere().bottom_radius_m + 10.0);
   const glm::dvec3 sun(0.0, 0.0, 1.0);
-  const RadianceAndTransmittance inside = sky.skyRadiance(camera, sun, sun, Moon{camera + 5.0 * sun, 100.0});
+  const RadianceAndTransmittance inside = sky.skyRadiance(camera, sun, {sun, Moon{camera + 5.0 * sun, 100.0}});
   EXPECT_EQ(inside.radiance, Spectrum(0.0f));
   EXPECT_EQ(inside.transmittance, Spectrum(0.0f));
   for (double radius : {-1.0, kNaN}) {
-    EXPECT_THROW(sky.skyRadiance(camera, sun, sun, Moon{camera + 1e8 * sun, radius}), Error) << radius;
+    // Every lookup that takes a Sunlight checks its moon.
+    const Sunlight bad{sun, Moon{camera + 1e8 * sun, radius}};
+    EXPECT_THROW(sky.skyRadiance(camera, sun, bad), Error) << radius;
+    EXPECT_THROW(sky.radianceToPoint(camera, camera + 1e3 * sun, bad), Error) << radius;
+    EXPECT_THROW(sky.sunIrradiance(camera, sun, bad), Error) << radius;
   }
 }
 
