@@ -372,7 +372,8 @@ class Sky {
                                                    const Sunlight& sun, double shadow_length_m) const;
   SunAndSkyIrradiance eclipsedIrradiance(const glm::dvec3& point, const glm::dvec3& normal, const Sunlight& sun) const;
   // Whether the lookup is eclipsed: sun.moon checked (Error(BadInput) for a
-  // moon that is not finite) and present.
+  // centre or radius that is not finite, or a negative radius, even where
+  // the radius makes it no moon) and present.
   static bool eclipsed(const Sunlight& sun);
   // Whether the moon may hide part of the sun from some point of the
   // atmosphere within reach of a ray from `point` (false: the eclipse

@@ -168,7 +168,6 @@ std::string skyGlslDefines() {
   define("SKYBAKE_MAX_PIECE_OPTICAL_DEPTH", glslFloat(kMaxPieceOpticalDepth));
   define("SKYBAKE_REFINED_OPTICAL_DEPTH", glslFloat(kRefinedOpticalDepth));
   define("SKYBAKE_MAX_PIECES_PER_SUBINTERVAL", std::to_string(kMaxPiecesPerSubinterval));
-  define("SKYBAKE_BROAD_PHASE", glslFloat(MultipleScatteringPhase::kBroad));
   define("SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE", glslFloat(kIntegratedSingleScatteringTopCosine));
   define("SKYBAKE_LOOKUP_SINGLE_SCATTERING_SEGMENTS", std::to_string(kLookupSingleScatteringSegments));
   define("SKYBAKE_GROUND_RAY_SUBINTERVALS", std::to_string(kGroundRaySubintervals));

@@ -267,15 +267,14 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
 vec4 skybakeMultiplePeakWeight(float altitude_m) {
   vec4 rayleigh = skybake_rayleigh_scattering * skybakeRayleighDensity(altitude_m);
   vec4 mie = skybake_mie_scattering * skybakeMieDensity(altitude_m);
-  vec4 total = rayleigh + mie;
-  bvec4 scatters = greaterThan(total, vec4(0.0));
-  // 0 where nothing scatters (any positive divisor will do there).
-  vec4 share = mix(vec4(0.0), mie / mix(vec4(1.0), total, scatters), scatters);
+  vec4 share = vec4(skybakeMieShare(rayleigh.x, mie.x), skybakeMieShare(rayleigh.y, mie.y),
+                    skybakeMieShare(rayleigh.z, mie.z), skybakeMieShare(rayleigh.w, mie.w));
   return share * skybake_column_mie_share_power;
 }
 
 vec4 skybakeMultipleShapeWithPeak(vec4 peak_weight, float peak) {
-  return vec4(SKYBAKE_BROAD_PHASE) + peak_weight * (peak - SKYBAKE_BROAD_PHASE);
+  return vec4(skybakeMultipleShapeWithPeak(peak_weight.x, peak), skybakeMultipleShapeWithPeak(peak_weight.y, peak),
+              skybakeMultipleShapeWithPeak(peak_weight.z, peak), skybakeMultipleShapeWithPeak(peak_weight.w, peak));
 }
 
 float skybakeMultiplePeak(float nu) { return skybakeCornetteShanksPhase(skybake_phase.y, skybake_phase.w, nu); }

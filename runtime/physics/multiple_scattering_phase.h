@@ -42,11 +42,15 @@
 #include <cmath>
 
 #include "data_formats/config/atmosphere_parameters.h"
+#include "data_formats/kernel/kernel_language.h"
 #include "data_formats/spectra/spectrum.h"
 #include "runtime/physics/density_profile.h"
 #include "runtime/physics/phase_functions.h"
 
 namespace skybake {
+namespace kernel {
+#include "runtime/kernel/multiple_scattering_shape.glsl"
+}  // namespace kernel
 
 // The largest |g_ms|. A divisor peaked more sharply than the tables' nu and
 // mu_s spacing can follow makes interpolation error near the sun worse, not
@@ -109,10 +113,14 @@ class MultipleScatteringPhase {
   // The same in two steps, for loops where nu is fixed and the weight varies.
   double peakAt(double nu) const { return cornetteShanksPhase(g_, nu); }
   static Spectrum withPeak(const SpectrumD& peak_weight, double peak) {
-    return Spectrum(kBroad + peak_weight * (peak - kBroad));
+    Spectrum f(0.0f);
+    for (int c = 0; c < kMaxChannels; ++c) {
+      f[c] = static_cast<float>(kernel::skybakeMultipleShapeWithPeak(peak_weight[c], peak));
+    }
+    return f;
   }
   // The broad part: isotropic, sr^-1.
-  static constexpr double kBroad = 1.0 / (4.0 * kPi);
+  static constexpr double kBroad = SKYBAKE_BROAD_PHASE;
 
   Spectrum operator()(double altitude_m, double nu) const { return (*this)(peakWeightAt(altitude_m), nu); }
 
@@ -121,14 +129,11 @@ class MultipleScatteringPhase {
 
  private:
   // Mie's share of scattering, per channel, for the given amounts (densities
-  // or their integrals) of each constituent; 0 where nothing scatters (any
-  // positive divisor will do there).
+  // or their integrals) of each constituent (kernel::skybakeMieShare).
   SpectrumD mieShare(double rayleigh_amount, double mie_amount) const {
     SpectrumD share(0.0);
     for (int c = 0; c < kMaxChannels; ++c) {
-      const double rayleigh = rayleigh_scattering_[c] * rayleigh_amount;
-      const double mie = mie_scattering_[c] * mie_amount;
-      share[c] = rayleigh + mie > 0.0 ? mie / (rayleigh + mie) : 0.0;
+      share[c] = kernel::skybakeMieShare(rayleigh_scattering_[c] * rayleigh_amount, mie_scattering_[c] * mie_amount);
     }
     return share;
   }

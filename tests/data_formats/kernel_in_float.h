@@ -21,6 +21,7 @@ using Real3 = glm::vec3;
 #include "data_formats/kernel/texture_coordinates.glsl"
 #include "runtime/kernel/atmosphere_entry.glsl"
 #include "runtime/kernel/phase_functions.glsl"
+#include "runtime/kernel/multiple_scattering_shape.glsl"
 #include "runtime/kernel/sun_disk.glsl"
 #include "runtime/kernel/density_profile.glsl"
 #include "runtime/kernel/table_weights.glsl"

@@ -16,6 +16,7 @@
 #include "data_formats/parameterization/ray_sphere.h"
 #include "runtime/physics/atmosphere_ray.h"
 #include "runtime/physics/density_profile.h"
+#include "runtime/physics/multiple_scattering_phase.h"
 #include "runtime/physics/phase_functions.h"
 #include "runtime/physics/sun_disk.h"
 #include "tests/data_formats/kernel_in_float.h"
@@ -158,6 +159,33 @@ TEST(KernelPrecision, PhaseFunctionsInFloatStayWithinFloatRoundingOfDouble) {
           phase(nu);
       EXPECT_NEAR(f::skybakeCornetteShanksPhase(g, normalisation, nu), phase(nu), tolerance) << g << " " << nu;
       EXPECT_NEAR(f::skybakeCornetteShanksShape(g, nu), phase.shape(nu), tolerance / phase.normalisation());
+    }
+  }
+}
+
+// The multiple-scattering shape's Mie share and its blend of the broad part
+// with the peak, from inputs rounded to float. The share: the two inputs'
+// roundings move it by at most 2 roundoffs, the sum and the quotient by one
+// each. The blend: the inputs' and the broad constant's roundings and those
+// of the difference, product and sum, six in all, each within a roundoff of
+// a magnitude that broad + w (|peak| + broad) bounds.
+TEST(KernelPrecision, MultipleScatteringShapeInFloatStaysWithinFloatRoundingOfDouble) {
+  for (double rayleigh : {0.0, 1e-12, 5.8e-6, 1.3e-3, 2.0}) {
+    for (double mie : {0.0, 1e-12, 4.0e-6, 2.1e-2, 3.0}) {
+      const double share = kernel::skybakeMieShare(rayleigh, mie);
+      EXPECT_NEAR(f::skybakeMieShare(static_cast<float>(rayleigh), static_cast<float>(mie)), share,
+                  4.0 * kFloatEpsilon * share)
+          << rayleigh << " " << mie;
+    }
+  }
+  EXPECT_EQ(f::skybakeMieShare(0.0f, 0.0f), 0.0f);  // nothing scatters: 0, not NaN
+  const double broad = SKYBAKE_BROAD_PHASE;
+  for (double w : {0.0, 0.02, 0.5, 1.0}) {
+    for (double peak : {0.0, 0.05, broad, 0.5, 30.0}) {
+      const double shape = kernel::skybakeMultipleShapeWithPeak(w, peak);
+      EXPECT_NEAR(f::skybakeMultipleShapeWithPeak(static_cast<float>(w), static_cast<float>(peak)), shape,
+                  6.0 * kFloatEpsilon * (broad + w * (std::abs(peak) + broad)))
+          << w << " " << peak;
     }
   }
 }
