@@ -2,7 +2,7 @@
 // view ray at each lookup (integrateSingleScattering) instead of read from
 // the tables: there the planet's shadow cuts the rays, and where it cuts
 // moves fast with the sun's angles, so tables interpolated between texels
-// miss it by tens of percent (docs/ERROR_VS_TIME.md). The integral needs no
+// miss it by tens of percent (docs/MEASUREMENTS.md). The integral needs no
 // table of suns, so it is evaluated for the sun where it is, below the
 // lowest baked sun too (a narrowed scene's tables aside: Sky::withBakedSun).
 // Multiple scattering, smooth there, still comes from its table, continued

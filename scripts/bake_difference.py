@@ -4,7 +4,7 @@ points and sky irradiance, sun band by sun band.
     PYTHONPATH=build/python /usr/bin/python3 scripts/bake_difference.py REFERENCE.exr BAKE.exr [BAKE.exr ...]
 
 REFERENCE is typically the same atmosphere on finer tables, so the figures
-are the error of each BAKE's texels (docs/ERROR_VS_TIME.md, "Sizes"). The
+are the error of each BAKE's texels (docs/MEASUREMENTS.md, "Sizes"). The
 grid: cameras at 0, 1, 5, 10, 30 and 59 km; 25 suns from 10 to 107.9 deg
 zenith; views at 13 zenith angles from 0 to 175 deg and 5 azimuths from the
 sun's (0 to 180 deg). A view that meets the ground is a ground ray; rays to

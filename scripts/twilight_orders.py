@@ -4,7 +4,7 @@
 
 Typically REFERENCE is the same config baked with many orders (`skybake bake
 --orders 12`) and each BAKE with fewer, so the figures are the error of the
-orders left out and of the tail that stands in for them (docs/ERROR_VS_TIME.md,
+orders left out and of the tail that stands in for them (docs/MEASUREMENTS.md,
 "Orders"). The grid: cameras at 0, 1, 10 and 30 km; 25 suns from 10 to 107.9
 deg zenith; views at zenith angles 0, 30, 60, 80, 88, 90 and 120 deg toward,
 across and away from the sun. Printed per band (day < 80, low sun 80 to 90,

@@ -29,7 +29,7 @@ TextureSizes iterationTextureSizes(const BakeConfig& config);
 // the iteration sizes, from every order's density. The altitude and sun
 // axes stay, so its slices are the stored tables' (the per-slice
 // convergence and tail read them). Half the view-sun texels put +1.8 % on
-// astronomical twilight's mean at 550 and 440 nm (docs/ERROR_VS_TIME.md,
+// astronomical twilight's mean at 550 and 440 nm (docs/MEASUREMENTS.md,
 // "Orders on coarser tables").
 TextureSizes orderRadianceSizes(const TextureSizes& iteration);
 
@@ -39,7 +39,7 @@ TextureSizes orderRadianceSizes(const TextureSizes& iteration);
 // over every direction of the light arriving at a point, smooth in the view
 // direction, and its view axis is linear in mu: read on these texels, every
 // figure of the built-in Earth moves by at most 0.06 % RMS against density
-// on the radiance tables' view texels (docs/ERROR_VS_TIME.md, "The density
+// on the radiance tables' view texels (docs/MEASUREMENTS.md, "The density
 // on half the view axis").
 TextureSizes densitySizes(const TextureSizes& iteration);
 

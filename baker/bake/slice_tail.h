@@ -12,7 +12,7 @@
 // twilight 5 % short, and the slice's own last ratio, held for every later
 // order, makes it 20 % too bright. Here each slice's ratio relaxes from its
 // last one toward the table's by the factor seen between its last two
-// (docs/ERROR_VS_TIME.md, "Orders").
+// (docs/MEASUREMENTS.md, "Orders").
 #pragma once
 
 #include <vector>

@@ -256,7 +256,7 @@ Command addBakeCommand(CLI::App& app) {
                 "integrate along the ray instead, about 20 times slower (docs/LEAVE_OUT.md).");
   cmd->add_option("--target-error", options->target_error,
                   "A sky radiance error to aim for, e.g. 1%: every table size becomes the smallest multiple of "
-                  "the default sizes measured in the sweep of the built-in Earth (0.5x, 0.75x, 1x, 1.5x) whose error "
+                  "the default sizes measured in the sweep of the built-in Earth (0.5x, 0.75x, 1x) whose error "
                   "(docs/ERROR_VS_TIME.md) meets it; the choice is printed and written to the report. Overrides "
                   "the config's [resolution] sizes.");
   cmd->add_flag("--combined-single-mie", options->combined_single_mie,

@@ -16,7 +16,7 @@ namespace {
 // comes from a glow a few degrees above the sunward horizon; 32 even rings
 // put one node in it and read 4 to 8 % high at sun 98 deg from 28 to 56 km
 // (0.2 to 0.5 % by day); with the band every case is within 0.7 % of 1024
-// rings (docs/ERROR_VS_TIME.md).
+// rings (docs/MEASUREMENTS.md).
 constexpr int kZenithSamples = 32;
 constexpr int kHorizonBandSamples = 8;
 constexpr double kHorizonBand_rad = 5.0 * kPi / 180.0;

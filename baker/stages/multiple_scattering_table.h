@@ -12,7 +12,7 @@ namespace skybake {
 // density varies smoothly along a ray, falling with the constituents' scale
 // heights. The stored table: against 8 sub-intervals, 4 moved the default
 // bake's sky radiance, ground rays, rays to points and sky irradiance by at
-// most 0.02 % RMS in every sun band (docs/ERROR_VS_TIME.md, "Orders on
+// most 0.02 % RMS in every sun band (docs/MEASUREMENTS.md, "Orders on
 // coarser tables").
 inline constexpr int kStoredRaySegments = 4;
 // An order's radiance while the orders iterate feeds only the next order's

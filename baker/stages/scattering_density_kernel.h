@@ -29,7 +29,7 @@ namespace skybake {
 // horizon structure of the incident light (docs/MEASUREMENTS.md,
 // "Scattering density"); in deep twilight the light reaching a point comes
 // from sunlit air seen within a degree or two above its horizon, which 16
-// angles spread over the whole sky resolved with one (docs/ERROR_VS_TIME.md).
+// angles spread over the whole sky resolved with one (docs/MEASUREMENTS.md).
 inline constexpr int kDensitySideNodes = 16;
 inline constexpr int kDensityHorizonBandNodes = 8;
 inline constexpr double kDensityHorizonBand_rad = 5.0 * 3.14159265358979323846 / 180.0;

@@ -24,7 +24,7 @@ inline constexpr double kSmallestComparedValue = 1e-5;
 // The same floor in nautical and astronomical twilight, where the whole sky
 // lies 1e-3 to 1e-8 below the day's (kSmallestComparedValue would skip all
 // of it): each about 1e-3 of the band's zenith sky seen from the ground
-// (docs/ERROR_VS_TIME.md, deep twilight), so what is left out is what a
+// (docs/MEASUREMENTS.md, deep twilight), so what is left out is what a
 // renderer could not show beside the rest of that sky.
 inline constexpr double kSmallestComparedNauticalValue = 1e-9;
 inline constexpr double kSmallestComparedAstronomicalValue = 1e-11;
@@ -62,7 +62,7 @@ std::string irradianceKey(const IrradianceQuery& query);
 // scattering, which the paths estimate, where a whole ray's is largely the
 // sunlit air's single scattering, computed exactly: at the same paths, rays
 // to points read 0.68 % relative standard error in civil twilight against
-// 0.28 % for sky rays (docs/ERROR_VS_TIME.md).
+// 0.28 % for sky rays (docs/MEASUREMENTS.md).
 inline constexpr int kTwilightPointRayPathFactor = 2;
 
 // The paths of `query`'s reference, for `paths` per query.

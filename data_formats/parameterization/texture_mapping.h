@@ -49,7 +49,7 @@ enum class SunAxisMapping {
 // (radianceBlend). For the built-in Earth's 18 deg below the horizon that
 // takes the deepest spacing from 3 deg (DistanceToTop, 36 texels) to
 // 1.25 deg, while the day's 22 intervals keep it as finely sampled as
-// before (docs/ERROR_VS_TIME.md, "Resolution in deep twilight").
+// before (docs/MEASUREMENTS.md, "Resolution in deep twilight").
 inline constexpr double kSunAxisBelowHorizonShare = 18.0 / 40.0;
 // The spacing of the below-horizon texels at the horizon relative to their
 // mean; it grows linearly to 2 minus this at the lowest sun. Civil twilight,

@@ -269,7 +269,7 @@ class TableSampler {
   // Across mu_s: linear with the sun above the horizon. Below it, where the
   // irradiance falls about tenfold per degree of depression, geometric (both
   // neighbours positive): linear read up to 6 % high between texels 0.5 deg
-  // apart in twilight, geometric within 0.5 % (docs/ERROR_VS_TIME.md). The
+  // apart in twilight, geometric within 0.5 % (docs/MEASUREMENTS.md). The
   // interval holding the horizon takes the geometric blend in proportion to
   // its part below it, so the lookup is continuous for any table size.
   // Across r: geometric, as irradiance falls off with altitude roughly

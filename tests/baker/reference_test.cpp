@@ -98,7 +98,7 @@ TEST(Reference, EstimatesWithFourTimesThePathsAgreeWithinThreeSigma) {
 // mixture's) shifts the new estimate by far more than its noise. And the
 // new one is the less noisy at equal paths, by at least 2x in standard
 // error on the nautical and astronomical queries (measured: 4x to 8x,
-// docs/ERROR_VS_TIME.md), where the daylight sampling rarely finds the
+// docs/MEASUREMENTS.md), where the daylight sampling rarely finds the
 // sunlit air.
 TEST(Reference, TwilightSamplingAgreesWithDaylightSamplingAndIsLessNoisy) {
   const BakeConfig config = builtinEarthConfig();

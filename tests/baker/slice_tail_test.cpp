@@ -146,7 +146,7 @@ TEST(SliceTail, ScaleAtInterpolatesBetweenTheSlices) {
 // A bake of 4 orders with the tail against one of 12 orders, in
 // astronomical twilight (sun 102 to 108 deg) at the ground and at 10 km,
 // views from the zenith to the horizon toward and away from the sun. The
-// remaining orders matter most there at 440 nm (docs/ERROR_VS_TIME.md,
+// remaining orders matter most there at 440 nm (docs/MEASUREMENTS.md,
 // "Orders"). At these sizes (the default sun axis of 36 texels, the others
 // reduced) the bakes are deterministic and the sky's RMS difference at
 // 440 nm is 10.2 % with the table's ratio for every slice and 8.0 % with

@@ -448,7 +448,7 @@ except skybake.BadInput as e:
 
 
 def test_twilight_orders_script_compares_bakes_band_by_band():
-    # scripts/twilight_orders.py (docs/ERROR_VS_TIME.md, "Orders"): a bake
+    # scripts/twilight_orders.py (docs/MEASUREMENTS.md, "Orders"): a bake
     # against itself differs by nothing in every band; the one-order bake
     # beside it lacks the multiple scattering, so it reads below the
     # reference in every band (measured: by day 18 to 34 %, in astronomical
@@ -467,3 +467,44 @@ def test_twilight_orders_script_compares_bakes_band_by_band():
         row = next(line for line in one_order.splitlines() if line.strip().startswith(band + " "))
         means = [float(x) for x in row.split("mean")[1].split("(")[0].split("/")]
         assert all(m < -1.0 for m in means), row
+
+
+def test_error_by_altitude_script_gives_the_mean_and_rms_per_altitude(tmp_path):
+    # scripts/error_by_altitude.py (docs/ERROR_VS_TIME.md, "The frontier") on
+    # a details CSV of known errors: at 30 km the bake reads 1 % and 3 % high
+    # (mean 2, RMS sqrt(5) = 2.24), on the ground 1 % low; a reference below
+    # validate's 1e-5 is left out, as are twilight suns and rays to points.
+    header = ("kind,altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m,moon_separation_deg,"
+              "moon_angular_radius_deg,bake_680,reference_680,reference_error_680")
+    rows = ["radiance,30000,30,45,0,0,0,0,1.01e-3,1e-3,1e-6",
+            "radiance,30000,60,10,90,0,0,0,1.03e-3,1e-3,1e-6",
+            "radiance,30000,60,10,90,0,0,0,5e-6,1e-6,1e-9",
+            "radiance,0,30,45,0,0,0,0,0.99e-3,1e-3,2e-6",
+            "radiance,0,95,45,0,0,0,0,2e-3,1e-3,2e-6",
+            "radiance,0,30,85,0,1000,0,0,2e-3,1e-3,2e-6"]
+    details = tmp_path / "details.csv"
+    details.write_text("\n".join([header] + rows) + "\n")
+    script = os.path.join(SOURCE, "scripts", "error_by_altitude.py")
+    out = subprocess.run(["/usr/bin/python3", script, str(details)], check=True, capture_output=True,
+                         text=True).stdout
+    lines = [line.split() for line in out.splitlines()[1:]]
+    assert [(l[0], l[1], l[2]) for l in lines] == [("day", "above", "0"), ("day", "above", "30000")], out
+    assert lines[0][3:6] == ["-1.00", "/", "1.00"], out
+    assert lines[1][3:6] == ["+2.00", "/", "2.24"], out
+    assert lines[1][6] == "(0.10)", out
+
+
+def test_irradiance_against_sky_script_agrees_on_the_ground():
+    # scripts/irradiance_against_sky.py (docs/ERROR_VS_TIME.md): on the
+    # ground by day the table's sky irradiance and the hemisphere sum of the
+    # sky radiance lookups agree (measured within 0.11 % on the default
+    # bake: 0.3 % leaves room for the sum's midpoint rule); every case prints
+    # a finite figure per channel.
+    script = os.path.join(SOURCE, "scripts", "irradiance_against_sky.py")
+    out = subprocess.run(["/usr/bin/python3", script, BAKE], check=True, capture_output=True, text=True,
+                         env=dict(os.environ)).stdout
+    rows = [line.split() for line in out.splitlines()[1:]]
+    assert len(rows) == 6, out
+    assert all(np.isfinite(float(x)) for row in rows for x in row[2:]), out
+    ground = [float(x) for x in rows[0][2:]]
+    assert rows[0][:2] == ["0", "30.0"] and all(abs(x) < 0.3 for x in ground), out

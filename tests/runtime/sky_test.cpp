@@ -423,7 +423,7 @@ Spectrum skyIrradianceFromRadiance(const Sky& sky, double r, const glm::dvec3& s
 // sun axis, 30 km read 12.8 % high at 98 deg and the ground 4.5 % high
 // between texels at 95.5 deg. Cameras higher up, whose own sunset falls
 // between two rows 4 km apart, are not covered: 44 km reads 9 % low at
-// 96.5 deg, 56 km 31 % high at 98 deg (docs/ERROR_VS_TIME.md).
+// 96.5 deg, 56 km 31 % high at 98 deg (docs/MEASUREMENTS.md).
 TEST(Sky, TwilightSkyIrradianceIsTheHemisphereSumOfTheSkyRadiance) {
   const Sky& sky = bakedSky("earth.exr");
   const AtmosphereParameters& a = sky.atmosphere();
