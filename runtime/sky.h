@@ -87,7 +87,7 @@ struct Sunlight {
   Sunlight(const glm::dvec3& sun_direction, const Moon& eclipse_moon, const Spectrum& skylight_at_camera)
       : direction(sun_direction), moon(eclipse_moon), camera_skylight(skylight_at_camera) {}
 
-  glm::dvec3 direction;  // unit vector toward the sun (the same everywhere: the sun is far)
+  glm::dvec3 direction;  // toward the sun, the same everywhere (the sun is far); any length, lookups normalise it
   Moon moon;             // radius 0: no eclipse
   // Sky::eclipseSkylight at the camera, given by a caller that looks up
   // many views from one camera in the atmosphere (an image): each lookup

@@ -181,12 +181,12 @@ Command addLookupCommand(CLI::App& app) {
   lookup->require_subcommand(1);
   auto radiance = std::make_shared<LookupOptions>();
   auto irradiance = std::make_shared<LookupOptions>();
-  CLI::App* radiance_cmd =
-      addLookupKind(*lookup, "radiance",
-                    "Sky radiance and transmittance. Columns: altitude_m, sun_zenith_deg, view_zenith_deg, "
-                    "view_azimuth_deg (from the sun's azimuth), optional distance_m (> 0: radiance to the point "
-                    "at that distance). Adds radiance_<nm> (W m^-2 sr^-1 nm^-1) and transmittance_<nm>.",
-                    *radiance);
+  CLI::App* radiance_cmd = addLookupKind(
+      *lookup, "radiance",
+      "Sky radiance and transmittance. Columns: altitude_m, sun_zenith_deg, view_zenith_deg, "
+      "view_azimuth_deg (from the sun's azimuth), optional distance_m (> 0: radiance to the point "
+      "at that distance; an empty cell is a view ray). Adds radiance_<nm> (W m^-2 sr^-1 nm^-1) and transmittance_<nm>.",
+      *radiance);
   CLI::App* irradiance_cmd =
       addLookupKind(*lookup, "irradiance",
                     "Irradiance on a horizontal surface. Columns: altitude_m, sun_zenith_deg. Adds "

@@ -91,10 +91,16 @@ QuerySet eclipseQuerySet() {
   return set;
 }
 
-RadianceQueryColumns radianceQueryColumns(const CsvReader& q) {
-  return {q.require("altitude_m"),          q.require("sun_zenith_deg"), q.require("view_zenith_deg"),
-          q.require("view_azimuth_deg"),    q.find("distance_m"),        q.find("moon_separation_deg"),
-          q.find("moon_angular_radius_deg")};
+RadianceQueryColumns radianceQueryColumns(CsvReader& q) {
+  // The optional columns' empty cells mean what leaving the column out
+  // means: no distance (a view ray), no moon.
+  return {q.require("altitude_m"),
+          q.require("sun_zenith_deg"),
+          q.require("view_zenith_deg"),
+          q.require("view_azimuth_deg"),
+          q.findOptional("distance_m", 0.0),
+          q.findOptional("moon_separation_deg", 0.0),
+          q.findOptional("moon_angular_radius_deg", 0.0)};
 }
 
 void requireRadianceQueryRanges(const CsvReader& q, const CsvRow& row, const RadianceQueryColumns& c) {

@@ -95,8 +95,9 @@ struct RadianceQueryColumns {
   std::optional<size_t> moon_separation_deg;  // the eclipse columns (MoonQuery)
   std::optional<size_t> moon_angular_radius_deg;
 };
-// The columns of a radiance query CSV (required ones refused when missing).
-RadianceQueryColumns radianceQueryColumns(const CsvReader& reader);
+// The columns of a radiance query CSV (required ones refused when missing;
+// an empty cell of an optional one means what leaving it out means).
+RadianceQueryColumns radianceQueryColumns(CsvReader& reader);
 // Refuses a row whose numbers lie outside the query limits above.
 void requireRadianceQueryRanges(const CsvReader& reader, const CsvRow& row, const RadianceQueryColumns& columns);
 

@@ -71,7 +71,7 @@ std::vector<std::string> splitCells(std::string_view line, const std::string& pa
   return cells;
 }
 
-bool isBlankLine(const std::string& line) { return line.find_first_not_of(kCellBlanks) == std::string::npos; }
+bool isBlank(const std::string& text) { return text.find_first_not_of(kCellBlanks) == std::string::npos; }
 
 bool isCommentLine(const std::string& line) { return !line.empty() && line[0] == '#'; }
 
@@ -106,7 +106,7 @@ CsvReader::CsvReader(const std::filesystem::path& path) : path_(path.string()) {
   while (readLine(in_, line_, path_, line_number_ + 1)) {
     ++line_number_;
     if (line_number_ == 1 && line_.starts_with(kUtf8ByteOrderMark)) line_.erase(0, kUtf8ByteOrderMark.size());
-    if (isBlankLine(line_)) continue;
+    if (isBlank(line_)) continue;
     if (isCommentLine(line_)) {
       last_comment = line_.substr(1);
       last_comment_line = line_number_;
@@ -114,7 +114,7 @@ CsvReader::CsvReader(const std::filesystem::path& path) : path_(path.string()) {
     }
     std::vector<std::string> names = splitCells(line_, path_, line_number_);
     header_line_ = line_number_;
-    if (last_comment_line != 0 && !isBlankLine(last_comment)) {
+    if (last_comment_line != 0 && !isBlank(last_comment)) {
       double unused = 0.0;
       bool all_numbers = true;
       for (const std::string& cell : names) all_numbers = all_numbers && parseFiniteNumber(cell, unused);
@@ -167,7 +167,7 @@ bool CsvReader::readRow(CsvRow& row) {
     } else {
       ++line_number_;
     }
-    if (isBlankLine(line_) || isCommentLine(line_)) continue;
+    if (isBlank(line_) || isCommentLine(line_)) continue;
     std::vector<std::string> cells = splitCells(line_, path_, line_number_);
     const size_t file_columns = columns_.size() + skipped_columns_;
     if (cells.size() != file_columns) {
@@ -177,7 +177,9 @@ bool CsvReader::readRow(CsvRow& row) {
     cells.erase(cells.begin(), cells.begin() + static_cast<std::ptrdiff_t>(skipped_columns_));
     row.values.resize(cells.size());
     for (size_t c = 0; c < cells.size(); ++c) {
-      if (!parseFiniteNumber(cells[c], row.values[c])) {
+      if (c < value_when_empty_.size() && value_when_empty_[c] && isBlank(cells[c])) {
+        row.values[c] = *value_when_empty_[c];
+      } else if (!parseFiniteNumber(cells[c], row.values[c])) {
         throwBadInput(fmt::format("{}:{}:{} ({}): '{}' is not a finite number", path_, line_number_,
                                   c + 1 + skipped_columns_, columns_[c], cells[c]));
       }
@@ -194,6 +196,15 @@ std::optional<size_t> CsvReader::find(const std::string& name) const {
     if (columns_[i] == name) return i;
   }
   return std::nullopt;
+}
+
+std::optional<size_t> CsvReader::findOptional(const std::string& name, double value_when_empty) {
+  const std::optional<size_t> column = find(name);
+  if (column) {
+    value_when_empty_.resize(columns_.size());
+    value_when_empty_[*column] = value_when_empty;
+  }
+  return column;
 }
 
 size_t CsvReader::require(const std::string& name) const {

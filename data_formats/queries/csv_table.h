@@ -40,6 +40,11 @@ class CsvReader {
   const std::vector<std::string>& columns() const { return columns_; }
   // Index of a column, or nullopt.
   std::optional<size_t> find(const std::string& name) const;
+  // Index of an optional column, or nullopt; in the rows read after this an
+  // empty cell of it (nothing but spaces between its commas) reads as
+  // `value_when_empty`, what leaving the column out means, and any other
+  // cell must still be a finite number.
+  std::optional<size_t> findOptional(const std::string& name, double value_when_empty);
   // Index of a required column; throws Error(BadInput) naming the file.
   size_t require(const std::string& name) const;
 
@@ -70,6 +75,8 @@ class CsvReader {
   size_t skipped_columns_ = 0;
   size_t rows_read_ = 0;
   std::vector<std::string> columns_;
+  // Per column: what an empty cell reads as, for the optional ones.
+  std::vector<std::optional<double>> value_when_empty_;
 };
 
 // Writes CSV text produced piece by piece to `path` atomically

@@ -147,6 +147,24 @@ TEST_F(CsvReaderTest, EmptyNamesOtherThanTheFirstAreStillRefused) {
   expectBadInput("\"a\",a\n1,2\n", "column 'a' appears twice");
 }
 
+// An optional column (distance_m, the moon's) may leave a cell empty, as a
+// spreadsheet writes a row that does not use it: it reads as the column's
+// absence. Required columns still refuse an empty cell, and so do optional
+// ones that were not declared so.
+TEST_F(CsvReaderTest, EmptyCellsOfOptionalColumnsReadAsTheirAbsence) {
+  const fs::path p = write("altitude_m,distance_m\n0,\n1000, \n2000,\"\"\n3000,5e3\n");
+  CsvReader reader(p);
+  EXPECT_EQ(reader.findOptional("distance_m", 0.0), 1u);
+  EXPECT_FALSE(reader.findOptional("moon_separation_deg", 0.0));
+  const std::vector<CsvRow> rows = readAll(reader);
+  ASSERT_EQ(rows.size(), 4u);
+  for (size_t i = 0; i < 3; ++i) EXPECT_EQ(rows[i].values[1], 0.0) << i;
+  EXPECT_EQ(rows[1].texts[1], "");  // written back empty, as every cell is trimmed
+  EXPECT_EQ(rows[3].values[1], 5000.0);
+  expectBadInput("altitude_m,distance_m\n,5\n", "q.csv:2:1 (altitude_m): '' is not a finite number");
+  expectBadInput("altitude_m,distance_m\n0,\n", "q.csv:2:2 (distance_m): '' is not a finite number");
+}
+
 TEST_F(CsvReaderTest, HashHeaderWithoutRowsIsNoRows) {
   // A lone '#' line is a comment, not a header: there is nothing to read.
   expectBadInput("# altitude_m,sun_zenith_deg\n", "no header row");

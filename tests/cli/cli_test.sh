@@ -58,6 +58,12 @@ head -n1 "$work/r.csv" | grep -qx 'altitude_m,sun_zenith_deg,view_zenith_deg,vie
   || fail "lookup radiance header: $(head -n1 "$work/r.csv")"
 [ "$(wc -l <"$work/r.csv")" -eq 3 ] || fail "lookup radiance: expected 2 rows"
 awk -F, 'NR > 1 { for (i = 6; i <= 11; ++i) if (!($i > 0)) exit 1 }' "$work/r.csv" || fail "lookup radiance: non-positive values: $(cat "$work/r.csv")"
+# An empty cell of the optional distance_m is a view ray, as 0 is: the same
+# values as the first row above (a spreadsheet leaves unused cells empty).
+printf 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,distance_m\n0,30,0,0,\n' >"$work/empty_cell.csv"
+expect_status 0 "" -- lookup radiance "$work/good.exr" --queries "$work/empty_cell.csv" -o "$work/empty_cell_r.csv"
+[ "$(sed -n 2p "$work/empty_cell_r.csv" | cut -d, -f6-)" = "$(sed -n 2p "$work/r.csv" | cut -d, -f6-)" ] \
+  || fail "an empty distance_m reads other than 0: $(cat "$work/empty_cell_r.csv")"
 # A camera below the ground is on the ground at any depth: altitude -6.5e6 m
 # (more than the planet's radius, which would put it under the opposite
 # pole) reads what altitude 0 reads, in lookups and renders alike.
