@@ -89,18 +89,17 @@ void Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, 
 }
 
 RadianceAndTransmittance Sky::receivedRadiance(const glm::dvec3& camera_given, const glm::dvec3& view_dir_given,
-                                               const Sunlight& sun_given) const {
-  const auto [camera, view_dir, sun_dir] = checkedView(camera_given, view_dir_given, sun_given.direction);
-  Sunlight sun = sun_given;
-  sun.direction = sun_dir;
-  const AtmosphereDomain& domain = sampler_.domain();
+                                               const Sunlight& sun) const {
+  // The sun direction is checked by the lookups below, each as given (the
+  // check gives a checked direction back unchanged).
+  const glm::dvec3 camera = lookupPosition(camera_given, "camera");
+  const glm::dvec3 view_dir = lookupDirection(view_dir_given, "view direction");
   RadianceAndTransmittance v = skyRadiance(camera, view_dir, sun);
-  const AtmosphereRay start = enterAtmosphere(domain, camera, view_dir);
+  const AtmosphereRay start = enterAtmosphere(sampler_.domain(), camera, view_dir);
   if (!start.inside || !start.ends_on_ground) return v;
+  // The lit ground: the sun the moon leaves it and its own skylight share
+  // (irradiance takes no camera's).
   const glm::dvec3 ground = start.origin + view_dir * start.length;
-  // The ground is lit by the sun the moon leaves it and by its own skylight
-  // share, not the camera's.
-  sun.camera_skylight.reset();
   const SunAndSkyIrradiance e = irradiance(ground, glm::normalize(ground), sun);
   v.radiance += v.transmittance * atmosphere().ground_albedo * static_cast<float>(1.0 / kPi) * (e.sun + e.sky);
   return v;
