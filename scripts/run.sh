@@ -4,7 +4,7 @@
 # looking toward a sun 80 degrees from the zenith).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --tool
 mkdir -p out
 build/baker/skybake bake -o out/earth.exr
 build/baker/skybake render out/earth.exr --altitude-m 0 --sun-zenith-deg 80 --projection perspective \

@@ -18,11 +18,13 @@ failed=0
 fail() { echo "readme_commands: FAIL: $*"; failed=$((failed + 1)); }
 
 # The tree a command sees: build/baker/skybake, the presets at small sizes,
-# the scripts, a query file for `lookup`, and out/earth.exr as run.sh
+# the scripts, the example query file, and out/earth.exr as run.sh
 # leaves it.
 mkdir -p "$work/build/baker" "$work/data_formats" "$work/out"
 ln -s "$skybake" "$work/build/baker/skybake"
 cp -r "$source_dir/data_formats/presets" "$work/data_formats/presets"
+mkdir -p "$work/data_formats/queries"
+cp "$source_dir/data_formats/queries/example.csv" "$work/data_formats/queries/example.csv"
 small_resolution=$(sed -n '/^\[resolution\]/,/^$/p' "$source_dir/tests/cli/small_earth.toml")
 for preset in "$work"/data_formats/presets/*.toml; do
   # The preset's own [resolution] table, if any, out; the small one in.
@@ -30,7 +32,6 @@ for preset in "$work"/data_formats/presets/*.toml; do
   printf '\n%s\n' "$small_resolution" >>"$preset.tmp"
   mv "$preset.tmp" "$preset"
 done
-printf 'altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n0,30,60,90\n1000,85,88,0\n' >"$work/q.csv"
 "$skybake" bake "$source_dir/tests/cli/small_earth.toml" -o "$work/out/earth.exr" >/dev/null 2>&1 ||
   { echo "readme_commands: cannot bake the small Earth"; exit 1; }
 
@@ -50,6 +51,19 @@ for line in "${commands[@]}"; do
     "bash scripts/bench_"*)
       # Benchmarks time the machine; they are run by hand, not in tests.
       bash -n "$source_dir/${words[1]}" || fail "$line: does not parse"
+      continue ;;
+    "bash scripts/setup.sh" | "bash scripts/setup.sh --tool")
+      # What run.sh and test.sh run first (this suite's build is setup.sh's).
+      bash -n "$source_dir/${words[1]}" || fail "$line: does not parse"
+      continue ;;
+    "cmake --preset tool && cmake --build build --target skybake")
+      # setup.sh --tool's build; configuring it here would reconfigure the
+      # build this suite runs in, so the preset is checked to exist.
+      (cd "$source_dir" && cmake --list-presets | grep -q '"tool"') || fail "$line: no tool preset"
+      continue ;;
+    "/usr/bin/python3 -m venv --system-site-packages ~/skybake-env" | "~/skybake-env/bin/"*)
+      # CTest's python_pip_install makes a virtual environment the same way,
+      # installs with the same pip command and runs the example in it.
       continue ;;
     "PYTHONPATH=build/python /usr/bin/python3 scripts/examples/aerosol_sky.py"*)
       # CTest's example_aerosol_sky runs this script at tiny sizes.

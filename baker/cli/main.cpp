@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -36,6 +38,20 @@ void printError(const std::string& message) {
 // behind a redirection is a failed run, not a silently short table.
 bool standardOutputWritten() { return std::fflush(stdout) == 0 && std::ferror(stdout) == 0; }
 
+// Where the documents that --help and messages name (data_formats/CONFIG.md,
+// docs/QUERIES.md, ...) are: installed, in the doc folder relative to the
+// command's own (SKYBAKE_DOC_DIR, from the install layout); run from its
+// build tree, in the source tree it was built from.
+std::string documentsFolder() {
+  std::error_code error;
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path installed = (program.parent_path() / SKYBAKE_DOC_DIR).lexically_normal();
+    if (std::filesystem::is_regular_file(installed / "data_formats" / "CONFIG.md", error)) return installed.string();
+  }
+  return SKYBAKE_SOURCE_DIR;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -47,6 +63,10 @@ int main(int argc, char** argv) {
   CLI::App app{
       "skybake: bakes physically based sky scattering tables (Bruneton-style) into one "
       "OpenEXR file."};
+  app.footer(
+      fmt::format("Documents named here and in messages (data_formats/CONFIG.md, docs/QUERIES.md, ...) are "
+                  "in {}.",
+                  documentsFolder()));
   app.failure_message(cliFailureMessage);  // before the subcommands, which copy it
   app.require_subcommand(1);
   app.set_version_flag("--version", fmt::format("skybake {} (writes bake file format {}, reads formats {} to {})",

@@ -15,6 +15,7 @@
 #include "baker/cli/option_checks.h"
 #include "baker/render/image_colour.h"
 #include "baker/render/image_encoder.h"
+#include "baker/render/render_request.h"
 #include "baker/render/sky_image.h"
 #include "baker/render/sun_disk_pixels.h"
 #ifdef SKYBAKE_HAVE_GL
@@ -33,23 +34,22 @@ namespace {
 struct RenderOptions {
   std::string bake_path;
   std::string output_path;
-  SkyView view;
-  std::string projection = "fisheye";
-  double fov_deg = 0.0;  // 0: the projection's default
-  std::string size;      // WxH; empty: the projection's default
+  RenderRequest request;
+  std::string size;  // WxH; empty: the projection's default
   double exposure = 10.0;
   std::string tone_map = "aces";
-  double view_elevation_deg = 10.0;
-  std::optional<double> view_azimuth_deg;
   std::string backend = "cpu";
   std::string channels = "rgb";
   bool no_sun = false;
   std::string moon;  // AZIMUTH,ELEVATION,ANGULAR_RADIUS in degrees; empty: none
 };
 
-// --moon AZIMUTH,ELEVATION,ANGULAR_RADIUS (degrees): three finite numbers,
-// the azimuth within a turn either way, the elevation in [-90, 90], the
-// angular radius in (0, kMaxMoonAngularRadius_deg].
+const RenderRequestNames kOptionNames{"--altitude-m",         "--sun-zenith-deg",   "--sun-azimuth-deg",
+                                      "--projection",         "--fov-deg",          "--size",
+                                      "--view-elevation-deg", "--view-azimuth-deg", "--moon"};
+
+// --moon AZIMUTH,ELEVATION,ANGULAR_RADIUS (degrees): three finite numbers
+// (renderView checks their ranges).
 std::array<double, 3> parseMoon(const std::string& text) {
   std::array<double, 3> values{};
   size_t start = 0;
@@ -66,24 +66,9 @@ std::array<double, 3> parseMoon(const std::string& text) {
     }
     start = comma + 1;
   }
-  if (std::abs(values[0]) > kMaxAzimuth_deg) {
-    refuseOptionValue("--moon", text, fmt::format("the azimuth must be in [-{0}, {0}] degrees", kMaxAzimuth_deg));
-  }
-  if (std::abs(values[1]) > 90.0) refuseOptionValue("--moon", text, "the elevation must be in [-90, 90] degrees");
-  if (!(values[2] > 0.0) || values[2] > kMaxMoonAngularRadius_deg) {
-    refuseOptionValue("--moon", text,
-                      fmt::format("the angular radius must be in (0, {}] degrees", kMaxMoonAngularRadius_deg));
-  }
   return values;
 }
 
-// --fov-deg: below a degree the view is finer than any table resolves; more
-// than a full turn is not a field of view.
-constexpr double kMinFieldOfView_deg = 1.0;
-constexpr double kMaxFieldOfView_deg = 360.0;
-// A perspective projection's image plane grows as tan(fov / 2): at 179
-// degrees it is already 229 times the focal length, at 180 infinite.
-constexpr double kMaxPerspectiveFieldOfView_deg = 179.0;
 // Radiance times exposure must stay within float range (3.4e38): the
 // brightest radiance in an image, the sun's disk, is about 3e4
 // W m^-2 sr^-1 nm^-1 for Earth's sun, leaving a factor of 1e4 to spare.
@@ -96,10 +81,6 @@ constexpr double kMaxExposure = 1e30;
 // tone-mapped bytes.
 constexpr uint64_t kImageBytesPerPixelChannel = sizeof(float) + 2 * sizeof(float);
 constexpr uint64_t kImageBytesPerPixel = 3 * sizeof(float) + 3;
-
-// Largest image side: 16k pixels a side is far beyond any preview and keeps
-// the spectral float image within 4 GiB (four channels).
-constexpr int kMaxImageSide = 16384;
 
 void parseSize(const std::string& text, int& width, int& height) {
   const size_t x = text.find('x');
@@ -230,33 +211,6 @@ void writeImage(const std::string& path, const Sky& sky, const SkyView& view, co
   writeFileContentsAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
-// Every channel's image: each lane group's from the backend, the sun disk
-// added, its channels put in their place among the bake's (one group for
-// any bake but a spectral one).
-template <typename Backend>
-SpectralImage renderChannels(const Backend& backend, const Sky& sky, const SkyView& view) {
-  if (sky.laneGroupCount() == 1) {
-    SpectralImage image = backend.render(sky, view);
-    addSunDisk(sky, view, image);
-    return image;
-  }
-  const size_t pixels = static_cast<size_t>(view.width) * view.height;
-  const size_t channels = static_cast<size_t>(sky.channelCount());
-  SpectralImage joined{view.width, view.height, sky.channelCount(), std::vector<float>(pixels * channels, 0.0f)};
-  for (int g = 0; g < sky.laneGroupCount(); ++g) {
-    const Sky& group = sky.laneGroup(g);
-    SpectralImage part = backend.render(group, view);
-    addSunDisk(group, view, part);
-    const size_t first = static_cast<size_t>(sky.laneGroupFirstChannel(g));
-    for (size_t p = 0; p < pixels; ++p) {
-      for (int c = 0; c < part.channels; ++c) {
-        joined.radiance[p * channels + first + c] = part.radiance[p * part.channels + c];
-      }
-    }
-  }
-  return joined;
-}
-
 // The image from the chosen backend. The GL context is made before the
 // bake is read, so a machine without one is told so at once.
 class ImageBackend {
@@ -292,25 +246,17 @@ void runRender(RenderOptions o) {
   if (o.channels == "spectral" && !exr) {
     refuseOptionValue("--channels", o.channels, "needs an .exr output; a PNG shows sRGB");
   }
-  const bool has_moon = !o.moon.empty();
-  const std::array<double, 3> moon = has_moon ? parseMoon(o.moon) : std::array<double, 3>{};
+  RenderRequest& r = o.request;
+  if (!o.moon.empty()) r.moon_deg = parseMoon(o.moon);
+  if (!o.size.empty()) {
+    int width = 0, height = 0;
+    parseSize(o.size, width, height);
+    r.size = std::array<int, 2>{width, height};
+  }
+  r.sun_disk = !o.no_sun;
+  SkyView v = renderView(r, kOptionNames);
   const ImageBackend backend(o.backend);
   requireWritableOutput(o.output_path, {o.bake_path});
-  SkyView& v = o.view;
-  v.projection = o.projection == "latlong"       ? Projection::LatLong
-                 : o.projection == "perspective" ? Projection::Perspective
-                                                 : Projection::Fisheye;
-  v.fov_deg = o.fov_deg > 0.0 ? o.fov_deg : (v.projection == Projection::Perspective ? 90.0 : 180.0);
-  if (v.projection == Projection::Perspective && v.fov_deg >= kMaxPerspectiveFieldOfView_deg) {
-    refuseOptionValue("--fov-deg", fmt::format("{}", v.fov_deg),
-                      fmt::format("a perspective camera needs less than {} degrees", kMaxPerspectiveFieldOfView_deg));
-  }
-  v.width = v.projection == Projection::LatLong ? 1024 : 512;
-  v.height = 512;
-  if (!o.size.empty()) parseSize(o.size, v.width, v.height);
-  v.view_elevation_deg = o.view_elevation_deg;
-  v.view_azimuth_deg = o.view_azimuth_deg.value_or(v.sun_azimuth_deg);
-  v.sun_disk = !o.no_sun;
   const ToneMap tone_map = o.tone_map == "none"       ? ToneMap::None
                            : o.tone_map == "reinhard" ? ToneMap::Reinhard
                                                       : ToneMap::Aces;
@@ -322,11 +268,12 @@ void runRender(RenderOptions o) {
                                   "\"wavelengths\" for spectral images",
                                   o.bake_path));
   }
-  if (has_moon) v.moon = moonSeenFrom(sky, v, moon[0], moon[1], moon[2]);
+  placeMoon(r, sky, v);
   requireMemoryAvailable(fmt::format("--size = {}x{}: the image", v.width, v.height),
                          static_cast<uint64_t>(v.width) * static_cast<uint64_t>(v.height) *
                              (kImageBytesPerPixel + kImageBytesPerPixelChannel * sky.channelCount()));
-  const SpectralImage image = renderChannels(backend, sky, v);
+  const SpectralImage image =
+      renderEveryChannel([&](const Sky& group, const SkyView& view) { return backend.render(group, view); }, sky, v);
   writeImage(o.output_path, sky, v, image, o.channels == "spectral", o.exposure, tone_map);
 }
 
@@ -341,16 +288,18 @@ Command addRenderCommand(CLI::App& app) {
                   "white in its chromaticities; or spectral radiance with --channels spectral).")
       ->required();
   requireFiniteIn(
-      cmd->add_option("--altitude-m", o->view.altitude_m, "Camera altitude above the ground, m.")->required(),
+      cmd->add_option("--altitude-m", o->request.altitude_m, "Camera altitude above the ground, m.")->required(),
       -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
-  requireFiniteIn(cmd->add_option("--sun-zenith-deg", o->view.sun_zenith_deg, "Sun zenith angle, degrees.")->required(),
-                  0.0, kMaxZenithAngle_deg);
-  requireFiniteIn(cmd->add_option("--sun-azimuth-deg", o->view.sun_azimuth_deg, "Sun azimuth, degrees (default 0)."),
+  requireFiniteIn(
+      cmd->add_option("--sun-zenith-deg", o->request.sun_zenith_deg, "Sun zenith angle, degrees.")->required(), 0.0,
+      kMaxZenithAngle_deg);
+  requireFiniteIn(cmd->add_option("--sun-azimuth-deg", o->request.sun_azimuth_deg, "Sun azimuth, degrees (default 0)."),
                   -kMaxAzimuth_deg, kMaxAzimuth_deg);
-  cmd->add_option("--projection", o->projection, "fisheye (looking up), latlong (environment map) or perspective.")
+  cmd->add_option("--projection", o->request.projection,
+                  "fisheye (looking up), latlong (environment map) or perspective.")
       ->check(CLI::IsMember({"fisheye", "latlong", "perspective"}))
       ->capture_default_str();
-  requireFiniteIn(cmd->add_option("--fov-deg", o->fov_deg,
+  requireFiniteIn(cmd->add_option("--fov-deg", o->request.fov_deg,
                                   "Field of view, degrees (fisheye: full cone, default 180; perspective: "
                                   "horizontal, default 90)."),
                   kMinFieldOfView_deg, kMaxFieldOfView_deg);
@@ -364,11 +313,11 @@ Command addRenderCommand(CLI::App& app) {
   cmd->add_option("--tonemap", o->tone_map, "Tone mapping for PNG: none, reinhard or aces.")
       ->check(CLI::IsMember({"none", "reinhard", "aces"}))
       ->capture_default_str();
-  requireFiniteIn(cmd->add_option("--view-elevation-deg", o->view_elevation_deg,
+  requireFiniteIn(cmd->add_option("--view-elevation-deg", o->request.view_elevation_deg,
                                   "Perspective: view elevation above the horizontal, degrees.")
                       ->capture_default_str(),
                   -90.0, 90.0);
-  requireFiniteIn(cmd->add_option("--view-azimuth-deg", o->view_azimuth_deg,
+  requireFiniteIn(cmd->add_option("--view-azimuth-deg", o->request.view_azimuth_deg,
                                   "Perspective: view azimuth, degrees (default: the sun's)."),
                   -kMaxAzimuth_deg, kMaxAzimuth_deg);
   cmd->add_option("--channels", o->channels,

@@ -1,8 +1,8 @@
 // skybake._skybake.bake: a config into a bake file, as `skybake bake` makes
 // it. The config is a TOML file's path or a dict in the config schema
-// (data_formats/CONFIG.md); a dict is written as TOML and read by the same
-// parser, so it is validated with the same messages (its source named
-// "config dict"). Progress goes to a Python callback progress(stage,
+// (data_formats/CONFIG.md); a dict becomes a TOML table read by the same
+// reader as a file, so it is validated with the same messages, naming the
+// key's path after "config dict" where a file's would name its line. Progress goes to a Python callback progress(stage,
 // fraction), or to the command line's bar on stderr.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -11,7 +11,6 @@
 #include <atomic>
 #include <mutex>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,6 +24,7 @@
 #include "baker/python/python_bindings.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config/config.h"
+#include "data_formats/config/config_table.h"
 #include "data_formats/config/toml_text_check.h"
 #include "data_formats/error.h"
 #include "data_formats/input_file.h"
@@ -139,13 +139,11 @@ toml::table tableFromDict(const py::dict& d, const std::string& prefix, DictPath
   return t;
 }
 
-// A config dict as TOML text, every value checked (DictPath).
-std::string tomlOfDict(const py::dict& d) {
+// A config dict as a TOML table, every value checked (DictPath).
+toml::table tableOfDict(const py::dict& d) {
   DictPath path;
   path.enter(d, "(the dict)");
-  std::ostringstream text;
-  text << tableFromDict(d, "", path);
-  return text.str();
+  return tableFromDict(d, "", path);
 }
 
 // orders=: None (the config's), "auto", or a whole number of orders, checked
@@ -219,7 +217,7 @@ py::object bake(const py::object& config_source, const std::string& output, cons
   std::string source;
   if (py::isinstance<py::dict>(config_source)) {
     source = kDictSource;
-    config = parseConfig(tomlOfDict(config_source.cast<py::dict>()), source);
+    config = parseConfigTable(tableOfDict(config_source.cast<py::dict>()), source);
   } else {
     source = py::str(config_source).cast<std::string>();
     requireNoNulInPath(source);

@@ -12,6 +12,8 @@ void registerLookups(pybind11::module_& m);
 void registerBake(pybind11::module_& m);
 // skybake._skybake.validate: a bake against the reference, as a dict.
 void registerValidate(pybind11::module_& m);
+// The local frame's angles as vectors, and Sky.render's images.
+void registerScene(pybind11::module_& m);
 
 // A threads= argument as a thread count, checked as the command line's
 // --threads (requireThreadCount): a Python int of any size, or BadInput.

@@ -47,4 +47,6 @@ PYBIND11_MODULE(_skybake, m) {
   skybake::python::registerLookups(m);
   skybake::python::registerBake(m);
   skybake::python::registerValidate(m);
+  skybake::python::registerScene(m);
+  m.attr("__version__") = SKYBAKE_VERSION;
 }

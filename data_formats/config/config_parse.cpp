@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "data_formats/config/config.h"
+#include "data_formats/config/config_table.h"
 #include "data_formats/config/toml_text_check.h"
 #include "data_formats/config/toml_value_text.h"
 #include "data_formats/error.h"
@@ -390,6 +391,11 @@ BakeConfig parseConfig(std::string_view toml_text, const std::string& source,
     throwBadInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.source().begin.column,
                               std::string(e.description())));
   }
+  return parseConfigTable(root, source, spectrum_directory);
+}
+
+BakeConfig parseConfigTable(const toml::table& root, const std::string& source,
+                            const std::filesystem::path& spectrum_directory) {
   const ConfigReader in(source, spectrum_directory);
   in.rejectUnknownKeys(
       root, "", {"name", "channels", "planet", "sun", "rayleigh", "mie", "absorption", "resolution", "bake", "scene"});

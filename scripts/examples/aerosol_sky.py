@@ -1,19 +1,18 @@
 #!/usr/bin/python3
 """How haze changes the sky through the day: bakes the built-in Earth
-(data_formats/presets/earth.toml) with 1x, 4x and 16x its aerosol (Mie)
+(skybake.presets.load("earth")) with 1x, 4x and 16x its aerosol (Mie)
 scattering, each at two Mie asymmetries g, then plots the zenith radiance and
 the horizon radiance toward the sun at 550 nm against the sun's zenith angle.
 
-    PYTHONPATH=build/python /usr/bin/python3 scripts/examples/aerosol_sky.py -o aerosol_sky.png
+    python3 scripts/examples/aerosol_sky.py -o aerosol_sky.png   # skybake installed with pip
+    PYTHONPATH=build/python /usr/bin/python3 scripts/examples/aerosol_sky.py -o aerosol_sky.png   # the build tree's
 
 --small bakes at tiny table sizes (seconds; the test suite runs it so).
 """
 import argparse
 import os
-import pathlib
 import sys
 import tempfile
-import tomllib
 
 import matplotlib
 
@@ -23,8 +22,6 @@ import numpy as np
 
 import skybake
 
-HERE = pathlib.Path(__file__).resolve().parent
-EARTH = HERE.parent.parent / "data_formats" / "presets" / "earth.toml"
 AEROSOL_FACTORS = [1.0, 4.0, 16.0]
 MIE_G = [0.7, 0.85]
 CAMERA_ALTITUDE_M = 2.0
@@ -46,17 +43,12 @@ def variant(base, factor, g, small):
     return config
 
 
-def direction(zenith_deg, azimuth_deg=0.0):
-    t, p = np.broadcast_arrays(np.radians(zenith_deg), np.radians(azimuth_deg))
-    return np.stack([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)], axis=-1)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("-o", "--output", default="aerosol_sky.png", help="the plot (PNG)")
     parser.add_argument("--small", action="store_true", help="tiny tables: seconds instead of a minute")
     args = parser.parse_args()
-    base = tomllib.loads(EARTH.read_text())
+    base = skybake.presets.load("earth")
     fig, (ax_zenith, ax_horizon) = plt.subplots(1, 2, figsize=(10, 4), sharex=True)
     with tempfile.TemporaryDirectory() as work:
         for factor in AEROSOL_FACTORS:
@@ -66,10 +58,11 @@ def main():
                 skybake.bake(config, path)
                 sky = skybake.Sky(path)
                 channel = int(np.argmin(np.abs(np.array(sky.wavelengths_nm) - GREEN_NM)))
-                camera = [0.0, 0.0, sky.atmosphere["bottom_radius_m"] + CAMERA_ALTITUDE_M]
-                suns = direction(SUN_ZENITH_DEG)
-                zenith, _ = sky.sky_radiance(camera, [0.0, 0.0, 1.0], suns)
-                horizon, _ = sky.sky_radiance(camera, direction(89.0), suns)  # just above it, toward the sun
+                # The sun at azimuth 0; the horizon view just above it, toward the sun.
+                zenith, _ = sky.sky_radiance(altitude_m=CAMERA_ALTITUDE_M, view_zenith_deg=0.0,
+                                             sun_zenith_deg=SUN_ZENITH_DEG)
+                horizon, _ = sky.sky_radiance(altitude_m=CAMERA_ALTITUDE_M, view_zenith_deg=89.0,
+                                              sun_zenith_deg=SUN_ZENITH_DEG)
                 label = f"aerosol x{factor:g}, g = {g:g}"
                 style = "-" if g == MIE_G[0] else "--"
                 ax_zenith.semilogy(SUN_ZENITH_DEG, zenith[:, channel], style, label=label)

@@ -16,7 +16,11 @@ import os
 import subprocess
 import sys
 import tempfile
-import tomllib
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python before 3.11: the same parser as a package
+    import tomli as tomllib
 
 import tomli_w
 

@@ -5,12 +5,17 @@ Usage: make_config.py BASE.toml FACTOR OUT.toml
 Every size is multiplied by FACTOR and rounded (scattering mu kept even, every
 size at least 2, mu at least 4) and the name gets the suffix _x<FACTOR>. Sizes
 the base leaves out get data_formats/CONFIG.md's defaults first, so they are
-scaled too. The config is read and written as TOML (tomllib, tomli_w), so any
-valid spelling works (`{r=8, mu=32}` as well as `{ r = 8, mu = 32 }`); the
-values of the rest of the config are copied unchanged, its comments are not.
+scaled too. The config is read and written as TOML (tomllib, or the tomli
+package before Python 3.11, and tomli_w), so any valid spelling works
+(`{r=8, mu=32}` as well as `{ r = 8, mu = 32 }`); the values of the rest of
+the config are copied unchanged, its comments are not.
 """
 import sys
-import tomllib
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python before 3.11: the same parser as a package
+    import tomli as tomllib
 
 import tomli_w
 

@@ -1,12 +1,19 @@
 """make_config.py scales sizes however the base config spells its TOML.
 
 Run: /usr/bin/python3 -m pytest scripts/sweep/test_make_config.py
-(CTest: sweep_make_config). A regex-based version once renamed a compact
-config (`{r=8, mu=32}`) to _x0.5 but left its sizes as they were.
+(CTest: sweep_make_config), or with any Python that has tomli_w: the script
+runs under the interpreter running the test. A regex-based version once
+renamed a compact config (`{r=8, mu=32}`) to _x0.5 but left its sizes as
+they were.
 """
 import pathlib
 import subprocess
-import tomllib
+import sys
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python before 3.11: the same parser as a package
+    import tomli as tomllib
 
 SCRIPT = pathlib.Path(__file__).with_name("make_config.py")
 EARTH = pathlib.Path(__file__).parents[2] / "data_formats" / "presets" / "earth.toml"
@@ -16,7 +23,7 @@ def run(tmp_path, text, factor):
     base = tmp_path / "base.toml"
     base.write_text(text)
     out = tmp_path / "out.toml"
-    subprocess.run(["/usr/bin/python3", str(SCRIPT), str(base), str(factor), str(out)], check=True)
+    subprocess.run([sys.executable, str(SCRIPT), str(base), str(factor), str(out)], check=True)
     with open(out, "rb") as f:
         return tomllib.load(f)
 

@@ -26,8 +26,16 @@ cmake --install "$build_dir" --prefix "$prefix" >"$work/install.log" || {
 others=$(find "$prefix/include" -mindepth 1 -maxdepth 1 ! -name skybake)
 [ -z "$others" ] || fail "headers outside include/skybake: $others"
 for f in bin/skybake lib/cmake/skybake/skybakeConfig.cmake lib/cmake/skybake/skybakeConfigVersion.cmake \
-  lib/pkgconfig/skybake.pc include/skybake/runtime/sky.h; do
+  lib/pkgconfig/skybake.pc include/skybake/runtime/sky.h share/doc/skybake/data_formats/CONFIG.md \
+  share/doc/skybake/docs/QUERIES.md share/doc/skybake/data_formats/presets/earth.toml; do
   [ -e "$prefix/$f" ] || fail "the install lacks $f"
+done
+# Every document the command names is installed where its --help says.
+"$prefix/bin/skybake" --help | grep -q "$prefix/share/doc/skybake" ||
+  fail "skybake --help does not name the installed documents' folder $prefix/share/doc/skybake"
+for doc in $( (for c in bake info lookup render validate compare stress reference; do "$prefix/bin/skybake" "$c" --help; done) |
+  grep -oE '(docs|data_formats)/[A-Z_]+\.md' | sort -u); do
+  [ -e "$prefix/share/doc/skybake/$doc" ] || fail "skybake --help names $doc, which the install lacks"
 done
 
 altitude_m=1000

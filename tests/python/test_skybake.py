@@ -508,3 +508,44 @@ def test_irradiance_against_sky_script_agrees_on_the_ground():
     assert all(np.isfinite(float(x)) for row in rows for x in row[2:]), out
     ground = [float(x) for x in rows[0][2:]]
     assert rows[0][:2] == ["0", "30.0"] and all(abs(x) < 0.3 for x in ground), out
+
+
+def test_lookups_by_angles_take_one_form_of_each_argument(sky):
+    with pytest.raises(skybake.BadInput, match="give camera_m or altitude_m, not both"):
+        sky.sky_radiance([0, 0, 7e6], altitude_m=0, view_zenith_deg=0, sun_zenith_deg=30)
+    with pytest.raises(skybake.BadInput, match="give sun_dir or sun_zenith_deg$"):
+        sky.sky_radiance(altitude_m=0, view_zenith_deg=0)
+    with pytest.raises(skybake.BadInput, match="altitude_m: every value must be finite"):
+        sky.sky_radiance(altitude_m=[0, np.nan], view_zenith_deg=0, sun_zenith_deg=30)
+    with pytest.raises(skybake.BadInput, match="view_azimuth_deg: every value must be finite"):
+        sky.sky_radiance(altitude_m=0, view_zenith_deg=0, view_azimuth_deg=np.inf, sun_zenith_deg=30)
+    with pytest.raises(skybake.BadInput, match="give point_m or distance_m, not both"):
+        sky.radiance_to_point(altitude_m=0, point_m=[0, 0, 7e6], distance_m=10, view_zenith_deg=0,
+                              sun_zenith_deg=30)
+    # Angles broadcast as the vectors do: 2 altitudes by 3 view zenith angles.
+    radiance, _ = sky.sky_radiance(altitude_m=[[0.0], [1000.0]], view_zenith_deg=[0, 45, 90], sun_zenith_deg=30)
+    assert radiance.shape == (2, 3, sky.channel_count)
+
+
+def test_render_refuses_what_skybake_render_refuses(sky):
+    for kwargs, message in ((dict(projection="perspective", fov_deg=179), "fov_deg = 179: a perspective camera"),
+                            (dict(size=(0, 10)), r"size = 0x10: each side must be in \[1, 16384\]"),
+                            (dict(moon=(0, 95, 0.28)), "moon = 0,95,0.28: the elevation must be in"),
+                            (dict(projection="cube"), "projection = cube: must be fisheye, latlong or perspective"),
+                            (dict(channels="xyz"), "channels = xyz: must be rgb or spectral"),
+                            (dict(altitude_m=np.nan), "altitude_m = nan: must be a finite number")):
+        arguments = dict(altitude_m=0, sun_zenith_deg=50, size=(8, 8))
+        arguments.update(kwargs)
+        with pytest.raises(skybake.BadInput, match=message):
+            sky.render(**arguments)
+
+
+def test_a_config_dicts_error_names_the_key_path_not_a_line():
+    config = skybake.presets.load("earth")
+    config["mie"]["typo_key"] = 1
+    with pytest.raises(skybake.BadInput, match=r"^config dict: mie\.typo_key: unknown key$"):
+        skybake.bake(config, "never.exr")
+    config = skybake.load_config("earth")
+    config["mie"]["phase_g"] = 1.5
+    with pytest.raises(skybake.BadInput, match=r"^config dict: mie\.phase_g = 1\.5: must be in \(-1, 1\)"):
+        skybake.bake(config, "never.exr")

@@ -1,11 +1,20 @@
 """skybake: precomputed atmospheric scattering from Python.
 
+    config = skybake.presets.load("earth")           # a dict: change and bake
+    skybake.bake(config, "earth.exr")
     sky = skybake.Sky("earth.exr")
     radiance, transmittance = sky.sky_radiance(camera_m, view_dir, sun_dir)
+    radiance, transmittance = sky.sky_radiance(altitude_m=100, view_zenith_deg=80,
+                                               view_azimuth_deg=30, sun_zenith_deg=60)
+    image = sky.render(altitude_m=0, sun_zenith_deg=85, projection="latlong")
 
 Positions are metres from the planet's centre and directions unit vectors,
 as arrays whose last axis has length 3; any leading shapes that numpy
-broadcasts together. Results are float32 arrays of the broadcast shape plus
+broadcasts together. Instead of the vectors, the lookups also take the
+command line's description (`skybake lookup`, docs/QUERIES.md): altitudes in
+metres above the planet's +z pole and zenith and azimuth angles in degrees
+(azimuths from +x toward +y; the sun's azimuth is 0 unless given), arrays
+that broadcast as the vectors do. Results are float32 arrays of the broadcast shape plus
 one axis of the bake's channels, in its channel order (`sky.channels`):
 radiance in W m^-2 sr^-1 nm^-1, irradiance in W m^-2 nm^-1 (a colour bake's
 X, Y, Z: W m^-2 sr^-1 and W m^-2; `sky.luminance` gives cd m^-2 of either). The values are
@@ -26,9 +35,12 @@ import json as _json
 import numpy as _np
 
 from . import _skybake
+from . import presets
 from ._skybake import BadInput
 
-__all__ = ["Sky", "BadInput", "bake", "validate", "moon_seen_from"]
+__all__ = ["Sky", "BadInput", "bake", "validate", "moon_seen_from", "load_config", "presets", "__version__"]
+
+__version__ = _skybake.__version__
 
 
 def _rows(*vectors, scalars=()):
@@ -49,6 +61,43 @@ def _rows(*vectors, scalars=()):
     return shape, out
 
 
+def _finite(name, values):
+    values = _np.asarray(values, dtype=_np.float64)
+    if not _np.all(_np.isfinite(values)):
+        raise BadInput(f"{name}: every value must be finite")
+    return values
+
+
+def _by_angles(vector, vector_name, angles, angles_name):
+    """Whether an argument comes in the local frame's form (an altitude, or
+    angles) rather than as vectors; exactly one of the two must be given."""
+    if (vector is None) == (angles is None):
+        raise BadInput(f"give {vector_name} or {angles_name}" + ("" if vector is None else ", not both"))
+    return angles is not None
+
+
+def _directions(vector, vector_name, zenith_deg, azimuth_deg, zenith_name):
+    """A direction argument given as vectors, or as zenith and azimuth angles
+    (degrees) in the local frame: (..., 3) unit vectors."""
+    if not _by_angles(vector, vector_name, zenith_deg, zenith_name):
+        return vector
+    zenith = _finite(zenith_name, zenith_deg)
+    azimuth = _finite(zenith_name.replace("zenith", "azimuth"), azimuth_deg)
+    zenith, azimuth = _np.broadcast_arrays(zenith, azimuth)
+    flat = _skybake._directions_at_angles(zenith.reshape(-1), azimuth.reshape(-1))
+    return flat.reshape(zenith.shape + (3,))
+
+
+def load_config(name_or_path):
+    """A config as a dict to change and pass to bake(): a preset's name
+    ("earth", "mars", ...: skybake.presets.names()) or a TOML file's path.
+    Spectrum files it names come back as absolute paths."""
+    text = str(name_or_path)
+    if text in presets.names():
+        return presets.load(text)
+    return presets.load_file(text)
+
+
 def moon_seen_from(camera_m, direction, angular_radius_rad):
     """A solar eclipse's moon for the lookups' moon argument: (centre_m,
     radius_m) of the moon seen from camera_m in unit direction `direction`
@@ -60,15 +109,33 @@ def moon_seen_from(camera_m, direction, angular_radius_rad):
 
 
 class Sky:
-    """A bake file's lookups (skybake::Sky). Thread-safe."""
+    """A bake file's lookups (skybake::Sky). Thread-safe.
+
+    Every lookup returns float32 arrays of the arguments' broadcast leading
+    shape plus one axis of the bake's channels (sky.channels): radiance in
+    W m^-2 sr^-1 nm^-1, irradiance in W m^-2 nm^-1, transmittance unitless (a
+    colour bake's X, Y, Z: W m^-2 sr^-1 and W m^-2)."""
 
     def __init__(self, path):
-        self._sky = _skybake.Sky(str(path))
+        self._path = str(path)
+        self._sky = _skybake.Sky(self._path)
+
+    def __repr__(self):
+        r = self.baked_ranges
+        top = "any height" if r["altitude_max_m"] == float("inf") else f"{r['altitude_max_m']:g} m"
+        return (f"skybake.Sky({self._path!r}: {self.channel_count} channels ({', '.join(self.channels)}), "
+                f"{self.orders} orders, camera {r['altitude_min_m']:g} m to {top}, "
+                f"sun zenith {r['sun_zenith_min_deg']:g} to {r['sun_zenith_max_deg']:g} deg)")
+
+    @property
+    def path(self):
+        """The bake file this Sky was read from."""
+        return self._path
 
     @property
     def wavelengths_nm(self):
-        """The channels' wavelengths, or for a colour bake the wavelengths
-        integrated into its X, Y, Z."""
+        """The channels' wavelengths, nm (a list), or for a colour bake the
+        wavelengths integrated into its X, Y, Z."""
         return list(self._sky.wavelengths_nm)
 
     @property
@@ -84,10 +151,10 @@ class Sky:
 
     def luminance(self, values):
         """Luminance in cd m^-2 of radiances this bake returns (illuminance in
-        lx of irradiances): an array whose last axis is the channels, to an
-        array of the leading shape (float64). A colour bake's is 683 Y; a
-        wavelength bake's goes through the CIE 1931 colour-matching functions
-        as `skybake render` does (Sky::luminance, the same weights)."""
+        lx of irradiances): an array of shape (..., channels) to one of shape
+        (...), float64. A colour bake's is 683 Y; a wavelength bake's goes
+        through the CIE 1931 colour-matching functions as `skybake render`
+        does (Sky::luminance, the same weights)."""
         values = _np.asarray(values, dtype=_np.float64)
         if values.ndim == 0 or values.shape[-1] != self.channel_count:
             raise BadInput(f"luminance needs a last axis of the bake's {self.channel_count} channels, "
@@ -96,6 +163,7 @@ class Sky:
 
     @property
     def channel_count(self):
+        """Channels per result: the bake's wavelengths, or 3 for a colour bake."""
         return self._sky.channel_count
 
     @property
@@ -105,7 +173,8 @@ class Sky:
 
     @property
     def atmosphere(self):
-        """The atmosphere the file states (SI units; spectra per channel)."""
+        """The atmosphere the file states, a dict in SI units (radii in m,
+        coefficients in m^-1, spectra as lists per channel)."""
         return self._sky.atmosphere
 
     @property
@@ -131,11 +200,34 @@ class Sky:
         c = self.channel_count
         return tuple(r.reshape(shape + (c,)) for r in results)
 
-    def sky_radiance(self, camera_m, view_dir, sun_dir, shadow_length_m=0.0, moon=None):
-        """Radiance toward the camera along view_dir and the transmittance to
-        the ray's end (the ground's reflected light not included). moon: a
-        solar eclipse's moon, (centre_m, radius_m) (see moon_seen_from;
-        docs/ECLIPSES.md), not with a shadow length."""
+    def _positions(self, vector, vector_name, altitude_m):
+        """A position argument given as vectors (m from the planet's centre),
+        or as altitudes (m) above the local frame's +z pole."""
+        if not _by_angles(vector, vector_name, altitude_m, "altitude_m"):
+            return vector
+        altitude = _finite("altitude_m", altitude_m)
+        flat = _skybake._positions_at_altitude(self.atmosphere["bottom_radius_m"], altitude.reshape(-1))
+        return flat.reshape(altitude.shape + (3,))
+
+    def _sun(self, sun_dir, sun_zenith_deg, sun_azimuth_deg):
+        return _directions(sun_dir, "sun_dir", sun_zenith_deg, sun_azimuth_deg, "sun_zenith_deg")
+
+    def sky_radiance(self, camera_m=None, view_dir=None, sun_dir=None, shadow_length_m=0.0, moon=None, *,
+                     altitude_m=None, view_zenith_deg=None, view_azimuth_deg=0.0, sun_zenith_deg=None,
+                     sun_azimuth_deg=0.0):
+        """Radiance toward the camera along view rays and the transmittance to
+        each ray's end (the ground's reflected light not included): a pair
+        of arrays of shape (..., channels).
+
+        camera_m (..., 3) m from the planet's centre, or altitude_m (...) m;
+        view_dir (..., 3), or view_zenith_deg and view_azimuth_deg (...);
+        sun_dir (..., 3), or sun_zenith_deg and sun_azimuth_deg (...);
+        shadow_length_m (...): light shafts, the length of the ray in the
+        shadow of terrain; moon: a solar eclipse's moon, (centre_m, radius_m)
+        (see moon_seen_from; docs/ECLIPSES.md), not with a shadow length."""
+        camera_m = self._positions(camera_m, "camera_m", altitude_m)
+        view_dir = _directions(view_dir, "view_dir", view_zenith_deg, view_azimuth_deg, "view_zenith_deg")
+        sun_dir = self._sun(sun_dir, sun_zenith_deg, sun_azimuth_deg)
         if moon is not None:
             if _np.any(_np.asarray(shadow_length_m) != 0.0):
                 raise BadInput("sky_radiance: a moon and a shadow length together are not available")
@@ -145,10 +237,27 @@ class Sky:
         shape, (c, v, s, d) = _rows(camera_m, view_dir, sun_dir, scalars=(shadow_length_m,))
         return self._shaped(shape, *self._sky._sky_radiance(c, v, s, d))
 
-    def radiance_to_point(self, camera_m, point_m, sun_dir, shadow_length_m=0.0, moon=None):
-        """Aerial perspective: radiance between camera and point, and the
-        transmittance between them; moon as in sky_radiance, not with a
-        shadow length."""
+    def radiance_to_point(self, camera_m=None, point_m=None, sun_dir=None, shadow_length_m=0.0, moon=None, *,
+                          altitude_m=None, view_zenith_deg=None, view_azimuth_deg=0.0, distance_m=None,
+                          sun_zenith_deg=None, sun_azimuth_deg=0.0):
+        """Aerial perspective: the radiance the air between camera and point
+        adds, and the transmittance between them, (..., channels) each.
+
+        camera_m (..., 3) or altitude_m (...); point_m (..., 3) m from the
+        planet's centre, or the point distance_m (...) m from the camera
+        along view_zenith_deg and view_azimuth_deg (as `skybake lookup
+        radiance` with a distance_m column); sun, shadow_length_m and moon as
+        in sky_radiance (a moon not with a shadow length)."""
+        camera_m = self._positions(camera_m, "camera_m", altitude_m)
+        if point_m is None and distance_m is not None:
+            view = _directions(None, "view_dir", view_zenith_deg, view_azimuth_deg, "view_zenith_deg")
+            distance = _finite("distance_m", distance_m)
+            point_m = _np.asarray(camera_m, dtype=_np.float64) + view * distance[..., None]
+        elif point_m is None:
+            raise BadInput("give point_m, or distance_m with view_zenith_deg")
+        elif distance_m is not None:
+            raise BadInput("give point_m or distance_m, not both")
+        sun_dir = self._sun(sun_dir, sun_zenith_deg, sun_azimuth_deg)
         if moon is not None:
             if _np.any(_np.asarray(shadow_length_m) != 0.0):
                 raise BadInput("radiance_to_point: a moon and a shadow length together are not available")
@@ -158,9 +267,19 @@ class Sky:
         shape, (c, p, s, d) = _rows(camera_m, point_m, sun_dir, scalars=(shadow_length_m,))
         return self._shaped(shape, *self._sky._radiance_to_point(c, p, s, d))
 
-    def irradiance(self, point_m, normal, sun_dir, moon=None):
-        """(sun, sky) irradiance on a surface at point_m with unit normal;
-        moon as in sky_radiance."""
+    def irradiance(self, point_m=None, normal=None, sun_dir=None, moon=None, *, altitude_m=None,
+                   sun_zenith_deg=None, sun_azimuth_deg=0.0):
+        """(sun, sky) irradiance on surfaces, (..., channels) each.
+
+        point_m (..., 3) and a unit normal (..., 3); or altitude_m (...), a
+        horizontal surface there unless a normal is given (as `skybake lookup
+        irradiance`); sun and moon as in sky_radiance."""
+        if normal is None and altitude_m is not None:
+            normal = (0.0, 0.0, 1.0)
+        if normal is None:
+            raise BadInput("give normal with point_m")
+        point_m = self._positions(point_m, "point_m", altitude_m)
+        sun_dir = self._sun(sun_dir, sun_zenith_deg, sun_azimuth_deg)
         if moon is not None:
             centre_m, radius_m = moon
             shape, (p, n, s, m, r) = _rows(point_m, normal, sun_dir, centre_m, scalars=(radius_m,))
@@ -169,13 +288,48 @@ class Sky:
         return self._shaped(shape, *self._sky._irradiance(p, n, s))
 
     def transmittance(self, a_m, b_m):
-        """Transmittance along the segment from a_m to b_m (0 through the ground)."""
+        """Transmittance along segments from a_m to b_m ((..., 3) each, m
+        from the planet's centre), (..., channels); 0 through the ground."""
         shape, (a, b) = _rows(a_m, b_m)
         return self._shaped(shape, self._sky._transmittance(a, b))[0]
 
     def solar_radiance(self):
-        """The sun disk's radiance above the atmosphere, per channel."""
+        """The sun disk's radiance above the atmosphere, (channels,), W m^-2
+        sr^-1 nm^-1."""
         return self._sky.solar_radiance()
+
+    def render(self, altitude_m, sun_zenith_deg, sun_azimuth_deg=0.0, projection="fisheye", fov_deg=None,
+               size=None, view_elevation_deg=10.0, view_azimuth_deg=None, sun_disk=True, moon=None,
+               channels="rgb"):
+        """The sky as an image, as `skybake render` makes it with the same
+        arguments (its options without the dashes): a float32 array of shape
+        (height, width, 3), rows top to bottom.
+
+        channels "rgb": linear Rec. 709 (sRGB primaries, D65 white) in cd m^-2,
+        the pixels of `skybake render -o image.exr`; "spectral": the bake's
+        own channels, W m^-2 sr^-1 nm^-1, shape (height, width, channels).
+        projection: "fisheye" (looking up, fov_deg the full cone, default
+        180), "latlong" (an environment map: azimuth across with the sun's in
+        the middle column, zenith angle down) or "perspective" (fov_deg
+        horizontal, default 90, looking toward view_azimuth_deg, default the
+        sun's, view_elevation_deg above the horizontal); size: (width,
+        height) in pixels, default (512, 512), latlong (1024, 512); sun_disk:
+        the sun disk integrated over each pixel, or left out; moon: a solar
+        eclipse's moon as (azimuth_deg, elevation_deg, angular_radius_deg)
+        seen from the camera (docs/ECLIPSES.md)."""
+        if size is not None:
+            size = tuple(int(x) for x in size)
+            if len(size) != 2:
+                raise BadInput(f"size = {size}: must be (width, height)")
+        if moon is not None:
+            moon = tuple(float(x) for x in moon)
+            if len(moon) != 3:
+                raise BadInput(f"moon = {moon}: must be (azimuth_deg, elevation_deg, angular_radius_deg)")
+        return _skybake._render(self._sky, float(altitude_m), float(sun_zenith_deg), float(sun_azimuth_deg),
+                                str(projection), None if fov_deg is None else float(fov_deg), size,
+                                float(view_elevation_deg),
+                                None if view_azimuth_deg is None else float(view_azimuth_deg), bool(sun_disk), moon,
+                                str(channels))
 
 
 def bake(config, output, threads=0, orders=None, reproducible=False, progress=None):
