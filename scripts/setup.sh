@@ -50,10 +50,11 @@ test_packages=(
   slurmctld slurmd slurm-client munge
   # The GL backend (runtime/gl, skybake render --backend gl): libepoxy loads
   # the GL functions, libegl-dev and libgl-dev give EGL and desktop GL to
-  # link, libgles-dev the ES headers, libegl-mesa0 Mesa's EGL (its
-  # surfaceless platform), libgl1-mesa-dri the llvmpipe renderer for
-  # machines without a GPU.
-  libepoxy-dev libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
+  # link, libopengl-dev libglvnd's libOpenGL (CMake's FindOpenGL makes its
+  # OpenGL::EGL target only beside it), libgles-dev the ES headers,
+  # libegl-mesa0 Mesa's EGL (its surfaceless platform), libgl1-mesa-dri the
+  # llvmpipe renderer for machines without a GPU.
+  libepoxy-dev libegl-dev libgl-dev libopengl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   # tests/gl/glsl_spirv_test.sh: the GLSL compiles to SPIR-V (glslangValidator)
   # and translates to HLSL and MSL (spirv-cross).
   glslang-tools spirv-cross
