@@ -35,23 +35,25 @@ using Values = py::array_t<double, py::array::c_style | py::array::forcecast>;
 constexpr uint64_t kRenderBytesPerPixelChannel = 2 * sizeof(float);
 constexpr uint64_t kRenderBytesPerPixel = 3 * sizeof(float);
 
-py::array_t<double> vectorRows(size_t n, const std::vector<glm::dvec3>& v) {
+// (n, 3) rows, row i the vector vectorAt(i).
+template <typename VectorAt>
+py::array_t<double> vectorRows(size_t n, VectorAt vectorAt) {
   py::array_t<double> out({static_cast<py::ssize_t>(n), py::ssize_t{3}});
   double* o = out.mutable_data();
   for (size_t i = 0; i < n; ++i) {
-    o[3 * i] = v[i].x;
-    o[3 * i + 1] = v[i].y;
-    o[3 * i + 2] = v[i].z;
+    const glm::dvec3 v = vectorAt(i);
+    o[3 * i] = v.x;
+    o[3 * i + 1] = v.y;
+    o[3 * i + 2] = v.z;
   }
   return out;
 }
 
 // (N,) altitudes in metres to (N, 3) positions above the +z pole.
 py::array_t<double> positionsAtAltitude(double bottom_radius_m, const Values& altitude_m) {
-  const size_t n = static_cast<size_t>(altitude_m.size());
-  std::vector<glm::dvec3> v(n);
-  for (size_t i = 0; i < n; ++i) v[i] = cameraAtAltitude(bottom_radius_m, altitude_m.data()[i]);
-  return vectorRows(n, v);
+  const double* altitude = altitude_m.data();
+  return vectorRows(static_cast<size_t>(altitude_m.size()),
+                    [&](size_t i) { return cameraAtAltitude(bottom_radius_m, altitude[i]); });
 }
 
 // (N,) zenith and azimuth angles in degrees to (N, 3) unit directions.
@@ -60,9 +62,8 @@ py::array_t<double> directionsAtAngles(const Values& zenith_deg, const Values& a
   if (static_cast<size_t>(azimuth_deg.size()) != n) {
     throw Error(ErrorKind::BadInput, "zenith and azimuth angles: needs as many of each");
   }
-  std::vector<glm::dvec3> v(n);
-  for (size_t i = 0; i < n; ++i) v[i] = directionFromZenithAzimuthDeg(zenith_deg.data()[i], azimuth_deg.data()[i]);
-  return vectorRows(n, v);
+  const double *zenith = zenith_deg.data(), *azimuth = azimuth_deg.data();
+  return vectorRows(n, [&](size_t i) { return directionFromZenithAzimuthDeg(zenith[i], azimuth[i]); });
 }
 
 py::array_t<float> render(const Sky& sky, const RenderRequest& request, const std::string& channels) {

@@ -119,6 +119,8 @@ class Sky:
     def __init__(self, path):
         self._path = str(path)
         self._sky = _skybake.Sky(self._path)
+        # Where the angle form's altitudes start (the atmosphere dict is built per call).
+        self._bottom_radius_m = self._sky.atmosphere["bottom_radius_m"]
 
     def __repr__(self):
         r = self.baked_ranges
@@ -206,7 +208,7 @@ class Sky:
         if not _by_angles(vector, vector_name, altitude_m, "altitude_m"):
             return vector
         altitude = _finite("altitude_m", altitude_m)
-        flat = _skybake._positions_at_altitude(self.atmosphere["bottom_radius_m"], altitude.reshape(-1))
+        flat = _skybake._positions_at_altitude(self._bottom_radius_m, altitude.reshape(-1))
         return flat.reshape(altitude.shape + (3,))
 
     def _sun(self, sun_dir, sun_zenith_deg, sun_azimuth_deg):
