@@ -123,27 +123,31 @@ std::optional<SliceTail> addTailEstimate(const TableSampler& sampler, const std:
   return slices;
 }
 
-// A narrowed scene's stored scattering density, computed on the scene's own
-// texels order by order from the whole domain's previous order. Interpolated
-// from the whole domain's summed density instead, it was interpolated twice
-// (there, then again at each lookup), which smoothed the twilight sky's fall
-// with the sun angle and altitude: rays toward the ground integrate it in a
-// bake without views below the horizon, and radiance to a point does in
-// twilight.
+// A narrowed scene's stored tables: its scattering density, computed on the
+// scene's own texels (on densitySizes' view axis, as the whole domain's) order
+// by order from the whole domain's previous order. Interpolated from the
+// whole domain's summed density instead, it was interpolated twice (there,
+// then again at each lookup), which smoothed the twilight sky's fall with the
+// sun angle and altitude: rays toward the ground integrate it in a bake
+// without views below the horizon, and radiance to a point does in twilight.
 struct SceneDensity {
-  TableSampler sampler;
+  TableSampler sampler;          // the stored radiance tables' texels
+  TableSampler density_sampler;  // the stored density's
   StageContext ctx;
-  ScatteringDensityKernel kernel;
-  Texture4D sum;   // orders 2 .. N, each divided by the stored shape (as in the file)
-  Texture4D last;  // order N's, divided by its own shape
+  StageContext density_ctx;
+  ScatteringDensityKernel kernel;  // on density_sampler's texels
+  Texture4D sum;                   // orders 2 .. N, each divided by the stored shape (as in the file)
+  Texture4D last;                  // order N's, divided by its own shape
 
   SceneDensity(const AtmosphereParameters& a, const AtmosphereDomain& domain, const TextureSizes& sizes,
                ProgressSink& progress)
       : sampler(domain, sizes),
+        density_sampler(domain, densitySizes(sizes)),
         ctx{a, sampler, progress},
-        sum(sampler.scatteringSizes().r, sampler.scatteringSizes().mu, sampler.scatteringSizes().mu_s,
-            sampler.scatteringSizes().nu) {}
-  SceneDensity(const SceneDensity&) = delete;  // ctx refers to sampler
+        density_ctx{a, density_sampler, progress},
+        sum(density_sampler.scatteringSizes().r, density_sampler.scatteringSizes().mu,
+            density_sampler.scatteringSizes().mu_s, density_sampler.scatteringSizes().nu) {}
+  SceneDensity(const SceneDensity&) = delete;  // the contexts refer to the samplers
   SceneDensity& operator=(const SceneDensity&) = delete;
 };
 
@@ -261,8 +265,8 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   if (scene_domain.narrowed()) {
     scene.emplace(a, scene_domain, config.sizes, progress);
     if (last_order >= 2) {
-      scene->kernel = stage.run("scene_density_kernel", 0, scene->sampler.scatteringSizes().r,
-                                [&] { return makeScatteringDensityKernel(scene->ctx, optical_depth); });
+      scene->kernel = stage.run("scene_density_kernel", 0, scene->density_sampler.scatteringSizes().r,
+                                [&] { return makeScatteringDensityKernel(scene->density_ctx, optical_depth); });
     }
   }
   for (int order = 2; order <= last_order; ++order) {
@@ -278,12 +282,12 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     });
     addReshaped(density_sampler, TexelLayout::Density, density, order_shape, stored_shape, Spectrum(1.0f), density_sum);
     if (scene) {
-      const ScatteringSizes& ss = scene->sampler.scatteringSizes();
+      const ScatteringSizes& ss = scene->density_sampler.scatteringSizes();
       scene->last = stage.run("scene_density", order, static_cast<size_t>(ss.r) * ss.mu_s, [&] {
-        return computeScatteringDensityTable(scene->ctx, scene->kernel, previous, previous_ctx.sampler, order_shape,
-                                             delta_irradiance);
+        return computeScatteringDensityTable(scene->density_ctx, scene->kernel, previous, previous_ctx.sampler,
+                                             order_shape, delta_irradiance);
       });
-      addReshaped(scene->sampler, TexelLayout::Density, scene->last, order_shape, stored_shape, Spectrum(1.0f),
+      addReshaped(scene->density_sampler, TexelLayout::Density, scene->last, order_shape, stored_shape, Spectrum(1.0f),
                   scene->sum);
     }
     delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r,
@@ -321,8 +325,8 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                         stored_shape, density_sum, report.tail);
     if (scene && slice_tail) {
       // The scene's texels take the whole domain's tail at their altitude and sun.
-      addReshaped(scene->sampler, TexelLayout::Density, scene->last, last_shape, stored_shape,
-                  slice_tail->scalesAtSlicesOf(scene->sampler), scene->sum);
+      addReshaped(scene->density_sampler, TexelLayout::Density, scene->last, last_shape, stored_shape,
+                  slice_tail->scalesAtSlicesOf(scene->density_sampler), scene->sum);
     }
   } else {
     report.tail.reason = "disabled (bake.tail_estimate = false)";

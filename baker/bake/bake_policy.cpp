@@ -34,6 +34,67 @@ void alignTexelWithHorizon(AtmosphereDomain& d, int size_mu_s) {
   if (aligned_lo >= 0.0 && aligned_lo <= lo) d.scattering_mu_s_coord_min = aligned_lo;
 }
 
+// The smallest axes a 4D table may have (data_formats/config/config_validate.cpp):
+// mu even and at least 4 (two rows each side of the horizon), the others 2.
+constexpr int kMinMu = 4, kMinAxis = 2;
+
+// Three quarters of a texel count, rounded up; mu kept even.
+int threeQuarters(int n, int minimum) { return std::max(minimum, (3 * n + 3) / 4); }
+int threeQuartersEven(int n) { return std::max(kMinMu, 2 * ((3 * n + 7) / 8)); }
+
+// The texels over a `share` of an axis of `whole` texels at the same
+// spacing, plus `extra`: a scene's part of the axis as finely as the whole
+// domain's, never more texels than the whole axis's.
+int texelsOverShare(int whole, double share, int extra) {
+  if (share >= 1.0) return whole;
+  const int at_whole_spacing = static_cast<int>(std::ceil((whole - 1) * std::max(share, 0.0) - 1e-9)) + 1;
+  return std::clamp(at_whole_spacing + extra, kMinAxis, whole);
+}
+
+// The sun texels the orders iterate on: resolution.iteration's mu_s, or the
+// whole domain's (resolution.scattering's) before a scene's sizes are chosen.
+int iterationSunTexels(const BakeConfig& config) {
+  const std::optional<std::array<int, 4>>& iteration = config.sizes.iteration;
+  return iteration && (*iteration)[2] != TextureSizes::kChosenByTheBake ? (*iteration)[2]
+                                                                        : config.sizes.scattering_mu_s;
+}
+
+// The scene's sun texels given in resolution.scene, if any.
+std::optional<int> givenSceneSunTexels(const BakeConfig& config) {
+  const std::optional<std::array<int, 4>>& scene = config.sizes.scene;
+  if (!scene || (*scene)[2] == TextureSizes::kChosenByTheBake) return std::nullopt;
+  return (*scene)[2];
+}
+
+// How far from a texel of the iteration's sun axis the horizon may sit and
+// still count as on it: the coordinates are computed in double, so a
+// horizon on a texel lands within ~1e-15 of it; a horizon between texels is
+// at least a texel's hundredth away on any axis under 1024 texels.
+constexpr double kHorizonOnTexelTolerance = 1e-6;
+
+// A narrowed sun range [lo, hi] (unit coordinates) widened to the nearest
+// texels of an iteration sun axis of `n` texels outside it, and how many of
+// those texels it then holds; nullopt unless one of them sits on the
+// horizon. The scene's sun texels are then the iteration's own: its
+// density is computed where the previous order was, and its tables sample
+// the sun angle exactly where the whole bake's do. At the same spacing but
+// shifted, the flight scene's twilight read 0.2 to 0.4 point worse than the
+// whole bake (docs/MEASUREMENTS.md, "Scene sizes").
+struct SunTexelSpan {
+  double lo, hi;
+  int texels;
+};
+std::optional<SunTexelSpan> iterationSunTexelsCovering(const AtmosphereDomain& d, double lo, double hi, int n) {
+  if (n < 2) return std::nullopt;
+  const double last = n - 1;
+  const double horizon = muSUnitCoord(d, 0.0) * last;
+  if (std::abs(horizon - std::round(horizon)) > kHorizonOnTexelTolerance) return std::nullopt;
+  const int first = std::max(0, static_cast<int>(std::floor(lo * last + kHorizonOnTexelTolerance)));
+  const int final = std::min(n - 1, static_cast<int>(std::ceil(hi * last - kHorizonOnTexelTolerance)));
+  if (final <= first) return std::nullopt;
+  return SunTexelSpan{first / last, final / last, final - first + 1};
+}
+
 }  // namespace
 
 AtmosphereDomain sceneDomain(const BakeConfig& config) {
@@ -51,9 +112,19 @@ AtmosphereDomain sceneDomain(const BakeConfig& config) {
   if (scene.sun_zenith_deg) {
     const double low_deg = std::max((*scene.sun_zenith_deg)[0] - kSceneSunZenithMargin_deg, 0.0);
     const double high_deg = std::min((*scene.sun_zenith_deg)[1] + kSceneSunZenithMargin_deg, a.sun_max_zenith_deg);
-    d.scattering_mu_s_coord_max = muSUnitCoord(d, std::cos(radiansFromDegrees(low_deg)));
-    d.scattering_mu_s_coord_min = muSUnitCoord(d, std::cos(radiansFromDegrees(high_deg)));
-    alignTexelWithHorizon(d, config.sizes.scattering_mu_s);
+    const double hi = muSUnitCoord(d, std::cos(radiansFromDegrees(low_deg)));
+    const double lo = muSUnitCoord(d, std::cos(radiansFromDegrees(high_deg)));
+    const int iteration_texels = iterationSunTexels(config);
+    const std::optional<int> given = givenSceneSunTexels(config);
+    const std::optional<SunTexelSpan> span = iterationSunTexelsCovering(d, lo, hi, iteration_texels);
+    if (span && (!given || *given == span->texels)) {
+      d.scattering_mu_s_coord_min = span->lo;
+      d.scattering_mu_s_coord_max = span->hi;
+    } else {
+      d.scattering_mu_s_coord_min = lo;
+      d.scattering_mu_s_coord_max = hi;
+      alignTexelWithHorizon(d, given.value_or(texelsOverShare(iteration_texels, hi - lo, 0)));
+    }
   }
   d.scattering_ground_views = scene.views_below_horizon;
   return d;
@@ -72,9 +143,71 @@ bool sunRangeNarrowsAxis(const BakeConfig& config) {
   const AtmosphereDomain d = sceneDomain(config);
   const double span = d.scattering_mu_s_coord_max - d.scattering_mu_s_coord_min;
   if (span <= 0.0) return true;  // a single sun angle
-  // Same texel spacing over the whole axis would take (size - 1) / span + 1 texels.
-  const double added_texels = (config.sizes.scattering_mu_s - 1) * (1.0 / span - 1.0);
+  // The iteration's sun texels over the whole axis (the whole domain's
+  // before a scene's sizes are chosen): the same spacing over the scene's
+  // range would add this many.
+  const double added_texels = (iterationSunTexels(config) - 1) * (1.0 / span - 1.0);
   return added_texels >= kSunAxisNarrowingMinTexels;
+}
+
+// Texels a narrowed altitude axis gets beyond the whole axis's spacing: the
+// ground scene (0 to 2 km on Earth) with the whole spacing's 7 texels read
+// its ground rays 0.04 to 0.07 point above the whole bake by day, with 8
+// within its noise (docs/MEASUREMENTS.md, "Scene sizes").
+constexpr int kSceneExtraAltitudeTexels = 1;
+
+// The stored 4D sizes of a scene, chosen from the whole domain's (the
+// config's resolution.scattering) where resolution.scene leaves an axis out:
+// - r and mu_s: the scene's share of the axis at the whole axis's spacing
+//   (r one texel finer, kSceneExtraAltitudeTexels);
+// - mu: three quarters of the whole axis, or half of it when the scene has no
+//   views below the horizon (its sky rays then keep the whole axis's
+//   spacing);
+// - nu: three quarters.
+// Measured against the reference on a ground-level and a flight scene, these
+// read within the reference's noise of the whole bake on the scene's queries
+// (docs/LEAVE_OUT.md): a scene is mostly short of the axes' ends, where the
+// whole bake spends texels the scene never reads.
+std::array<int, 4> chosenSceneSizes(const BakeConfig& config, const AtmosphereDomain& scene) {
+  const TextureSizes& whole = config.sizes;
+  const double r_share = (scene.scattering_rho_max_m - scene.scattering_rho_min_m) / scene.horizonToTopDistance();
+  const double mu_s_share = scene.scattering_mu_s_coord_max - scene.scattering_mu_s_coord_min;
+  std::array<int, 4> sizes{texelsOverShare(whole.scattering_r, r_share, kSceneExtraAltitudeTexels),
+                           scene.scattering_ground_views ? threeQuartersEven(whole.scattering_mu)
+                                                         : std::max(kMinMu, 2 * (whole.scattering_mu / 4)),
+                           texelsOverShare(iterationSunTexels(config), mu_s_share, 0),
+                           threeQuarters(whole.scattering_nu, kMinAxis)};
+  if (config.sizes.scene) {
+    for (int i = 0; i < 4; ++i) {
+      if ((*config.sizes.scene)[i] != TextureSizes::kChosenByTheBake) sizes[i] = (*config.sizes.scene)[i];
+    }
+  }
+  return sizes;
+}
+
+// The sizes a scene's orders iterate on over the whole domain where
+// resolution.iteration leaves an axis out: three quarters of the whole
+// domain's r, mu and nu, every sun texel (at least the stored tables' when
+// the sun axis stays whole, so that their sun texels are the iteration's).
+// An iteration sun axis without a texel on the horizon doubled the ground
+// scene's low-sun error (31 of 41); every other axis at three quarters
+// costs less than the reference's noise (docs/MEASUREMENTS.md, "Scene sizes").
+std::array<int, 4> chosenIterationSizes(const BakeConfig& config, const std::array<int, 4>& stored,
+                                        bool sun_axis_narrowed) {
+  const TextureSizes& whole = config.sizes;
+  const int mu_s = sun_axis_narrowed ? whole.scattering_mu_s : std::max(whole.scattering_mu_s, stored[2]);
+  std::array<int, 4> sizes{threeQuarters(whole.scattering_r, kMinAxis), threeQuartersEven(whole.scattering_mu), mu_s,
+                           threeQuarters(whole.scattering_nu, kMinAxis)};
+  if (config.sizes.iteration) {
+    for (int i = 0; i < 4; ++i) {
+      if ((*config.sizes.iteration)[i] != TextureSizes::kChosenByTheBake) sizes[i] = (*config.sizes.iteration)[i];
+    }
+  }
+  return sizes;
+}
+
+bool allChosen(const std::optional<std::array<int, 4>>& sizes) {
+  return sizes && std::none_of(sizes->begin(), sizes->end(), [](int n) { return n == TextureSizes::kChosenByTheBake; });
 }
 
 }  // namespace
@@ -85,23 +218,25 @@ BakeConfig settledBakeConfig(BakeConfig config) {
         colour::ColourBakeWeights(config.colour_groups).cieXyzAtmosphere(config.atmosphere, config.colour_groups);
   }
   SceneRanges& scene = config.scene_ranges;
+  TextureSizes& sizes = config.sizes;
   if (scene.sun_zenith_deg && !sunRangeNarrowsAxis(config)) scene.sun_zenith_deg.reset();
-  if (sceneDomain(config).narrowed() && !config.sizes.iteration) {
-    const TextureSizes defaults{};
-    const int mu_s = scene.sun_zenith_deg ? defaults.scattering_mu_s
-                                          : std::max(defaults.scattering_mu_s, config.sizes.scattering_mu_s);
-    config.sizes.iteration =
-        std::array<int, 4>{defaults.scattering_r, defaults.scattering_mu, mu_s, defaults.scattering_nu};
-  }
+  const AtmosphereDomain domain = sceneDomain(config);
+  if (!domain.narrowed()) return config;
+  const std::array<int, 4> stored = chosenSceneSizes(config, domain);
+  sizes.iteration = chosenIterationSizes(config, stored, scene.sun_zenith_deg.has_value());
+  sizes.scene = stored;
+  sizes.scattering_r = stored[0];
+  sizes.scattering_mu = stored[1];
+  sizes.scattering_mu_s = stored[2];
+  sizes.scattering_nu = stored[3];
   return config;
 }
 
 TextureSizes iterationTextureSizes(const BakeConfig& config) {
   TextureSizes sizes = config.sizes;
   if (!sceneDomain(config).narrowed()) return sizes;
-  const TextureSizes defaults{};
-  const std::array<int, 4> iteration = config.sizes.iteration.value_or(std::array<int, 4>{
-      defaults.scattering_r, defaults.scattering_mu, defaults.scattering_mu_s, defaults.scattering_nu});
+  const std::array<int, 4> iteration =
+      allChosen(config.sizes.iteration) ? *config.sizes.iteration : settledBakeConfig(config).sizes.iteration.value();
   sizes.scattering_r = iteration[0];
   sizes.scattering_mu = iteration[1];
   sizes.scattering_mu_s = iteration[2];
@@ -110,13 +245,10 @@ TextureSizes iterationTextureSizes(const BakeConfig& config) {
 }
 
 TextureSizes orderRadianceSizes(const TextureSizes& iteration) {
-  // The smallest axes a table may have (data_formats/config/config_validate.cpp):
-  // mu even and at least 4 (two rows each side of the horizon), nu at least 2.
   // Three quarters of nu, rounded up: 16 -> 12.
-  constexpr int kMinMu = 4, kMinNu = 2;
   TextureSizes sizes = iteration;
   sizes.scattering_mu = std::max(kMinMu, 2 * (iteration.scattering_mu / 4));
-  sizes.scattering_nu = std::max(kMinNu, (3 * iteration.scattering_nu + 3) / 4);
+  sizes.scattering_nu = threeQuarters(iteration.scattering_nu, kMinAxis);
   return sizes;
 }
 
@@ -129,9 +261,9 @@ TextureSizes densitySizes(const TextureSizes& iteration) {
 BakeContents bakeContents(const BakeConfig& settled) {
   const AtmosphereDomain scene = sceneDomain(settled);
   BakeContents contents = storedContents(settled, scene);
-  // The whole domain's density is summed on densitySizes and stored so; a
-  // narrowed scene computes its own on the stored texels (bake.cpp).
-  if (!scene.narrowed()) contents.density_view_size = densitySizes(settled.sizes).scattering_mu;
+  // The density is summed on densitySizes' texels and stored so, the whole
+  // domain's and a narrowed scene's alike (bake.cpp).
+  contents.density_view_size = densitySizes(settled.sizes).scattering_mu;
   return contents;
 }
 

@@ -22,6 +22,7 @@
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
 #include "baker/cli/report_sidecar.h"
+#include "baker/cli/scene_size_report.h"
 #include "baker/cli/size_choice.h"
 #include "baker/cli/terminal_progress.h"
 #include "data_formats/atomic_file.h"
@@ -126,12 +127,14 @@ void runBake(const BakeOptions& o) {
   std::optional<SizeChoice> size_choice;
   if (o.target_error) {
     size_choice = sizesForTargetError(*o.target_error);
-    const std::optional<std::array<int, 4>> iteration = config.sizes.iteration;
+    const TextureSizes given = config.sizes;
     config.sizes = size_choice->sizes;
-    config.sizes.iteration = iteration;
+    config.sizes.scene = given.scene;
+    config.sizes.iteration = given.iteration;
   }
   validateConfig(config, source + " (with command-line overrides)");
   const BakeConfig settled = settledBakeConfig(config);
+  const std::optional<SceneSizeChoice> scene_sizes = sceneSizeChoice(config, settled);
   if (config.scene_ranges.sun_zenith_deg && !settled.scene_ranges.sun_zenith_deg) {
     const std::array<double, 2>& range = *config.scene_ranges.sun_zenith_deg;
     fmt::print(stderr,
@@ -152,6 +155,7 @@ void runBake(const BakeOptions& o) {
   requireWritableOutput(reportSidecarPath(output), config.input_files);
   requireMemoryForBake(config, source);
 
+  if (scene_sizes) fmt::print(stderr, "skybake: {}\n", scene_sizes->description);
   if (size_choice) {
     const TextureSizes& c = size_choice->sizes;
     fmt::print(stderr,
@@ -191,6 +195,7 @@ void runBake(const BakeOptions& o) {
                                  "as measured in the sweep of the built-in Earth "
                                  "(docs/ERROR_VS_TIME.md)"}};
     }
+    if (scene_sizes) sidecar["scene_sizes"] = scene_sizes->json;
     writeReportSidecar(output, sidecar);
   });
   const OrdersDecision& decision = bake.report.orders_decision;

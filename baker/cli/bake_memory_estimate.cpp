@@ -94,7 +94,7 @@ BakeMemoryEstimate estimateBakeMemory(const BakeConfig& config) {
   auto kernelBytes = [&](const TextureSizes& t) {
     return product({axis(t.scattering_r), axis(t.scattering_mu), kDensityKernelBytesPerRMu});
   };
-  e.density_kernel_bytes = orders >= 2 ? sum({kernelBytes(iteration), narrowed ? kernelBytes(s) : 0}) : 0;
+  e.density_kernel_bytes = orders >= 2 ? sum({kernelBytes(iteration), narrowed ? kernelBytes(densitySizes(s)) : 0}) : 0;
   // 2D: the transmittance table, the summed sky irradiance, and the last
   // order's irradiance beside the one being computed.
   e.peak_bytes = sum({tablesBytes(e.tables_4d_at_peak, e.density_tables_at_peak, e.order_radiance_bytes), transmittance,

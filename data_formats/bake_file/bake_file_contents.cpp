@@ -251,7 +251,7 @@ BakeContents readContentsAttributes(const Imf::Header& header, int format_versio
   const Imath::V2i r_mu = in.size(kAttrScatteringSizeRMu);
   const Imath::V2i mu_s_nu = in.size(kAttrScatteringSizeMuSNu);
   s = {optical_depth.x, optical_depth.y, irradiance.x, irradiance.y, r_mu.x,
-       r_mu.y,          mu_s_nu.x,       mu_s_nu.y,    std::nullopt};
+       r_mu.y,          mu_s_nu.x,       mu_s_nu.y,    std::nullopt, std::nullopt};
   // Stated since version 7 (and by a file of that writer on Bruneton's sun
   // axis, written at version 4); before, the density had the others' size.
   const bool states_density_size = header.findTypedAttribute<Imf::IntAttribute>(kAttrDensityViewSize) != nullptr;

@@ -126,6 +126,8 @@ struct AtmosphereParameters {
 // Texel counts. Transmittance and irradiance are 2D (mu or mu_s across, r
 // down); scattering is 4D (r, mu, mu_s, nu).
 struct TextureSizes {
+  // An axis of resolution.scene or resolution.iteration left to the bake.
+  static constexpr int kChosenByTheBake = 0;
   int transmittance_mu = 256;
   int transmittance_r = 64;
   int irradiance_mu_s = 81;  // 0.45 x 80 = 36 intervals below the horizon: a texel on it
@@ -134,11 +136,14 @@ struct TextureSizes {
   int scattering_mu = 128;  // even: half for rays that hit the ground
   int scattering_mu_s = 41;
   int scattering_nu = 16;
-  // [resolution] iteration, r, mu, mu_s and nu: the 4D sizes the orders
-  // iterate on over the whole domain when a [scene] narrows the stored
-  // tables (iterationTextureSizes in baker/bake/bake_policy.h). Absent: the default
-  // scattering sizes above. Unused without scene ranges (which the command
-  // line can add to a config).
+  // [resolution] scene and iteration, each r, mu, mu_s and nu: for a
+  // [scene] that narrows the domain, the 4D sizes of the stored tables on
+  // the scene's ranges, and those the orders iterate on over the whole
+  // domain. Absent, or an axis of them 0 (kChosenByTheBake): chosen from the
+  // scattering sizes above, which are then the whole domain's
+  // (settledBakeConfig in baker/bake/bake_policy.h). Unused without scene
+  // ranges (which the command line can add to a config).
+  std::optional<std::array<int, 4>> scene;
   std::optional<std::array<int, 4>> iteration;
   bool operator==(const TextureSizes&) const = default;
 };

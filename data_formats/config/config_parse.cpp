@@ -470,7 +470,7 @@ BakeConfig parseConfigTable(const toml::table& root, const std::string& source,
   }
 
   if (const toml::table* t = in.table(root, "", "resolution", false)) {
-    in.rejectUnknownKeys(*t, "resolution.", {"transmittance", "irradiance", "scattering", "iteration"});
+    in.rejectUnknownKeys(*t, "resolution.", {"transmittance", "irradiance", "scattering", "scene", "iteration"});
     TextureSizes& s = config.sizes;
     auto pair = [&](std::string_view key, int& first, int& second) {
       const toml::node* node = t->get(key);
@@ -497,19 +497,22 @@ BakeConfig parseConfigTable(const toml::table& root, const std::string& source,
       size("mu_s", s.scattering_mu_s);
       size("nu", s.scattering_nu);
     }
-    if (const toml::table* it = in.table(*t, "resolution.", "iteration", false)) {
-      in.rejectUnknownKeys(*it, "resolution.iteration.", {"r", "mu", "mu_s", "nu"});
-      const TextureSizes defaults;
-      std::array<int, 4> sizes{defaults.scattering_r, defaults.scattering_mu, defaults.scattering_mu_s,
-                               defaults.scattering_nu};
+    // An axis left out is chosen by the bake (TextureSizes::kChosenByTheBake).
+    auto sizes4d = [&](const char* key, std::optional<std::array<int, 4>>& out) {
+      const toml::table* table = in.table(*t, "resolution.", key, false);
+      if (table == nullptr) return;
+      const std::string prefix = "resolution." + std::string(key) + ".";
+      in.rejectUnknownKeys(*table, prefix, {"r", "mu", "mu_s", "nu"});
+      std::array<int, 4> sizes;
+      sizes.fill(TextureSizes::kChosenByTheBake);
       const char* keys[4] = {"r", "mu", "mu_s", "nu"};
       for (int i = 0; i < 4; ++i) {
-        if (const toml::node* node = it->get(keys[i])) {
-          sizes[i] = in.integer(*node, "resolution.iteration." + std::string(keys[i]));
-        }
+        if (const toml::node* node = table->get(keys[i])) sizes[i] = in.integer(*node, prefix + keys[i]);
       }
-      s.iteration = sizes;
-    }
+      out = sizes;
+    };
+    sizes4d("scene", s.scene);
+    sizes4d("iteration", s.iteration);
   }
 
   if (const toml::table* t = in.table(root, "", "bake", false)) {

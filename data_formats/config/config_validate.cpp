@@ -280,22 +280,27 @@ void validateConfig(const BakeConfig& config, const std::string& source) {
     check.fail("resolution.scattering", fmt::format("{} texels", texels),
                fmt::format("more than {} texels per table", kMaxScatteringTexels));
   }
-  if (s.iteration) {
-    const std::array<int, 4>& it = *s.iteration;
-    size("resolution.iteration.r", it[0], 2, kMax4DAxis);
-    size("resolution.iteration.mu", it[1], 4, kMax4DAxis);
-    size("resolution.iteration.mu_s", it[2], 2, kMax4DAxis);
-    size("resolution.iteration.nu", it[3], 2, kMax4DAxis);
+  // resolution.scene and resolution.iteration: an axis may be left to the bake.
+  auto sizes4d = [&](const std::string& key, const std::optional<std::array<int, 4>>& sizes) {
+    if (!sizes) return;
+    const std::array<int, 4>& it = *sizes;
+    const char* axes[4] = {"r", "mu", "mu_s", "nu"};
+    const int minimum[4] = {2, 4, 2, 2};
+    for (int i = 0; i < 4; ++i) {
+      if (it[i] != TextureSizes::kChosenByTheBake) size(key + "." + axes[i], it[i], minimum[i], kMax4DAxis);
+    }
     if (it[1] % 2 != 0) {
-      check.fail("resolution.iteration.mu", fmt::format("{}", it[1]),
+      check.fail(key + ".mu", fmt::format("{}", it[1]),
                  "must be even: half the rows hold rays that hit the ground, half those that do not");
     }
-    const long long iteration_texels = 1LL * it[0] * it[1] * it[2] * it[3];
-    if (iteration_texels > kMaxScatteringTexels) {
-      check.fail("resolution.iteration", fmt::format("{} texels", iteration_texels),
+    const long long texels = 1LL * it[0] * it[1] * it[2] * it[3];
+    if (texels > kMaxScatteringTexels) {
+      check.fail(key, fmt::format("{} texels", texels),
                  fmt::format("more than {} texels per table", kMaxScatteringTexels));
     }
-  }
+  };
+  sizes4d("resolution.scene", s.scene);
+  sizes4d("resolution.iteration", s.iteration);
 
   bool has_mie = false;
   for (int c = 0; c < n; ++c) has_mie = has_mie || a.mie_scattering[c] > 0.0f;

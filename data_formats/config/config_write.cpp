@@ -56,6 +56,19 @@ std::string profileList(const DensityProfile& layers) {
   return out + "]";
 }
 
+// `resolution.scene` or `resolution.iteration` as one line, axes the bake
+// chooses left out; nothing when absent.
+std::string sizes4d(const char* key, const std::optional<std::array<int, 4>>& sizes) {
+  if (!sizes) return std::string();
+  const char* axes[4] = {"r", "mu", "mu_s", "nu"};
+  std::string fields;
+  for (int i = 0; i < 4; ++i) {
+    if ((*sizes)[i] == TextureSizes::kChosenByTheBake) continue;
+    fields += fmt::format("{}{} = {}", fields.empty() ? "" : ", ", axes[i], (*sizes)[i]);
+  }
+  return fmt::format("{} = {{ {} }}\n", key, fields);
+}
+
 // The [scene] table: the outputs the scene uses, sky radiance first, and the
 // ranges it sets.
 std::string sceneTable(const SceneOutputs& scene, const SceneRanges& ranges) {
@@ -119,9 +132,7 @@ std::string configToToml(const BakeConfig& config) {
       numberText(a.mie_phase_g), profileList(a.mie_density), list(&AtmosphereParameters::absorption_extinction),
       profileList(a.absorption_density), s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r,
       s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu,
-      s.iteration ? fmt::format("iteration = {{ r = {}, mu = {}, mu_s = {}, nu = {} }}\n", (*s.iteration)[0],
-                                (*s.iteration)[1], (*s.iteration)[2], (*s.iteration)[3])
-                  : std::string(),
+      sizes4d("scene", s.scene) + sizes4d("iteration", s.iteration),
       config.bake.auto_orders ? std::string("\"auto\"") : std::to_string(config.bake.orders),
       config.bake.precision == StoragePrecision::Half ? "half" : "float", config.bake.tail_estimate,
       // Written only when it is not the default, for the same reason as below.

@@ -28,10 +28,11 @@ BakeConfig groundScene() {
   BakeConfig c = testEarth();
   c.scene_ranges.altitude_m = std::array<double, 2>{0.0, 2000.0};
   c.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 90.0};
-  // Iterate on the same texels as the whole-domain bake, so the two differ
-  // only in where the stored tables' texels are.
+  // Store and iterate on as many texels as the whole-domain bake, so the two
+  // differ only in where the stored tables' texels are.
   const TextureSizes& s = c.sizes;
   c.sizes.iteration = std::array<int, 4>{s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu};
+  c.sizes.scene = c.sizes.iteration;
   return c;
 }
 
@@ -143,14 +144,17 @@ TEST_F(SceneRangesTest, LookupsOutsideTheRangesAreClampedToTheirEnds) {
   }
 }
 
-// The whole domain's density is stored on half the radiance tables' view
-// texels (densitySizes), as the orders summed it; a narrowed scene's, which
-// it computes on its own stored texels, on all of them.
+// The density is stored on half the radiance tables' view texels
+// (densitySizes): the whole domain's, as the orders summed it, and a
+// narrowed scene's, which it computes on its own altitude and sun texels.
 TEST_F(SceneRangesTest, TheDensityIsStoredOnItsOwnViewTexels) {
-  const BakeTables& whole = whole_->tables();
-  EXPECT_EQ(whole.multiple_density.mu_size, whole.multiple_scattering.mu_size / 2);
-  EXPECT_EQ(whole.multiple_density.nu_size, whole.multiple_scattering.nu_size);
-  EXPECT_EQ(scene_->tables().multiple_density.mu_size, scene_->tables().multiple_scattering.mu_size);
+  for (const Sky* sky : {whole_, scene_}) {
+    const BakeTables& t = sky->tables();
+    EXPECT_EQ(t.multiple_density.mu_size, t.multiple_scattering.mu_size / 2);
+    EXPECT_EQ(t.multiple_density.nu_size, t.multiple_scattering.nu_size);
+    EXPECT_EQ(t.multiple_density.r_size, t.multiple_scattering.r_size);
+    EXPECT_EQ(t.multiple_density.mu_s_size, t.multiple_scattering.mu_s_size);
+  }
 }
 
 // Without views below the horizon the 4D tables' mu axis holds only the sky
@@ -169,6 +173,7 @@ TEST_F(SceneRangesTest, SkyViewsOnlyBakeMatchesTheWholeDomainAndIntegratesGround
   c.scene.radiance_to_points = false;
   const TextureSizes& s = c.sizes;
   c.sizes.iteration = std::array<int, 4>{s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu};
+  c.sizes.scene = c.sizes.iteration;
   const Sky sky = bake(c);
   EXPECT_FALSE(sky.sampler().domain().scattering_ground_views);
   EXPECT_FALSE(sky.tables().multiple_density.texels.empty());
@@ -230,6 +235,7 @@ TEST(SceneRanges, ADeepTwilightSceneAgreesWithTheWholeDomain) {
   scene.scene_ranges.sun_zenith_deg = std::array<double, 2>{96.0, 108.0};
   const TextureSizes& s = scene.sizes;
   scene.sizes.iteration = std::array<int, 4>{s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu};
+  scene.sizes.scene = scene.sizes.iteration;
   const Sky whole = bake(testEarth());
   const Sky twilight = bake(scene);
   double sum_ratio = 0.0;

@@ -39,7 +39,7 @@ namespace fs = std::filesystem;
 BakeFile tinyBake() {
   BakeFile bake;
   BakeConfig config = builtinEarthConfig();
-  config.sizes = {2, 2, 2, 2, 2, 4, 2, 2, std::nullopt};
+  config.sizes = {2, 2, 2, 2, 2, 4, 2, 2, std::nullopt, std::nullopt};
   bake.contents = storedContents(config, AtmosphereDomain::fromParameters(config.atmosphere));
   bake.config_toml = configToToml(config);
   const TextureSizes& s = bake.contents.sizes;

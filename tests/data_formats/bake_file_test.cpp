@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 BakeFile syntheticBake() {
   BakeFile bake;
   BakeConfig config = builtinEarthConfig();
-  config.sizes = {8, 4, 6, 3, 3, 4, 5, 2, std::nullopt};
+  config.sizes = {8, 4, 6, 3, 3, 4, 5, 2, std::nullopt, std::nullopt};
   // A narrowed domain with ends no constant would give: the file must state
   // them exactly.
   AtmosphereDomain domain = AtmosphereDomain::fromParameters(config.atmosphere);

@@ -180,14 +180,20 @@ TEST(Config, SceneRangesParseAndRoundTrip) {
   ASSERT_TRUE(c.scene_ranges.altitude_m && c.scene_ranges.sun_zenith_deg && c.sizes.iteration);
   EXPECT_EQ((*c.scene_ranges.altitude_m)[1], 2000.5);
   EXPECT_EQ((*c.scene_ranges.sun_zenith_deg)[0], 10.0);
-  // Unnamed iteration sizes take the default tables' sizes.
-  EXPECT_EQ(*c.sizes.iteration, (std::array<int, 4>{16, 128, 24, 16}));
+  // Unnamed iteration sizes are left to the bake.
+  constexpr int kChosen = TextureSizes::kChosenByTheBake;
+  EXPECT_EQ(*c.sizes.iteration, (std::array<int, 4>{16, kChosen, 24, kChosen}));
+  EXPECT_FALSE(c.sizes.scene.has_value());
   const std::string text = configToToml(c);
   const BakeConfig again = parseConfig(text, "round trip");
   EXPECT_EQ(again.scene_ranges.altitude_m, c.scene_ranges.altitude_m);
   EXPECT_EQ(again.scene_ranges.sun_zenith_deg, c.scene_ranges.sun_zenith_deg);
   EXPECT_EQ(again.sizes.iteration, c.sizes.iteration);
   EXPECT_EQ(configToToml(again), text);
+  // resolution.scene: the same, and round-trips beside the iteration.
+  const BakeConfig given = parseConfig(kMinimal + "[resolution.scene]\nr = 8\nmu = 96\nmu_s = 25\nnu = 12\n", "scene");
+  EXPECT_EQ(given.sizes.scene, (std::array<int, 4>{8, 96, 25, 12}));
+  EXPECT_EQ(parseConfig(configToToml(given), "round trip").sizes.scene, given.sizes.scene);
   // Views below the horizon: on unless the scene says otherwise.
   EXPECT_TRUE(c.scene_ranges.views_below_horizon);
   const BakeConfig sky = parseConfig(kMinimal + "[scene]\nviews_below_horizon = false\n", "sky views");
@@ -212,6 +218,9 @@ TEST(Config, RejectsBadSceneRanges) {
                  {"scene.views_below_horizon", "must be true or false"});
   expectRejected(kMinimal + "[scene]\nsun_zenith_range_deg = [0, 90]\n[resolution.iteration]\nmu = 33\n",
                  {"resolution.iteration.mu", "33", "must be even"});
+  expectRejected(kMinimal + "[resolution.scene]\nr = 1\n", {"resolution.scene.r", "1"});
+  expectRejected(kMinimal + "[resolution.scene]\nmu = 33\n", {"resolution.scene.mu", "33", "must be even"});
+  expectRejected(kMinimal + "[resolution.scene]\nheight = 3\n", {"resolution.scene.height", "unknown key"});
 }
 
 TEST(Config, RejectsBadOrderSettings) {

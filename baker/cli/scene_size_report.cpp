@@ -1,0 +1,61 @@
+#include "baker/cli/scene_size_report.h"
+
+#include <array>
+
+#include <fmt/format.h>
+
+#include "baker/bake/bake_policy.h"
+
+namespace skybake {
+namespace {
+
+std::array<int, 4> scatteringSizes(const TextureSizes& s) {
+  return {s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu};
+}
+
+// The 4D texels a bake of these sizes stores: single Rayleigh, single Mie and
+// multiple scattering, and the density on its own view axis (densitySizes).
+double storedTexels(const TextureSizes& s) {
+  const TextureSizes d = densitySizes(s);
+  return 3.0 * s.scattering_r * s.scattering_mu * s.scattering_mu_s * s.scattering_nu +
+         1.0 * d.scattering_r * d.scattering_mu * d.scattering_mu_s * d.scattering_nu;
+}
+
+std::string sizesText(const std::array<int, 4>& s) { return fmt::format("{} x {} x {} x {}", s[0], s[1], s[2], s[3]); }
+
+// "chosen" or "given" per axis of a resolution table that may leave axes to the bake.
+std::string origin(const std::optional<std::array<int, 4>>& given) {
+  int count = 0;
+  if (given) {
+    for (int n : *given) count += n != TextureSizes::kChosenByTheBake;
+  }
+  return count == 0 ? "chosen" : count == 4 ? "as the config gives them" : "partly as the config gives them";
+}
+
+}  // namespace
+
+std::optional<SceneSizeChoice> sceneSizeChoice(const BakeConfig& requested, const BakeConfig& settled) {
+  if (!sceneDomain(settled).narrowed() || !settled.sizes.iteration) return std::nullopt;
+  const std::array<int, 4> whole = scatteringSizes(requested.sizes);
+  const std::array<int, 4> stored = scatteringSizes(settled.sizes);
+  const std::array<int, 4> iteration = *settled.sizes.iteration;
+  const double share = storedTexels(settled.sizes) / storedTexels(requested.sizes);
+  const std::string stored_origin = origin(requested.sizes.scene);
+  const std::string iteration_origin = origin(requested.sizes.iteration);
+  SceneSizeChoice choice;
+  choice.description = fmt::format(
+      "scene sizes: stored tables {} ({}), iteration over the whole atmosphere {} ({}), from the whole domain's "
+      "{} (resolution.scattering): {:.1f} % of the whole bake's 4D texels. The bake chooses the scene's part of the "
+      "altitude and sun axes at the whole axes' spacing, three quarters of the view and view-sun axes "
+      "(docs/LEAVE_OUT.md); resolution.scene and resolution.iteration set them",
+      sizesText(stored), stored_origin, sizesText(iteration), iteration_origin, sizesText(whole), 100.0 * share);
+  choice.json = {{"whole_domain", whole},
+                 {"stored", stored},
+                 {"stored_origin", stored_origin},
+                 {"iteration", iteration},
+                 {"iteration_origin", iteration_origin},
+                 {"share_of_whole_4d_texels", share}};
+  return choice;
+}
+
+}  // namespace skybake
