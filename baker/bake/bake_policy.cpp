@@ -150,33 +150,49 @@ bool sunRangeNarrowsAxis(const BakeConfig& config) {
   return added_texels >= kSunAxisNarrowingMinTexels;
 }
 
-// Texels a narrowed altitude axis gets beyond the whole axis's spacing: the
-// ground scene (0 to 2 km on Earth) with the whole spacing's 7 texels read
-// its ground rays 0.04 to 0.07 point above the whole bake by day, with 8
-// within its noise (docs/MEASUREMENTS.md, "Scene sizes").
-constexpr int kSceneExtraAltitudeTexels = 1;
+// A share of a view or view-sun axis, in sixteenths, rounded up; mu kept even.
+int sixteenths(int n, int share, int minimum) { return std::max(minimum, (share * n + 15) / 16); }
+int sixteenthsEven(int n, int share) { return std::max(kMinMu, 2 * ((share * n + 31) / 32)); }
+
+// The shares of the whole domain's view (mu) and view-sun (nu) axes a scene's
+// stored tables keep, in sixteenths. A scene's cameras see its own part of
+// the sky: at 11/16 of mu and 10/16 of nu the ground-level and flight
+// scenes read within the reference's noise of the whole bake on their
+// queries; at 12/16 of both the flight scene's file is 28 % of the whole
+// bake's (docs/MEASUREMENTS.md, "Scene sizes").
+constexpr int kSceneViewShare = 11;
+constexpr int kSceneViewSunShare = 10;
+
+// The lowest sun (largest zenith angle, degrees) of a scene whose stored
+// tables take kSceneViewSunShare of the view-sun texels: the flight scene's
+// (0 to 100 deg) was measured so. Deeper in twilight the glow toward the
+// sun's azimuth needs every slice (8 of 16 left astronomical twilight 13 %
+// off, data_formats/CONFIG.md), so a scene reaching there, or with no sun
+// range, keeps them all.
+constexpr double kSceneFewerViewSunSlicesMaxZenith_deg = 100.0;
 
 // The stored 4D sizes of a scene, chosen from the whole domain's (the
 // config's resolution.scattering) where resolution.scene leaves an axis out:
-// - r and mu_s: the scene's share of the axis at the whole axis's spacing
-//   (r one texel finer, kSceneExtraAltitudeTexels);
-// - mu: three quarters of the whole axis, or half of it when the scene has no
-//   views below the horizon (its sky rays then keep the whole axis's
+// - r and mu_s: the whole axis's own texels over the scene's part of it (the
+//   altitude range widened to them by settledBakeConfig; the sun range by
+//   sceneDomain);
+// - mu: kSceneViewShare of the whole axis, or half of it when the scene has
+//   no views below the horizon (its sky rays then keep the whole axis's
 //   spacing);
-// - nu: three quarters.
-// Measured against the reference on a ground-level and a flight scene, these
-// read within the reference's noise of the whole bake on the scene's queries
-// (docs/LEAVE_OUT.md): a scene is mostly short of the axes' ends, where the
-// whole bake spends texels the scene never reads.
+// - nu: kSceneViewSunShare where the scene's suns stay within
+//   kSceneFewerViewSunSlicesMaxZenith_deg, otherwise all of them.
 std::array<int, 4> chosenSceneSizes(const BakeConfig& config, const AtmosphereDomain& scene) {
   const TextureSizes& whole = config.sizes;
   const double r_share = (scene.scattering_rho_max_m - scene.scattering_rho_min_m) / scene.horizonToTopDistance();
   const double mu_s_share = scene.scattering_mu_s_coord_max - scene.scattering_mu_s_coord_min;
-  std::array<int, 4> sizes{texelsOverShare(whole.scattering_r, r_share, kSceneExtraAltitudeTexels),
-                           scene.scattering_ground_views ? threeQuartersEven(whole.scattering_mu)
-                                                         : std::max(kMinMu, 2 * (whole.scattering_mu / 4)),
-                           texelsOverShare(iterationSunTexels(config), mu_s_share, 0),
-                           threeQuarters(whole.scattering_nu, kMinAxis)};
+  const std::optional<std::array<double, 2>>& sun = config.scene_ranges.sun_zenith_deg;
+  const bool fewer_view_sun_slices = sun && (*sun)[1] <= kSceneFewerViewSunSlicesMaxZenith_deg;
+  std::array<int, 4> sizes{
+      texelsOverShare(whole.scattering_r, r_share, 0),
+      scene.scattering_ground_views ? sixteenthsEven(whole.scattering_mu, kSceneViewShare)
+                                    : std::max(kMinMu, 2 * (whole.scattering_mu / 4)),
+      texelsOverShare(iterationSunTexels(config), mu_s_share, 0),
+      fewer_view_sun_slices ? sixteenths(whole.scattering_nu, kSceneViewSunShare, kMinAxis) : whole.scattering_nu};
   if (config.sizes.scene) {
     for (int i = 0; i < 4; ++i) {
       if ((*config.sizes.scene)[i] != TextureSizes::kChosenByTheBake) sizes[i] = (*config.sizes.scene)[i];
@@ -187,23 +203,56 @@ std::array<int, 4> chosenSceneSizes(const BakeConfig& config, const AtmosphereDo
 
 // The sizes a scene's orders iterate on over the whole domain where
 // resolution.iteration leaves an axis out: three quarters of the whole
-// domain's r, mu and nu, every sun texel (at least the stored tables' when
-// the sun axis stays whole, so that their sun texels are the iteration's).
-// An iteration sun axis without a texel on the horizon doubled the ground
-// scene's low-sun error (31 of 41); every other axis at three quarters
-// costs less than the reference's noise (docs/MEASUREMENTS.md, "Scene sizes").
+// domain's r where the scene narrows the altitudes (all of it otherwise: a
+// sky dome's sky read 0.1 to 0.15 point worse by day at three quarters);
+// every sun texel (at least the stored tables' when the sun axis
+// stays whole, so that their sun texels are the iteration's); mu and nu
+// whole, or at three quarters when every sun of the scene is above the
+// horizon. An iteration sun axis without a texel on the horizon doubled
+// the ground scene's low-sun error (31 of 41); three quarters of mu and nu
+// put 0.1 to 0.2 point on the flight scene's twilight at 440 nm, and less
+// than the reference's noise on any band by day (docs/MEASUREMENTS.md,
+// "Scene sizes").
 std::array<int, 4> chosenIterationSizes(const BakeConfig& config, const std::array<int, 4>& stored,
                                         bool sun_axis_narrowed) {
   const TextureSizes& whole = config.sizes;
   const int mu_s = sun_axis_narrowed ? whole.scattering_mu_s : std::max(whole.scattering_mu_s, stored[2]);
-  std::array<int, 4> sizes{threeQuarters(whole.scattering_r, kMinAxis), threeQuartersEven(whole.scattering_mu), mu_s,
-                           threeQuarters(whole.scattering_nu, kMinAxis)};
+  const std::optional<std::array<double, 2>>& sun = config.scene_ranges.sun_zenith_deg;
+  const bool day_only = sun && (*sun)[1] <= 90.0;
+  const bool altitudes_narrowed = config.scene_ranges.altitude_m.has_value();
+  std::array<int, 4> sizes{altitudes_narrowed ? threeQuarters(whole.scattering_r, kMinAxis) : whole.scattering_r,
+                           day_only ? threeQuartersEven(whole.scattering_mu) : whole.scattering_mu, mu_s,
+                           day_only ? threeQuarters(whole.scattering_nu, kMinAxis) : whole.scattering_nu};
   if (config.sizes.iteration) {
     for (int i = 0; i < 4; ++i) {
       if ((*config.sizes.iteration)[i] != TextureSizes::kChosenByTheBake) sizes[i] = (*config.sizes.iteration)[i];
     }
   }
   return sizes;
+}
+
+// Widens a scene's altitude range to the nearest texels outside it of the
+// whole domain's r axis (`texels` over rho from 0 to H): the scene's
+// altitude texels are then the whole bake's own, so that it reads as the
+// whole bake does at every altitude inside (with the next texel beyond the
+// range at the whole spacing, the ground-level scene's day ground rays read
+// 0.04 to 0.07 point above the whole bake; on its texels, within noise).
+void widenAltitudeRangeToWholeTexels(const AtmosphereParameters& a, int texels, std::array<double, 2>& range_m) {
+  const AtmosphereDomain whole = AtmosphereDomain::fromParameters(a);
+  const double thickness_m = a.top_radius_m - a.bottom_radius_m;
+  const double spacing_m = whole.horizonToTopDistance() / std::max(texels - 1, 1);
+  auto altitudeOfTexel = [&](int k) {
+    const double rho = k * spacing_m;
+    return std::min(std::sqrt(rho * rho + a.bottom_radius_m * a.bottom_radius_m) - a.bottom_radius_m, thickness_m);
+  };
+  const double rho_low = whole.distanceToHorizon(a.bottom_radius_m + std::clamp(range_m[0], 0.0, thickness_m));
+  const double rho_high = whole.distanceToHorizon(a.bottom_radius_m + std::clamp(range_m[1], 0.0, thickness_m));
+  const int low = std::max(0, static_cast<int>(std::floor(rho_low / spacing_m + kHorizonOnTexelTolerance)));
+  const int high = std::min(texels - 1, static_cast<int>(std::ceil(rho_high / spacing_m - kHorizonOnTexelTolerance)));
+  if (high <= low) return;
+  range_m[0] = std::min(range_m[0], low == 0 ? 0.0 : altitudeOfTexel(low));
+  // A range reaching the top (cameras in space) keeps its high end.
+  if (range_m[1] < thickness_m) range_m[1] = std::max(range_m[1], altitudeOfTexel(high));
 }
 
 bool allChosen(const std::optional<std::array<int, 4>>& sizes) {
@@ -220,6 +269,10 @@ BakeConfig settledBakeConfig(BakeConfig config) {
   SceneRanges& scene = config.scene_ranges;
   TextureSizes& sizes = config.sizes;
   if (scene.sun_zenith_deg && !sunRangeNarrowsAxis(config)) scene.sun_zenith_deg.reset();
+  const bool altitude_texels_chosen = !sizes.scene || (*sizes.scene)[0] == TextureSizes::kChosenByTheBake;
+  if (scene.altitude_m && altitude_texels_chosen) {
+    widenAltitudeRangeToWholeTexels(config.atmosphere, sizes.scattering_r, *scene.altitude_m);
+  }
   const AtmosphereDomain domain = sceneDomain(config);
   if (!domain.narrowed()) return config;
   const std::array<int, 4> stored = chosenSceneSizes(config, domain);

@@ -24,7 +24,9 @@
 #include "baker/cli/report_sidecar.h"
 #include "baker/cli/scene_size_report.h"
 #include "baker/cli/size_choice.h"
+#include "baker/cli/target_error_check.h"
 #include "baker/cli/terminal_progress.h"
+#include "baker/validation/validation.h"
 #include "data_formats/atomic_file.h"
 #include "data_formats/config/config.h"
 #include "data_formats/error.h"
@@ -45,6 +47,7 @@ struct BakeOptions {
   std::string altitude_range;               // "LOW:HIGH" metres; empty: from the config
   std::string sun_zenith_range;             // "LOW:HIGH" degrees; empty: from the config
   std::optional<std::string> target_error;  // "0.5%" or "0.5"; absent: the config's sizes
+  std::optional<int> reference_samples;     // the --target-error check's paths per query; absent: validate's default
   bool reproducible = false;
   bool combined_single_mie = false;  // false: from the config
   bool sky_views_only = false;       // false: from the config
@@ -79,8 +82,8 @@ std::string stageSummary(const BakeReport& report) {
   return text;
 }
 
-// Refuses a target the sweep cannot meet or that is not a percentage.
-SizeChoice sizesForTargetError(const std::string& text) {
+// --target-error's percentage; refuses what is not one.
+double targetPercent(const std::string& text) {
   const std::string number = !text.empty() && text.back() == '%' ? text.substr(0, text.size() - 1) : text;
   char* end = nullptr;
   const double percent = std::strtod(number.c_str(), &end);
@@ -88,7 +91,12 @@ SizeChoice sizesForTargetError(const std::string& text) {
       percent >= 100.0) {
     refuseOptionValue("--target-error", text, "must be a percentage in (0, 100), such as 0.5% or 0.5");
   }
-  const std::optional<SizeChoice> choice = chooseSizesForError(percent);
+  return percent;
+}
+
+// Refuses a target the sweep cannot meet or that is not a percentage.
+SizeChoice sizesForTargetError(const std::string& text) {
+  const std::optional<SizeChoice> choice = chooseSizesForError(targetPercent(text));
   if (!choice) {
     const SweepPoint& best = earthSweep().back();
     refuseOptionValue("--target-error", text,
@@ -124,17 +132,24 @@ void runBake(const BakeOptions& o) {
     config.scene_ranges.sun_zenith_deg = parseRangeOption("--sun-zenith-range", o.sun_zenith_range);
   }
   if (o.sky_views_only) config.scene_ranges.views_below_horizon = false;
+  // The config as asked for; --target-error then gives it the whole
+  // domain's sizes (a scene's are chosen from them).
+  const BakeConfig requested = config;
+  auto withSizes = [&](const SizeChoice& choice) {
+    BakeConfig sized = requested;
+    sized.sizes = choice.sizes;
+    sized.sizes.scene = requested.sizes.scene;
+    sized.sizes.iteration = requested.sizes.iteration;
+    return sized;
+  };
   std::optional<SizeChoice> size_choice;
   if (o.target_error) {
     size_choice = sizesForTargetError(*o.target_error);
-    const TextureSizes given = config.sizes;
-    config.sizes = size_choice->sizes;
-    config.sizes.scene = given.scene;
-    config.sizes.iteration = given.iteration;
+    config = withSizes(*size_choice);
   }
   validateConfig(config, source + " (with command-line overrides)");
   const BakeConfig settled = settledBakeConfig(config);
-  const std::optional<SceneSizeChoice> scene_sizes = sceneSizeChoice(config, settled);
+  std::optional<SceneSizeChoice> scene_sizes = sceneSizeChoice(config, settled);
   if (config.scene_ranges.sun_zenith_deg && !settled.scene_ranges.sun_zenith_deg) {
     const std::array<double, 2>& range = *config.scene_ranges.sun_zenith_deg;
     fmt::print(stderr,
@@ -148,6 +163,10 @@ void runBake(const BakeOptions& o) {
     return;
   }
   if (o.output_path.empty()) throwBadInput("bake: -o,--output is required (unless --estimate)");
+  if (o.reference_samples && !o.target_error) {
+    refuseOptionValue("--reference-samples", std::to_string(*o.reference_samples),
+                      "sets the paths of --target-error's check: give --target-error too");
+  }
 
   const std::filesystem::path output(o.output_path);
   // Neither output may replace the config or a spectrum file it names.
@@ -156,18 +175,55 @@ void runBake(const BakeOptions& o) {
   requireMemoryForBake(config, source);
 
   if (scene_sizes) fmt::print(stderr, "skybake: {}\n", scene_sizes->description);
-  if (size_choice) {
+  auto printSizeChoice = [&] {
     const TextureSizes& c = size_choice->sizes;
     fmt::print(stderr,
                "skybake: --target-error {}: {:g}x the default sizes (scattering {} x {} x {} x {}), where the sweep of "
                "the built-in Earth measured {:.2f} % sky radiance RMS (worst channel, day and low sun) and {:.1f} s on "
-               "2 threads (docs/ERROR_VS_TIME.md); `skybake validate` measures this bake\n",
+               "2 threads (docs/ERROR_VS_TIME.md); checked on this bake afterwards\n",
                *o.target_error, size_choice->scale, c.scattering_r, c.scattering_mu, c.scattering_mu_s, c.scattering_nu,
                size_choice->predicted_percent, size_choice->predicted_bake_seconds);
-  }
+  };
+  if (size_choice) printSizeChoice();
   keepFreedTableMemory();
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
+  // --target-error: the bake's own day sky error on the quick query set,
+  // and the sweep's next size while it misses the target.
+  std::optional<TargetErrorCheck> target_check;
+  if (size_choice) {
+    const double target = targetPercent(*o.target_error);
+    for (;;) {
+      target_check = checkTargetError(bake.file, o.reference_samples.value_or(ReferenceSettings{}.paths), progress);
+      if (!target_check->checked || target_check->meets(target)) break;
+      const std::optional<SizeChoice> next = nextLargerSweptSizes(size_choice->scale);
+      if (!next) break;
+      fmt::print(stderr, "skybake: --target-error {}: {:.2f} % by day at {:g}x the default sizes; trying {:g}x\n",
+                 *o.target_error, target_check->day_percent, size_choice->scale, next->scale);
+      size_choice = next;
+      const BakeConfig sized = withSizes(*size_choice);
+      validateConfig(sized, source + " (with command-line overrides)");
+      config = settledBakeConfig(sized);
+      scene_sizes = sceneSizeChoice(sized, config);
+      requireMemoryForBake(config, source);
+      printSizeChoice();
+      if (scene_sizes) fmt::print(stderr, "skybake: {}\n", scene_sizes->description);
+      bake = BakeOutput();  // its tables freed before the next bake's
+      bake = bakeAtmosphere(config, o.threads, progress);
+    }
+    const TargetErrorCheck& c = *target_check;
+    if (!c.checked) {
+      fmt::print(stderr, "skybake: --target-error {}: not checked: {}\n", *o.target_error, c.reason);
+    } else {
+      fmt::print(stderr,
+                 "skybake: --target-error {}: {} at {:g}x the default sizes: day sky radiance {:.2f} % RMS (worst "
+                 "channel, {} queries of the quick set, the reference's noise {:.2f} %), low sun {:.2f} %{}\n",
+                 *o.target_error,
+                 c.meets(target) ? "met" : fmt::format("NOT met, {:.2f} points over, even", c.day_percent - target),
+                 size_choice->scale, c.day_percent, c.queries, c.reference_noise_percent, c.low_sun_percent,
+                 c.meets(target) ? "" : "; set resolution.scattering yourself and validate (docs/LEAVE_OUT.md)");
+    }
+  }
   setStoredReport(bake, !o.reproducible);
   uintmax_t bytes = 0;
   // The sidecar is written while the new bake is still a temporary file: if
@@ -193,7 +249,9 @@ void runBake(const BakeOptions& o) {
                                 {"model",
                                  "sky radiance RMS, worst channel of the day and low-sun bands, "
                                  "as measured in the sweep of the built-in Earth "
-                                 "(docs/ERROR_VS_TIME.md)"}};
+                                 "(docs/ERROR_VS_TIME.md)"},
+                                {"met", target_check->meets(targetPercent(*o.target_error))},
+                                {"check", target_check->toJson()}};
     }
     if (scene_sizes) sidecar["scene_sizes"] = scene_sizes->json;
     writeReportSidecar(output, sidecar);
@@ -262,8 +320,15 @@ Command addBakeCommand(CLI::App& app) {
   cmd->add_option("--target-error", options->target_error,
                   "A sky radiance error to aim for, e.g. 1%: every table size becomes the smallest multiple of "
                   "the default sizes measured in the sweep of the built-in Earth (0.5x, 0.75x, 1x) whose error "
-                  "(docs/ERROR_VS_TIME.md) meets it; the choice is printed and written to the report. Overrides "
-                  "the config's [resolution] sizes.");
+                  "(docs/ERROR_VS_TIME.md) meets it. The bake is then checked against the reference on the quick "
+                  "query set's day sky (about a minute the first time for an atmosphere, cached after) and baked "
+                  "at the sweep's next size while it misses; the result, met or by how much not, is printed and "
+                  "written to the report. Overrides the config's [resolution] sizes (a scene's are chosen from "
+                  "them).");
+  requireWholeIn(cmd->add_option("--reference-samples", options->reference_samples,
+                                 "With --target-error: Monte Carlo paths per reference query of its check (default "
+                                 "32768, as skybake validate; fewer check faster and more noisily)."),
+                 1, kMaxReferencePaths);
   cmd->add_flag("--combined-single-mie", options->combined_single_mie,
                 "Store single Mie scattering as one channel beside single Rayleigh scattering and rebuild the "
                 "others from the Rayleigh channels (sets bake.combined_single_mie): a smaller file, less "

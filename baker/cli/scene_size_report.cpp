@@ -1,10 +1,13 @@
 #include "baker/cli/scene_size_report.h"
 
 #include <array>
+#include <cmath>
 
 #include <fmt/format.h>
 
 #include "baker/bake/bake_policy.h"
+#include "data_formats/angles.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 namespace {
@@ -43,18 +46,23 @@ std::optional<SceneSizeChoice> sceneSizeChoice(const BakeConfig& requested, cons
   const std::string stored_origin = origin(requested.sizes.scene);
   const std::string iteration_origin = origin(requested.sizes.iteration);
   SceneSizeChoice choice;
+  std::string ranges;
+  if (const auto& a = settled.scene_ranges.altitude_m)
+    ranges += fmt::format(", altitudes {:.0f} to {:.0f} m", (*a)[0], (*a)[1]);
+  const AtmosphereDomain domain = sceneDomain(settled);
+  const ScatteringSizes sizes = ScatteringSizes::fromTextureSizes(settled.sizes);
+  if (settled.scene_ranges.sun_zenith_deg) {
+    ranges += fmt::format(", sun zenith {:.1f} to {:.1f} deg",
+                          degreesFromRadians(std::acos(muSFromScatteringTexel(domain, sizes, sizes.mu_s - 1))),
+                          degreesFromRadians(std::acos(muSFromScatteringTexel(domain, sizes, 0))));
+  }
   choice.description = fmt::format(
-      "scene sizes: stored tables {} ({}), iteration over the whole atmosphere {} ({}), from the whole domain's "
-      "{} (resolution.scattering): {:.1f} % of the whole bake's 4D texels. The bake chooses the scene's part of the "
-      "altitude and sun axes at the whole axes' spacing, three quarters of the view and view-sun axes "
-      "(docs/LEAVE_OUT.md); resolution.scene and resolution.iteration set them",
-      sizesText(stored), stored_origin, sizesText(iteration), iteration_origin, sizesText(whole), 100.0 * share);
-  choice.json = {{"whole_domain", whole},
-                 {"stored", stored},
-                 {"stored_origin", stored_origin},
-                 {"iteration", iteration},
-                 {"iteration_origin", iteration_origin},
-                 {"share_of_whole_4d_texels", share}};
+      "scene sizes: stored tables {} ({}{}), iteration over the whole atmosphere {} ({}), from the whole domain's "
+      "{} (resolution.scattering): {:.1f} % of the whole bake's 4D texels. The bake keeps the whole axes' own "
+      "altitude and sun texels over the scene's ranges (widened to the next texel), 11/16 of the view and 10/16 "
+      "of the view-sun texels (docs/LEAVE_OUT.md); resolution.scene and resolution.iteration set them",
+      sizesText(stored), stored_origin, ranges, sizesText(iteration), iteration_origin, sizesText(whole),
+      100.0 * share);
   return choice;
 }
 

@@ -30,16 +30,29 @@ const std::vector<SweepPoint>& earthSweep() {
 
 double worstPercent(const SweepPoint& p) { return std::max(p.day_percent, p.low_sun_percent); }
 
+namespace {
+
+SizeChoice choiceAt(const SweepPoint& p) {
+  SizeChoice c;
+  c.scale = p.scale;
+  c.predicted_percent = worstPercent(p);
+  c.predicted_bake_seconds = p.bake_seconds;
+  c.sizes = scaledDefaultSizes(p.scale);
+  return c;
+}
+
+}  // namespace
+
 std::optional<SizeChoice> chooseSizesForError(double target_percent) {
   for (const SweepPoint& p : earthSweep()) {
-    if (worstPercent(p) <= target_percent) {
-      SizeChoice c;
-      c.scale = p.scale;
-      c.predicted_percent = worstPercent(p);
-      c.predicted_bake_seconds = p.bake_seconds;
-      c.sizes = scaledDefaultSizes(p.scale);
-      return c;
-    }
+    if (worstPercent(p) <= target_percent) return choiceAt(p);
+  }
+  return std::nullopt;
+}
+
+std::optional<SizeChoice> nextLargerSweptSizes(double scale) {
+  for (const SweepPoint& p : earthSweep()) {
+    if (p.scale > scale) return choiceAt(p);
   }
   return std::nullopt;
 }

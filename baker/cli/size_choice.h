@@ -41,6 +41,9 @@ double worstPercent(const SweepPoint& p);
 // when even the largest misses it.
 std::optional<SizeChoice> chooseSizesForError(double target_percent);
 
+// The sweep's next size above `scale`; nullopt at the largest.
+std::optional<SizeChoice> nextLargerSweptSizes(double scale);
+
 // The default sizes times `scale`, rounded; at least 2 per axis, the
 // scattering mu even and at least 4 (as scripts/sweep/make_config.py).
 TextureSizes scaledDefaultSizes(double scale);

@@ -39,9 +39,14 @@ TEST(BakePolicy, NarrowedScatteringAxesRoundTripAndEndOnTheSceneRanges) {
   const ScatteringSizes sizes = ScatteringSizes::fromTextureSizes(config.sizes);
   ASSERT_TRUE(narrow.narrowed());
   EXPECT_FALSE(domain.narrowed());
-  // r comes back through sqrt(rho^2 + R^2) with R = 6.36e6 m: ~1e-9 m.
-  EXPECT_NEAR(rFromScatteringTexel(narrow, sizes, 0), domain.bottom_radius_m + 500.0, 1e-6);
-  EXPECT_NEAR(rFromScatteringTexel(narrow, sizes, sizes.r - 1), domain.bottom_radius_m + 2000.0, 1e-6);
+  // The r axis ends on the settled range, which holds the scene's (widened
+  // to the whole axis's texels); r comes back through sqrt(rho^2 + R^2)
+  // with R = 6.36e6 m: ~1e-9 m.
+  const std::array<double, 2> altitudes = config.scene_ranges.altitude_m.value();
+  EXPECT_LE(altitudes[0], 500.0);
+  EXPECT_GE(altitudes[1], 2000.0);
+  EXPECT_NEAR(rFromScatteringTexel(narrow, sizes, 0), domain.bottom_radius_m + altitudes[0], 1e-6);
+  EXPECT_NEAR(rFromScatteringTexel(narrow, sizes, sizes.r - 1), domain.bottom_radius_m + altitudes[1], 1e-6);
   // Every sun texel is one of the whole axis's, the scene's 19 to 91 deg
   // lies within them, and no whole-axis texel inside it is missing.
   std::vector<double> whole_deg;
@@ -122,11 +127,20 @@ TEST(BakePolicy, AScenesSizesComeFromTheWholeDomainsAndGivenAxesWin) {
   ASSERT_TRUE(settled.sizes.scene && settled.sizes.iteration);
   EXPECT_EQ(*settled.sizes.scene, (std::array<int, 4>{settled.sizes.scattering_r, settled.sizes.scattering_mu,
                                                       settled.sizes.scattering_mu_s, settled.sizes.scattering_nu}));
-  // The altitude texels: no further apart in rho than the whole axis's.
+  // The altitude texels are the whole axis's own over the range, widened
+  // to the next of them: 0 to 2 km becomes 0 to 2.25 km on Earth.
   const AtmosphereDomain d = sceneDomain(settled);
   const AtmosphereDomain w = AtmosphereDomain::fromParameters(whole.atmosphere);
-  EXPECT_LE((d.scattering_rho_max_m - d.scattering_rho_min_m) / (settled.sizes.scattering_r - 1),
-            w.horizonToTopDistance() / (whole.sizes.scattering_r - 1));
+  const ScatteringSizes scene_sizes = ScatteringSizes::fromTextureSizes(settled.sizes);
+  const ScatteringSizes whole_sizes = ScatteringSizes::fromTextureSizes(whole.sizes);
+  ASSERT_TRUE(settled.scene_ranges.altitude_m.has_value());
+  EXPECT_EQ((*settled.scene_ranges.altitude_m)[0], 0.0);
+  EXPECT_GE((*settled.scene_ranges.altitude_m)[1], 2000.0);
+  for (int i = 0; i < scene_sizes.r; ++i) {
+    // r comes back through sqrt(rho^2 + R^2) with R = 6.36e6 m: ~1e-9 m.
+    EXPECT_NEAR(rFromScatteringTexel(d, scene_sizes, i), rFromScatteringTexel(w, whole_sizes, i), 1e-6);
+  }
+  EXPECT_GT(rFromScatteringTexel(w, whole_sizes, scene_sizes.r), w.bottom_radius_m + 2000.0);
   // The orders iterate on every sun texel of the whole axis (one sits on the horizon).
   EXPECT_EQ((*settled.sizes.iteration)[2], whole.sizes.scattering_mu_s);
   const BakeConfig again = settledBakeConfig(settled);
@@ -157,7 +171,8 @@ TEST(BakePolicy, SettledConfigKeepsOnlySunRangesThatNarrowTheAxis) {
   config.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 110.0};
   const BakeConfig whole_sun = settledBakeConfig(config);
   EXPECT_FALSE(whole_sun.scene_ranges.sun_zenith_deg.has_value());
-  EXPECT_EQ(whole_sun.scene_ranges.altitude_m, config.scene_ranges.altitude_m);
+  ASSERT_TRUE(whole_sun.scene_ranges.altitude_m.has_value());
+  EXPECT_GE((*whole_sun.scene_ranges.altitude_m)[1], 15000.0);
   ASSERT_TRUE(whole_sun.sizes.iteration.has_value());
   EXPECT_EQ((*whole_sun.sizes.iteration)[2], config.sizes.scattering_mu_s);
   EXPECT_EQ(whole_sun.sizes.scattering_mu_s, config.sizes.scattering_mu_s);

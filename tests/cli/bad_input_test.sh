@@ -209,8 +209,10 @@ radiance_missing "no_such.csv: cannot open query file: No such file or directory
 radiance_missing "is a directory, not a query file" "$work"
 # A bake narrowed to a scene's ranges refuses lookups outside them (they
 # would be clamped), naming the cell, the bake and the range.
-# (The orders iterate at the small sizes too, to keep this quick.)
-{ cat "$small"; printf '\n[resolution.iteration]\nr = 8\nmu = 32\nmu_s = 8\nnu = 4\n'; } >"$work/narrow.toml"
+# (The orders iterate at the small sizes too, to keep this quick; the
+# altitude texels are given, so that the range is not widened to the whole
+# axis's next texel.)
+{ cat "$small"; printf '\n[resolution.iteration]\nr = 8\nmu = 32\nmu_s = 8\nnu = 4\n[resolution.scene]\nr = 8\n'; } >"$work/narrow.toml"
 "$skybake" bake "$work/narrow.toml" -o "$work/narrow.exr" --threads 2 --altitude-range 0:2000 --sun-zenith-range 0:90 \
   2>"$work/stderr" || fail "the narrowed bake failed: $(cat "$work/stderr")"
 narrow() { kept "$work/existing.csv" "$1" -- lookup radiance "$work/narrow.exr" --queries "$work/q.csv" -o "$work/existing.csv"; }

@@ -32,6 +32,24 @@ expect_status 2 "bad_bits.toml:" -- bake "$work/bad_bits.toml" -o "$work/x.exr"
 grep -qF "bake.stored_fraction_bits = 30: must be in [10, 23]" "$work/stderr" ||
   fail "bad stored_fraction_bits message: $(cat "$work/stderr")"
 
+# --target-error checks the bake it chose on the quick set's day sky and
+# says whether the target is met, in the terminal and in the sidecar
+# (few reference paths, no shared cache: the check's plumbing, not its
+# figures, which docs/LEAVE_OUT.md gives at 32768 paths).
+SKYBAKE_CACHE_DIR="$work/cache" expect_status 0 "--target-error 2%: " -- bake "$small" -o "$work/target.exr" \
+  --target-error 2% --reference-samples 256 --orders 3
+grep -qE -- "--target-error 2%: (met|NOT met, [0-9.]+ points over, even) at [0-9.]+x the default sizes: day sky radiance [0-9.]+ % RMS" \
+  "$work/stderr" || fail "--target-error did not say whether its check met the target: $(cat "$work/stderr")"
+/usr/bin/python3 - "$work/target.report.json" <<'PY' || fail "--target-error wrote no check to the sidecar"
+import json, sys
+choice = json.load(open(sys.argv[1]))["size_choice"]
+check = choice["check"]
+assert check["checked"] and check["day_queries"] > 0 and check["reference_paths"] == 256, check
+assert choice["met"] == (check["day_sky_radiance_rms_percent"] <= 2.0), choice
+PY
+expect_status 2 "--reference-samples = 256: sets the paths of --target-error's check" -- \
+  bake "$small" -o "$work/x.exr" --reference-samples 256
+
 # A good bake, then a failing one aimed at the same path: the first survives.
 expect_status 0 "baked 'small_earth'" -- bake "$small" -o "$work/good.exr" --threads 1 --reproducible
 sum_before=$(sha256sum <"$work/good.exr")

@@ -1,21 +1,26 @@
 #!/usr/bin/env bash
-# Every command in README.md's sh code blocks, run as a newcomer would run
-# it from the repository's root, so that the README's commands work as
-# written. Bakes run at small table sizes: the built-in Earth is
-# tests/cli/small_earth.toml (the same atmosphere at tiny sizes) and each
-# preset a copy of itself with the same small [resolution]; validate
-# computes its reference with few paths and no cache. A few commands are
-# covered by tests of their own or are not tests at all; each is named
-# below with the reason, and a README line that matches no rule fails.
-# Usage: readme_commands_test.sh SKYBAKE_BINARY SOURCE_DIR
+# Every command in the sh code blocks of the given documents (README.md,
+# docs/LEAVE_OUT.md), run in order as a newcomer would run them from the
+# repository's root, so that the documents' commands work as written. Bakes
+# run at small table sizes: the built-in Earth is tests/cli/small_earth.toml
+# (the same atmosphere at tiny sizes) and each preset a copy of itself with
+# the same small [resolution]; validate computes its reference with few
+# paths and no cache. A few commands are covered by tests of their own or
+# are not tests at all; each is named below with the reason, and a line
+# that matches no rule fails. (data_formats/CONFIG.md has no commands; its
+# TOML examples are tests/doc_config_examples_test.py's.)
+# Usage: doc_commands_test.sh SKYBAKE_BINARY SOURCE_DIR DOCUMENT...
 set -u
 skybake=$1
 source_dir=$2
+shift 2
+documents=("$@")
+[ "${#documents[@]}" -ge 1 ] || { echo "doc_commands: no documents given"; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0
 failed=0
-fail() { echo "readme_commands: FAIL: $*"; failed=$((failed + 1)); }
+fail() { echo "doc_commands: FAIL: $*"; failed=$((failed + 1)); }
 
 # The tree a command sees: build/baker/skybake, the presets at small sizes,
 # the scripts, the example query file, and out/earth.exr as run.sh
@@ -33,12 +38,18 @@ for preset in "$work"/data_formats/presets/*.toml; do
   mv "$preset.tmp" "$preset"
 done
 "$skybake" bake "$source_dir/tests/cli/small_earth.toml" -o "$work/out/earth.exr" >/dev/null 2>&1 ||
-  { echo "readme_commands: cannot bake the small Earth"; exit 1; }
+  { echo "doc_commands: cannot bake the small Earth"; exit 1; }
 
-# The command lines of the sh blocks, comments stripped.
-mapfile -t commands < <(awk '/^```sh$/ {inside = 1; next} /^```/ {inside = 0} inside' "$source_dir/README.md" |
-  sed -e 's/[[:space:]]\+#.*$//' -e '/^[[:space:]]*$/d')
-[ "${#commands[@]}" -ge 10 ] || { echo "readme_commands: only ${#commands[@]} commands found in README.md"; exit 1; }
+# The command lines of each document's sh blocks, comments stripped; each
+# document must have some (a document whose blocks lost their sh tag would
+# otherwise pass untested).
+commands=()
+for document in "${documents[@]}"; do
+  mapfile -t found < <(awk '/^```sh$/ {inside = 1; next} /^```/ {inside = 0} inside' "$source_dir/$document" |
+    sed -e 's/[[:space:]]\+#.*$//' -e '/^[[:space:]]*$/d')
+  [ "${#found[@]}" -ge 3 ] || { echo "doc_commands: only ${#found[@]} commands found in $document"; exit 1; }
+  commands+=("${found[@]}")
+done
 
 for line in "${commands[@]}"; do
   read -ra words <<<"$line"
@@ -69,6 +80,9 @@ for line in "${commands[@]}"; do
       # CTest's example_aerosol_sky runs this script at tiny sizes.
       [ -f "$source_dir/scripts/examples/aerosol_sky.py" ] || fail "$line: no such script"
       continue ;;
+    "/usr/bin/python3 scripts/scene_queries.py "*)
+      # A script of the repository, run from the root.
+      words[1]="$source_dir/${words[1]}" ;;
     "build/baker/skybake bake -o "*)
       # The built-in Earth, at small sizes.
       words=("${words[0]}" bake "$source_dir/tests/cli/small_earth.toml" "${words[@]:2}") ;;
@@ -77,7 +91,7 @@ for line in "${commands[@]}"; do
       words+=(--reference-samples 64 --no-cache) ;;
     "build/baker/skybake "*) ;;
     *)
-      fail "README.md: '$line' matches no rule of this test; add one"
+      fail "'$line' matches no rule of this test; add one"
       continue ;;
   esac
   if (cd "$work" && "${words[@]}" >"$work/stdout" 2>"$work/stderr"); then
@@ -87,5 +101,5 @@ for line in "${commands[@]}"; do
   fi
 done
 
-echo "readme_commands: $passed passed, $failed failed"
+echo "doc_commands: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
