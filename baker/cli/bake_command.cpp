@@ -48,6 +48,7 @@ struct BakeOptions {
   std::string sun_zenith_range;             // "LOW:HIGH" degrees; empty: from the config
   std::optional<std::string> target_error;  // "0.5%" or "0.5"; absent: the config's sizes
   std::optional<int> reference_samples;     // the --target-error check's paths per query; absent: validate's default
+  std::string max_file_size;                // "8MiB", "5e6"; empty: no budget
   bool reproducible = false;
   bool combined_single_mie = false;  // false: from the config
   bool sky_views_only = false;       // false: from the config
@@ -92,6 +93,25 @@ double targetPercent(const std::string& text) {
     refuseOptionValue("--target-error", text, "must be a percentage in (0, 100), such as 0.5% or 0.5");
   }
   return percent;
+}
+
+// --max-file-size in bytes: a number with an optional B, KB, MB, GB (powers
+// of 1000) or KiB, MiB, GiB (of 1024); refuses anything else.
+uintmax_t fileSizeBudget(const std::string& text) {
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  std::string unit(end);
+  unit.erase(0, unit.find_first_not_of(' '));
+  const std::pair<const char*, double> units[] = {{"", 1.0},          {"B", 1.0},           {"KB", 1e3},
+                                                  {"MB", 1e6},        {"GB", 1e9},          {"KiB", 1024.0},
+                                                  {"MiB", 1048576.0}, {"GiB", 1073741824.0}};
+  for (const auto& [name, factor] : units) {
+    const double bytes = number * factor;
+    if (unit == name && end != text.c_str() && std::isfinite(bytes) && bytes >= 1.0 && bytes < 1e18) {
+      return static_cast<uintmax_t>(bytes);
+    }
+  }
+  refuseOptionValue("--max-file-size", text, "must be a size such as 8MiB, 20MB or 5000000 (bytes)");
 }
 
 // Refuses a target the sweep cannot meet or that is not a percentage.
@@ -163,6 +183,12 @@ void runBake(const BakeOptions& o) {
     return;
   }
   if (o.output_path.empty()) throwBadInput("bake: -o,--output is required (unless --estimate)");
+  const std::optional<uintmax_t> budget_bytes =
+      o.max_file_size.empty() ? std::nullopt : std::optional<uintmax_t>(fileSizeBudget(o.max_file_size));
+  if (budget_bytes && o.target_error) {
+    refuseOptionValue("--max-file-size", o.max_file_size,
+                      "cannot be combined with --target-error (each chooses the sizes): give one");
+  }
   if (o.reference_samples && !o.target_error) {
     refuseOptionValue("--reference-samples", std::to_string(*o.reference_samples),
                       "sets the paths of --target-error's check: give --target-error too");
@@ -224,13 +250,24 @@ void runBake(const BakeOptions& o) {
                  c.meets(target) ? "" : "; set resolution.scattering yourself and validate (docs/LEAVE_OUT.md)");
     }
   }
-  setStoredReport(bake, !o.reproducible);
+  // --max-file-size: the config's sizes, then the sweep's smaller ones, until
+  // the written file fits (it is measured as the temporary file, so that an
+  // existing bake is replaced only by one that fits).
+  std::optional<SizeChoice> budget_choice;
+  auto nextSmallerForBudget = [&]() -> std::optional<SizeChoice> {
+    const double texels = 1.0 * config.sizes.scattering_r * config.sizes.scattering_mu * config.sizes.scattering_mu_s *
+                          config.sizes.scattering_nu;
+    const std::vector<SweepPoint>& sweep = earthSweep();
+    for (auto p = sweep.rbegin(); p != sweep.rend(); ++p) {
+      const SizeChoice c = sizeChoiceAt(*p);
+      BakeConfig sized = settledBakeConfig(withSizes(c));
+      const TextureSizes& t = sized.sizes;
+      if (1.0 * t.scattering_r * t.scattering_mu * t.scattering_mu_s * t.scattering_nu < texels) return c;
+    }
+    return std::nullopt;
+  };
   uintmax_t bytes = 0;
-  // The sidecar is written while the new bake is still a temporary file: if
-  // it cannot be, the existing bake stays in place with its own report.
-  setBakeFileWriteThreads(bake.report.threads);
-  writeBakeFile(output, bake.file, [&](const std::filesystem::path& temp) {
-    bytes = std::filesystem::file_size(temp);
+  auto writeSidecar = [&](const std::filesystem::path&) {
     const nlohmann::ordered_json report = nlohmann::ordered_json::parse(bake.report.toJson(!o.reproducible));
     nlohmann::ordered_json sidecar{{"bake_file", o.output_path},
                                    {"atmosphere", config.name},
@@ -254,8 +291,62 @@ void runBake(const BakeOptions& o) {
                                 {"check", target_check->toJson()}};
     }
     if (scene_sizes) sidecar["scene_sizes"] = scene_sizes->json;
+    if (budget_bytes) {
+      sidecar["file_size_budget"] = {
+          {"max_file_size", o.max_file_size},
+          {"max_bytes", *budget_bytes},
+          {"scale_of_default_sizes", budget_choice ? budget_choice->scale : 0.0},
+          {"sizes", budget_choice ? "a size of the sweep of the built-in Earth" : "the config's"}};
+    }
     writeReportSidecar(output, sidecar);
-  });
+  };
+  bool over_budget = false;
+  for (;;) {
+    setStoredReport(bake, !o.reproducible);
+    // The sidecar is written while the new bake is still a temporary file: if
+    // it cannot be, the existing bake stays in place with its own report.
+    setBakeFileWriteThreads(bake.report.threads);
+    try {
+      writeBakeFile(output, bake.file, [&](const std::filesystem::path& temp) {
+        bytes = std::filesystem::file_size(temp);
+        if (budget_bytes && bytes > *budget_bytes) {
+          over_budget = true;
+          throw Error(ErrorKind::BadInput, "over the file size budget");
+        }
+        writeSidecar(temp);
+      });
+      break;
+    } catch (const Error&) {
+      if (!over_budget) throw;
+    }
+    over_budget = false;
+    const std::optional<SizeChoice> smaller = nextSmallerForBudget();
+    if (!smaller) {
+      refuseOptionValue(
+          "--max-file-size", o.max_file_size,
+          fmt::format("at {} the file is {:.2f} MiB ({} bytes), and the sweep offers no smaller size; set "
+                      "resolution.scattering yourself",
+                      budget_choice ? fmt::format("{:g}x the default sizes", budget_choice->scale)
+                                    : std::string("the config's sizes"),
+                      bytes / 1048576.0, bytes));
+    }
+    fmt::print(stderr, "skybake: --max-file-size {}: {:.2f} MiB at these sizes; trying {:g}x the default sizes\n",
+               o.max_file_size, bytes / 1048576.0, smaller->scale);
+    budget_choice = smaller;
+    const BakeConfig sized = withSizes(*budget_choice);
+    validateConfig(sized, source + " (with command-line overrides)");
+    config = settledBakeConfig(sized);
+    scene_sizes = sceneSizeChoice(sized, config);
+    requireMemoryForBake(config, source);
+    if (scene_sizes) fmt::print(stderr, "skybake: {}\n", scene_sizes->description);
+    bake = BakeOutput();  // its tables freed before the next bake's
+    bake = bakeAtmosphere(config, o.threads, progress);
+  }
+  if (budget_bytes) {
+    fmt::print(stderr, "skybake: --max-file-size {}: {:.2f} MiB ({} bytes) at {}\n", o.max_file_size, bytes / 1048576.0,
+               bytes,
+               budget_choice ? fmt::format("{:g}x the default sizes", budget_choice->scale) : "the config's sizes");
+  }
   const OrdersDecision& decision = bake.report.orders_decision;
   // Where the last order still adds most (the slowest-converging altitude
   // and sun): what the orders leave out, said for every bake.
@@ -329,6 +420,11 @@ Command addBakeCommand(CLI::App& app) {
                                  "With --target-error: Monte Carlo paths per reference query of its check (default "
                                  "32768, as skybake validate; fewer check faster and more noisily)."),
                  1, kMaxReferencePaths);
+  cmd->add_option("--max-file-size", options->max_file_size,
+                  "A budget for the bake file, e.g. 8MiB, 20MB or 5000000 (bytes): the config's sizes, then the "
+                  "smaller sizes of the sweep of the built-in Earth (0.75x, 0.5x the defaults; a scene's chosen "
+                  "from them), until the written file fits; the size used is printed and written to the report. "
+                  "Not with --target-error.");
   cmd->add_flag("--combined-single-mie", options->combined_single_mie,
                 "Store single Mie scattering as one channel beside single Rayleigh scattering and rebuild the "
                 "others from the Rayleigh channels (sets bake.combined_single_mie): a smaller file, less "

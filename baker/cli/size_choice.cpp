@@ -30,9 +30,7 @@ const std::vector<SweepPoint>& earthSweep() {
 
 double worstPercent(const SweepPoint& p) { return std::max(p.day_percent, p.low_sun_percent); }
 
-namespace {
-
-SizeChoice choiceAt(const SweepPoint& p) {
+SizeChoice sizeChoiceAt(const SweepPoint& p) {
   SizeChoice c;
   c.scale = p.scale;
   c.predicted_percent = worstPercent(p);
@@ -41,18 +39,16 @@ SizeChoice choiceAt(const SweepPoint& p) {
   return c;
 }
 
-}  // namespace
-
 std::optional<SizeChoice> chooseSizesForError(double target_percent) {
   for (const SweepPoint& p : earthSweep()) {
-    if (worstPercent(p) <= target_percent) return choiceAt(p);
+    if (worstPercent(p) <= target_percent) return sizeChoiceAt(p);
   }
   return std::nullopt;
 }
 
 std::optional<SizeChoice> nextLargerSweptSizes(double scale) {
   for (const SweepPoint& p : earthSweep()) {
-    if (p.scale > scale) return choiceAt(p);
+    if (p.scale > scale) return sizeChoiceAt(p);
   }
   return std::nullopt;
 }

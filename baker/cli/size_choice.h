@@ -41,6 +41,9 @@ double worstPercent(const SweepPoint& p);
 // when even the largest misses it.
 std::optional<SizeChoice> chooseSizesForError(double target_percent);
 
+// The sweep's point as a choice: its sizes, error and time.
+SizeChoice sizeChoiceAt(const SweepPoint& p);
+
 // The sweep's next size above `scale`; nullopt at the largest.
 std::optional<SizeChoice> nextLargerSweptSizes(double scale);
 

@@ -86,6 +86,10 @@ refused "--outputs: clouds not in {sky_radiance,radiance_to_points,ground_irradi
 for v in 0-2000 2000 :5 nan:1 0:inf; do
   refused "--altitude-range = $v: must be LOW:HIGH, two finite numbers" -- "${bake[@]}" --altitude-range "$v"
 done
+for v in 0 -1 abc 3x 5MiBs 1e30GiB; do
+  refused "--max-file-size = $v: must be a size such as 8MiB, 20MB or 5000000 (bytes)" -- "${bake[@]}" --max-file-size "$v"
+done
+refused "--max-file-size = 5MiB: cannot be combined with --target-error" -- "${bake[@]}" --max-file-size 5MiB --target-error 1%
 for v in 0 -1 100 abc nan%; do
   refused "--target-error = $v: must be a percentage in (0, 100), such as 0.5% or 0.5" -- "${bake[@]}" --target-error "$v"
 done

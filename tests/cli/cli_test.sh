@@ -50,6 +50,17 @@ PY
 expect_status 2 "--reference-samples = 256: sets the paths of --target-error's check" -- \
   bake "$small" -o "$work/x.exr" --reference-samples 256
 
+# --max-file-size: the config's sizes, then the sweep's smaller ones, until
+# the written file fits (the built-in Earth's 22.6 MiB does not fit 12 MiB,
+# its 0.75x does; 2 orders keep it quick); a budget nothing fits is refused
+# and leaves no file.
+expect_status 0 "trying 0.75x the default sizes" -- bake -o "$work/budget.exr" --orders 2 --max-file-size 12MiB
+[ "$(stat -c %s "$work/budget.exr")" -le $((12 * 1048576)) ] || fail "--max-file-size 12MiB wrote a larger file"
+grep -q '"file_size_budget"' "$work/budget.report.json" || fail "--max-file-size wrote no budget to the sidecar"
+expect_status 2 "--max-file-size = 1KB: at the config's sizes the file is" -- \
+  bake "$small" -o "$work/tiny.exr" --max-file-size 1KB
+[ -e "$work/tiny.exr" ] && fail "a bake over its --max-file-size left a file"
+
 # A good bake, then a failing one aimed at the same path: the first survives.
 expect_status 0 "baked 'small_earth'" -- bake "$small" -o "$work/good.exr" --threads 1 --reproducible
 sum_before=$(sha256sum <"$work/good.exr")
