@@ -77,9 +77,9 @@ constexpr double kHorizonOnTexelTolerance = 1e-6;
 // those texels it then holds; nullopt unless one of them sits on the
 // horizon. The scene's sun texels are then the iteration's own: its
 // density is computed where the previous order was, and its tables sample
-// the sun angle exactly where the whole bake's do. At the same spacing but
-// shifted, the flight scene's twilight read 0.2 to 0.4 point worse than the
-// whole bake (docs/MEASUREMENTS.md, "Scene sizes").
+// the sun angle exactly where the whole bake's do, for any range (a range's
+// own axis at the whole spacing with a texel moved onto the horizon lands
+// there too, but only while its count rounds to the whole spacing).
 struct SunTexelSpan {
   double lo, hi;
   int texels;
@@ -132,11 +132,11 @@ AtmosphereDomain sceneDomain(const BakeConfig& config) {
 
 namespace {
 
-// A narrowed sun axis has to be this many texels' worth finer than the whole
-// axis to be used. Its texels fall between the iteration's, so the stored
-// scattering density, interpolated from the iteration's table there, is
-// interpolated twice in the sun angle at each lookup, which costs more than
-// a fraction of a texel gains (docs/LEAVE_OUT.md, docs/MEASUREMENTS.md).
+// A narrowed sun axis has to leave out this many texels' worth of the
+// iteration's axis to be used: short of that it saves nothing, and an axis
+// of a given count whose texels fell between the iteration's cost more than
+// a fraction of a texel gains (docs/MEASUREMENTS.md, "Narrowing the sun
+// axis").
 constexpr double kSunAxisNarrowingMinTexels = 1.0;
 
 bool sunRangeNarrowsAxis(const BakeConfig& config) {
@@ -201,6 +201,10 @@ std::array<int, 4> chosenSceneSizes(const BakeConfig& config, const AtmosphereDo
   return sizes;
 }
 
+// The sun's zenith angle on the horizon: a scene whose suns all stay above
+// it has no twilight.
+constexpr double kHorizonZenith_deg = 90.0;
+
 // The sizes a scene's orders iterate on over the whole domain where
 // resolution.iteration leaves an axis out: three quarters of the whole
 // domain's r where the scene narrows the altitudes (all of it otherwise: a
@@ -218,7 +222,7 @@ std::array<int, 4> chosenIterationSizes(const BakeConfig& config, const std::arr
   const TextureSizes& whole = config.sizes;
   const int mu_s = sun_axis_narrowed ? whole.scattering_mu_s : std::max(whole.scattering_mu_s, stored[2]);
   const std::optional<std::array<double, 2>>& sun = config.scene_ranges.sun_zenith_deg;
-  const bool day_only = sun && (*sun)[1] <= 90.0;
+  const bool day_only = sun && (*sun)[1] <= kHorizonZenith_deg;
   const bool altitudes_narrowed = config.scene_ranges.altitude_m.has_value();
   std::array<int, 4> sizes{altitudes_narrowed ? threeQuarters(whole.scattering_r, kMinAxis) : whole.scattering_r,
                            day_only ? threeQuartersEven(whole.scattering_mu) : whole.scattering_mu, mu_s,
@@ -234,9 +238,10 @@ std::array<int, 4> chosenIterationSizes(const BakeConfig& config, const std::arr
 // Widens a scene's altitude range to the nearest texels outside it of the
 // whole domain's r axis (`texels` over rho from 0 to H): the scene's
 // altitude texels are then the whole bake's own, so that it reads as the
-// whole bake does at every altitude inside (with the next texel beyond the
-// range at the whole spacing, the ground-level scene's day ground rays read
-// 0.04 to 0.07 point above the whole bake; on its texels, within noise).
+// whole bake does at every altitude inside (at the whole spacing but from
+// the range's own ends, the ground-level scene's day ground rays read 0.06
+// to 0.07 point above the whole bake at 680 and 550 nm; on its texels 0.01
+// to 0.03, docs/MEASUREMENTS.md "Scene sizes").
 void widenAltitudeRangeToWholeTexels(const AtmosphereParameters& a, int texels, std::array<double, 2>& range_m) {
   const AtmosphereDomain whole = AtmosphereDomain::fromParameters(a);
   const double thickness_m = a.top_radius_m - a.bottom_radius_m;

@@ -214,6 +214,17 @@ void runBake(const BakeOptions& o) {
   keepFreedTableMemory();
   TerminalProgress progress;
   BakeOutput bake = bakeAtmosphere(config, o.threads, progress);
+  // Bakes again at a size of the sweep (--target-error, --max-file-size).
+  auto bakeAgainAt = [&](const SizeChoice& choice) {
+    const BakeConfig sized = withSizes(choice);
+    validateConfig(sized, source + " (with command-line overrides)");
+    config = settledBakeConfig(sized);
+    scene_sizes = sceneSizeChoice(sized, config);
+    requireMemoryForBake(config, source);
+    if (scene_sizes) fmt::print(stderr, "skybake: {}\n", scene_sizes->description);
+    bake = BakeOutput();  // its tables freed before the next bake's
+    bake = bakeAtmosphere(config, o.threads, progress);
+  };
   // --target-error: the bake's own day sky error on the quick query set,
   // and the sweep's next size while it misses the target.
   std::optional<TargetErrorCheck> target_check;
@@ -227,15 +238,8 @@ void runBake(const BakeOptions& o) {
       fmt::print(stderr, "skybake: --target-error {}: {:.2f} % by day at {:g}x the default sizes; trying {:g}x\n",
                  *o.target_error, target_check->day_percent, size_choice->scale, next->scale);
       size_choice = next;
-      const BakeConfig sized = withSizes(*size_choice);
-      validateConfig(sized, source + " (with command-line overrides)");
-      config = settledBakeConfig(sized);
-      scene_sizes = sceneSizeChoice(sized, config);
-      requireMemoryForBake(config, source);
       printSizeChoice();
-      if (scene_sizes) fmt::print(stderr, "skybake: {}\n", scene_sizes->description);
-      bake = BakeOutput();  // its tables freed before the next bake's
-      bake = bakeAtmosphere(config, o.threads, progress);
+      bakeAgainAt(*size_choice);
     }
     const TargetErrorCheck& c = *target_check;
     if (!c.checked) {
@@ -333,14 +337,7 @@ void runBake(const BakeOptions& o) {
     fmt::print(stderr, "skybake: --max-file-size {}: {:.2f} MiB at these sizes; trying {:g}x the default sizes\n",
                o.max_file_size, bytes / 1048576.0, smaller->scale);
     budget_choice = smaller;
-    const BakeConfig sized = withSizes(*budget_choice);
-    validateConfig(sized, source + " (with command-line overrides)");
-    config = settledBakeConfig(sized);
-    scene_sizes = sceneSizeChoice(sized, config);
-    requireMemoryForBake(config, source);
-    if (scene_sizes) fmt::print(stderr, "skybake: {}\n", scene_sizes->description);
-    bake = BakeOutput();  // its tables freed before the next bake's
-    bake = bakeAtmosphere(config, o.threads, progress);
+    bakeAgainAt(*budget_choice);
   }
   if (budget_bytes) {
     fmt::print(stderr, "skybake: --max-file-size {}: {:.2f} MiB ({} bytes) at {}\n", o.max_file_size, bytes / 1048576.0,
