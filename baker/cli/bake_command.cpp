@@ -152,6 +152,20 @@ void runBake(const BakeOptions& o) {
     config.scene_ranges.sun_zenith_deg = parseRangeOption("--sun-zenith-range", o.sun_zenith_range);
   }
   if (o.sky_views_only) config.scene_ranges.views_below_horizon = false;
+  const std::optional<uintmax_t> budget_bytes =
+      o.max_file_size.empty() ? std::nullopt : std::optional<uintmax_t>(fileSizeBudget(o.max_file_size));
+  if (budget_bytes && o.target_error) {
+    refuseOptionValue("--max-file-size", o.max_file_size,
+                      "cannot be combined with --target-error (each chooses the sizes): give one");
+  }
+  if (budget_bytes && o.estimate) {
+    refuseOptionValue("--max-file-size", o.max_file_size,
+                      "cannot be combined with --estimate: the sizes that fit are known only once baked");
+  }
+  if (o.reference_samples && !o.target_error) {
+    refuseOptionValue("--reference-samples", std::to_string(*o.reference_samples),
+                      "sets the paths of --target-error's check: give --target-error too");
+  }
   // The config as asked for; --target-error then gives it the whole
   // domain's sizes (a scene's are chosen from them).
   const BakeConfig requested = config;
@@ -183,16 +197,6 @@ void runBake(const BakeOptions& o) {
     return;
   }
   if (o.output_path.empty()) throwBadInput("bake: -o,--output is required (unless --estimate)");
-  const std::optional<uintmax_t> budget_bytes =
-      o.max_file_size.empty() ? std::nullopt : std::optional<uintmax_t>(fileSizeBudget(o.max_file_size));
-  if (budget_bytes && o.target_error) {
-    refuseOptionValue("--max-file-size", o.max_file_size,
-                      "cannot be combined with --target-error (each chooses the sizes): give one");
-  }
-  if (o.reference_samples && !o.target_error) {
-    refuseOptionValue("--reference-samples", std::to_string(*o.reference_samples),
-                      "sets the paths of --target-error's check: give --target-error too");
-  }
 
   const std::filesystem::path output(o.output_path);
   // Neither output may replace the config or a spectrum file it names.

@@ -90,6 +90,8 @@ for v in 0 -1 abc 3x 5MiBs 1e30GiB; do
   refused "--max-file-size = $v: must be a size such as 8MiB, 20MB or 5000000 (bytes)" -- "${bake[@]}" --max-file-size "$v"
 done
 refused "--max-file-size = 5MiB: cannot be combined with --target-error" -- "${bake[@]}" --max-file-size 5MiB --target-error 1%
+refused "--max-file-size = 5MiB: cannot be combined with --estimate" -- bake "$small" --estimate --max-file-size 5MiB
+refused "--reference-samples = 64: sets the paths of --target-error's check" -- bake "$small" --estimate --reference-samples 64
 for v in 0 -1 100 abc nan%; do
   refused "--target-error = $v: must be a percentage in (0, 100), such as 0.5% or 0.5" -- "${bake[@]}" --target-error "$v"
 done
