@@ -401,13 +401,15 @@ Command addBakeCommand(CLI::App& app) {
       ->check(CLI::IsMember({"sky_radiance", "radiance_to_points", "ground_irradiance"}));
   cmd->add_option("--altitude-range", options->altitude_range,
                   "LOW:HIGH, metres above the ground: the altitudes of the scene's cameras and of the points "
-                  "they look at; the 4D tables cover only these (overrides scene.altitude_range_m).");
+                  "they look at; the 4D tables cover only these, widened to the whole axis's next texels, and the bake "
+                  "chooses their sizes (docs/LEAVE_OUT.md; overrides scene.altitude_range_m).");
   cmd->add_option("--sun-zenith-range", options->sun_zenith_range,
                   "LOW:HIGH, degrees: the scene's sun zenith angles; the 4D tables cover only these, plus "
-                  "1 deg each side (overrides scene.sun_zenith_range_deg).");
+                  "1 deg each side, on the whole axis's own texels (overrides scene.sun_zenith_range_deg).");
   cmd->add_flag("--sky-views-only", options->sky_views_only,
                 "The scene's views never look below the horizon (sets scene.views_below_horizon = false): the 4D "
-                "tables hold only rays that reach the sky, twice as densely; lookups of rays toward the ground "
+                "tables hold only rays that reach the sky, on half the view texels (half the file); lookups of rays "
+                "toward the ground "
                 "integrate along the ray instead, about 20 times slower (docs/LEAVE_OUT.md).");
   cmd->add_option("--target-error", options->target_error,
                   "A sky radiance error to aim for, e.g. 1%: every table size becomes the smallest multiple of "
