@@ -38,9 +38,10 @@ void alignTexelWithHorizon(AtmosphereDomain& d, int size_mu_s) {
 // mu even and at least 4 (two rows each side of the horizon), the others 2.
 constexpr int kMinMu = 4, kMinAxis = 2;
 
-// Three quarters of a texel count, rounded up; mu kept even.
-int threeQuarters(int n, int minimum) { return std::max(minimum, (3 * n + 3) / 4); }
-int threeQuartersEven(int n) { return std::max(kMinMu, 2 * ((3 * n + 7) / 8)); }
+// A share of a texel count in sixteenths, rounded up; mu kept even.
+int sixteenths(int n, int share, int minimum) { return std::max(minimum, (share * n + 15) / 16); }
+int sixteenthsEven(int n, int share) { return std::max(kMinMu, 2 * ((share * n + 31) / 32)); }
+constexpr int kThreeQuarters = 12;  // sixteenths
 
 // The texels over a `share` of an axis of `whole` texels at the same
 // spacing, plus `extra`: a scene's part of the axis as finely as the whole
@@ -150,10 +151,6 @@ bool sunRangeNarrowsAxis(const BakeConfig& config) {
   return added_texels >= kSunAxisNarrowingMinTexels;
 }
 
-// A share of a view or view-sun axis, in sixteenths, rounded up; mu kept even.
-int sixteenths(int n, int share, int minimum) { return std::max(minimum, (share * n + 15) / 16); }
-int sixteenthsEven(int n, int share) { return std::max(kMinMu, 2 * ((share * n + 31) / 32)); }
-
 // The shares of the whole domain's view (mu) and view-sun (nu) axes a scene's
 // stored tables keep, in sixteenths. A scene's cameras see its own part of
 // the sky: at 11/16 of mu and 10/16 of nu the ground-level and flight
@@ -224,9 +221,10 @@ std::array<int, 4> chosenIterationSizes(const BakeConfig& config, const std::arr
   const std::optional<std::array<double, 2>>& sun = config.scene_ranges.sun_zenith_deg;
   const bool day_only = sun && (*sun)[1] <= kHorizonZenith_deg;
   const bool altitudes_narrowed = config.scene_ranges.altitude_m.has_value();
-  std::array<int, 4> sizes{altitudes_narrowed ? threeQuarters(whole.scattering_r, kMinAxis) : whole.scattering_r,
-                           day_only ? threeQuartersEven(whole.scattering_mu) : whole.scattering_mu, mu_s,
-                           day_only ? threeQuarters(whole.scattering_nu, kMinAxis) : whole.scattering_nu};
+  std::array<int, 4> sizes{
+      altitudes_narrowed ? sixteenths(whole.scattering_r, kThreeQuarters, kMinAxis) : whole.scattering_r,
+      day_only ? sixteenthsEven(whole.scattering_mu, kThreeQuarters) : whole.scattering_mu, mu_s,
+      day_only ? sixteenths(whole.scattering_nu, kThreeQuarters, kMinAxis) : whole.scattering_nu};
   if (config.sizes.iteration) {
     for (int i = 0; i < 4; ++i) {
       if ((*config.sizes.iteration)[i] != TextureSizes::kChosenByTheBake) sizes[i] = (*config.sizes.iteration)[i];
@@ -306,7 +304,7 @@ TextureSizes orderRadianceSizes(const TextureSizes& iteration) {
   // Three quarters of nu, rounded up: 16 -> 12.
   TextureSizes sizes = iteration;
   sizes.scattering_mu = std::max(kMinMu, 2 * (iteration.scattering_mu / 4));
-  sizes.scattering_nu = threeQuarters(iteration.scattering_nu, kMinAxis);
+  sizes.scattering_nu = sixteenths(iteration.scattering_nu, kThreeQuarters, kMinAxis);
   return sizes;
 }
 

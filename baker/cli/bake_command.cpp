@@ -263,14 +263,10 @@ void runBake(const BakeOptions& o) {
   // existing bake is replaced only by one that fits).
   std::optional<SizeChoice> budget_choice;
   auto nextSmallerForBudget = [&]() -> std::optional<SizeChoice> {
-    const double texels = 1.0 * config.sizes.scattering_r * config.sizes.scattering_mu * config.sizes.scattering_mu_s *
-                          config.sizes.scattering_nu;
     const std::vector<SweepPoint>& sweep = earthSweep();
     for (auto p = sweep.rbegin(); p != sweep.rend(); ++p) {
       const SizeChoice c = sizeChoiceAt(*p);
-      BakeConfig sized = settledBakeConfig(withSizes(c));
-      const TextureSizes& t = sized.sizes;
-      if (1.0 * t.scattering_r * t.scattering_mu * t.scattering_mu_s * t.scattering_nu < texels) return c;
+      if (settledBakeConfig(withSizes(c)).sizes.scatteringTexels() < config.sizes.scatteringTexels()) return c;
     }
     return std::nullopt;
   };

@@ -18,11 +18,7 @@ std::array<int, 4> scatteringSizes(const TextureSizes& s) {
 
 // The 4D texels a bake of these sizes stores: single Rayleigh, single Mie and
 // multiple scattering, and the density on its own view axis (densitySizes).
-double storedTexels(const TextureSizes& s) {
-  const TextureSizes d = densitySizes(s);
-  return 3.0 * s.scattering_r * s.scattering_mu * s.scattering_mu_s * s.scattering_nu +
-         1.0 * d.scattering_r * d.scattering_mu * d.scattering_mu_s * d.scattering_nu;
-}
+double storedTexels(const TextureSizes& s) { return 3.0 * s.scatteringTexels() + densitySizes(s).scatteringTexels(); }
 
 std::string sizesText(const std::array<int, 4>& s) { return fmt::format("{} x {} x {} x {}", s[0], s[1], s[2], s[3]); }
 

@@ -145,6 +145,8 @@ struct TextureSizes {
   // ranges (which the command line can add to a config).
   std::optional<std::array<int, 4>> scene;
   std::optional<std::array<int, 4>> iteration;
+  // Texels of one 4D scattering table at these sizes.
+  double scatteringTexels() const { return 1.0 * scattering_r * scattering_mu * scattering_mu_s * scattering_nu; }
   bool operator==(const TextureSizes&) const = default;
 };
 

@@ -118,11 +118,7 @@ TEST(BakePolicy, AScenesSizesComeFromTheWholeDomainsAndGivenAxesWin) {
   ground.scene_ranges.altitude_m = std::array<double, 2>{0.0, 2000.0};
   ground.scene_ranges.sun_zenith_deg = std::array<double, 2>{0.0, 90.0};
   const BakeConfig settled = settledBakeConfig(ground);
-  auto texels4d = [](const TextureSizes& s) {
-    const TextureSizes d = densitySizes(s);
-    return 3.0 * s.scattering_r * s.scattering_mu * s.scattering_mu_s * s.scattering_nu +
-           1.0 * d.scattering_r * d.scattering_mu * d.scattering_mu_s * d.scattering_nu;
-  };
+  auto texels4d = [](const TextureSizes& s) { return 3.0 * s.scatteringTexels() + densitySizes(s).scatteringTexels(); };
   EXPECT_LT(texels4d(settled.sizes), texels4d(whole.sizes) / 8.0);
   ASSERT_TRUE(settled.sizes.scene && settled.sizes.iteration);
   EXPECT_EQ(*settled.sizes.scene, (std::array<int, 4>{settled.sizes.scattering_r, settled.sizes.scattering_mu,
