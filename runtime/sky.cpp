@@ -91,7 +91,8 @@ Sky::Sky(BakeFile bake)
       sampler_(bake_.contents.domain, bake_.contents.sizes,
                nightContinuationOf(bake_.contents.domain, bake_.tables.irradiance)),
       // A spectral Sky's lookups are its groups': its own shape is never used.
-      multiple_shape_(lane_groups_.empty() ? bake_.contents.atmosphere : lane_groups_.front()->atmosphere()),
+      multiple_shape_(lane_groups_.empty() ? bake_.contents.atmosphere : lane_groups_.front()->atmosphere(),
+                      kStoredShapeOrder, bake_.contents.multiple_shape_weight),
       mie_phase_(bake_.contents.atmosphere.mie_phase_g),
       ranges_(bakedRangesOf(sampler_.domain())),
       baked_mu_s_min_(std::cos(radiansFromDegrees(ranges_.sun_zenith_max_deg))),

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "data_formats/bake_file/bake_file_attributes.h"
+#include "data_formats/bake_file/multiple_shape_weight.h"
 #include "data_formats/bake_file/textures.h"
 #include "data_formats/config/atmosphere_parameters.h"
 #include "data_formats/parameterization/texture_mapping.h"
@@ -26,14 +27,19 @@ namespace skybake {
 // (SunAxisMapping::SplitAtHorizon); version 6 stores HALF 4D parts scaled by
 // a power of two per (r, mu_s) slice (half_slices.h), the density part
 // included, and the irradiance always FLOAT; version 7 states the density
-// part's own view (mu) size, which may be smaller than the other 4D parts'.
-// Versions 2 to 6 (2 to 4 on Bruneton's sun axis; 2 and 3 always
+// part's own view (mu) size, which may be smaller than the other 4D parts';
+// version 8 divides multiple scattering by a shape whose peak is thinned by
+// the vertical scattering optical depth (MultipleShapeWeight).
+// Versions 2 to 7 (2 to 4 on Bruneton's sun axis; 2 and 3 always
 // wavelengths) are still read (FORMAT.md, "Older versions").
-inline constexpr int kBakeFormatVersion = 7;
+inline constexpr int kBakeFormatVersion = 8;
 // The first format version whose HALF 4D parts carry slice exponents.
 inline constexpr int kFirstHalfSliceExponentsFormatVersion = 6;
 // The first format version that states the density part's view size.
 inline constexpr int kFirstDensityViewSizeFormatVersion = 7;
+// The first format version whose multiple-scattering shape is thinned by the
+// scattering depth.
+inline constexpr int kFirstThinnedShapeFormatVersion = 8;
 // The first format version whose sun axis is SunAxisMapping::SplitAtHorizon.
 inline constexpr int kFirstSplitSunAxisFormatVersion = 5;
 
@@ -42,12 +48,20 @@ inline SunAxisMapping sunAxisOfFormatVersion(int format_version) {
   return format_version >= kFirstSplitSunAxisFormatVersion ? SunAxisMapping::SplitAtHorizon
                                                            : SunAxisMapping::DistanceToTop;
 }
-// The version a file is written at: the current one, or for tables on
-// Bruneton's sun axis (a bake read from an older file and written again)
-// the last version with that axis, so that a reader maps them as they were
-// baked.
-inline int formatVersionToWrite(SunAxisMapping sun_axis) {
-  return sun_axis == SunAxisMapping::SplitAtHorizon ? kBakeFormatVersion : kFirstSplitSunAxisFormatVersion - 1;
+// The multiple-scattering shape of a file of this format version.
+inline MultipleShapeWeight multipleShapeWeightOfFormatVersion(int format_version) {
+  return format_version >= kFirstThinnedShapeFormatVersion ? MultipleShapeWeight::ThinnedByScatteringDepth
+                                                           : MultipleShapeWeight::ColumnShare;
+}
+// The version a file is written at: the current one, or for tables baked
+// the way an older version stores them (a bake read from an older file and
+// written again) the last version that stores them so, so that a reader
+// decodes them as they were baked. Tables on Bruneton's sun axis predate
+// the thinned shape.
+inline int formatVersionToWrite(SunAxisMapping sun_axis, MultipleShapeWeight shape_weight) {
+  if (sun_axis != SunAxisMapping::SplitAtHorizon) return kFirstSplitSunAxisFormatVersion - 1;
+  return shape_weight == MultipleShapeWeight::ThinnedByScatteringDepth ? kBakeFormatVersion
+                                                                       : kFirstThinnedShapeFormatVersion - 1;
 }
 inline constexpr int kOldestReadBakeFormatVersion = 2;
 
@@ -99,6 +113,9 @@ struct BakeContents {
   // cosine (densityCoordMu) and smooth, so it may hold fewer texels than
   // the radiance tables' (set by the baker; before format version 7, equal).
   int density_view_size = 0;
+  // What multiple scattering and its density are stored divided by (set
+  // from the format version when read).
+  MultipleShapeWeight multiple_shape_weight = MultipleShapeWeight::ThinnedByScatteringDepth;
   bool operator==(const BakeContents&) const = default;
 
   // The density table's sizes: sizes with scattering_mu = density_view_size.

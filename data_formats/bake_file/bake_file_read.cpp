@@ -324,6 +324,7 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
     const BakeConfig config = parseConfig(bake.config_toml, source + " [" + kAttrConfig + "]");
     bake.contents = storedContents(config, version2Domain(in, first.index, config));
   }
+  bake.contents.multiple_shape_weight = multipleShapeWeightOfFormatVersion(first.version);
   const char* optical_depth_part = first.version >= 3 ? kPartOpticalDepth : kPartOpticalDepthVersion2;
 
   const TextureSizes& s = bake.contents.sizes;

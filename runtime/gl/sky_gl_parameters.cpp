@@ -42,7 +42,8 @@ void putLayers(SkyUniformBlock& block, int profile, const DensityProfile& layers
   }
 }
 
-// m_column^2 of the multiple-scattering shape, per channel: its peak weight
+// m_column^2 of the multiple-scattering shape (thinned, as the bake's
+// MultipleShapeWeight says), per channel: its peak weight
 // at an altitude where Mie scatters, over Mie's local share there (the
 // shape keeps the column share to itself). Where no altitude has Mie
 // scattering the weight is 0 everywhere and so is this.
@@ -80,7 +81,7 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   const AtmosphereDomain& d = sky.sampler().domain();
   const TextureSizes& s = sky.contents().sizes;
   const BakeTables& t = sky.tables();
-  const MultipleScatteringPhase shape(a);
+  const MultipleScatteringPhase shape(a, kStoredShapeOrder, sky.contents().multiple_shape_weight);
   const CornetteShanksPhase mie_phase(a.mie_phase_g);
   const CornetteShanksPhase multiple_peak(shape.g());
   const BakedRanges& ranges = sky.bakedRanges();

@@ -24,7 +24,14 @@
 // Mie scattering too, as the aureole (about m_column^2 of it once the broad
 // Rayleigh sky and the ground are counted; the exponent is fitted, below).
 // The rest is broad and smooth and interpolates best as it is (a constant
-// divisor).
+// divisor). Where the column is not optically thin the diffuse light has
+// mostly been scattered more than twice, each time broadening the peak, and
+// the peak's share falls with the vertical scattering optical depth tau_s:
+// w is multiplied by max(1 - tau_s, 0) (MultipleShapeWeight::
+// ThinnedByScatteringDepth, per channel). That factor is 1 - 2 % for the
+// clear Earth and about 0.5 for Mars's dust, where the unthinned weight
+// read the day sky near the horizon 4.75 % off at 680 nm (0.83 % thinned;
+// docs/MEASUREMENTS.md, "The thinned shape shipped").
 //
 // Of the weights tried, m_local m_column^2 interpolates best for both clear
 // Earth and a thick haze (docs/MEASUREMENTS.md, "Multiple-scattering
@@ -41,6 +48,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "data_formats/bake_file/multiple_shape_weight.h"
 #include "data_formats/config/atmosphere_parameters.h"
 #include "data_formats/kernel/kernel_language.h"
 #include "data_formats/spectra/spectrum.h"
@@ -80,7 +88,10 @@ class MultipleScatteringPhase {
   // feeding that into the next order made light: in a Mie x1000 haze the
   // orders decayed by 0.95 each where single-scattering albedo 0.9 allows at
   // most 0.9).
-  explicit MultipleScatteringPhase(const AtmosphereParameters& a, int order = kStoredShapeOrder)
+  // `weight` is the file's (BakeContents::multiple_shape_weight) for a
+  // stored shape; new bakes use the default.
+  explicit MultipleScatteringPhase(const AtmosphereParameters& a, int order = kStoredShapeOrder,
+                                   MultipleShapeWeight weight = MultipleShapeWeight::ThinnedByScatteringDepth)
       : g_(std::clamp(std::pow(a.mie_phase_g, order), -kMaxMultipleScatteringG, kMaxMultipleScatteringG)),
         order_(order),
         rayleigh_scattering_(a.rayleigh_scattering),
@@ -98,6 +109,12 @@ class MultipleScatteringPhase {
     column_mie_share_ = mieShare(rayleigh_column_m, mie_column_m);
     column_mie_share_power_ = SpectrumD(1.0);
     for (int i = 0; i < order; ++i) column_mie_share_power_ *= column_mie_share_;
+    if (weight == MultipleShapeWeight::ThinnedByScatteringDepth) {
+      for (int c = 0; c < kMaxChannels; ++c) {
+        const double scattering_depth = rayleigh_scattering_[c] * rayleigh_column_m + mie_scattering_[c] * mie_column_m;
+        column_mie_share_power_[c] *= std::max(1.0 - scattering_depth, 0.0);
+      }
+    }
   }
 
   // w at an altitude, per channel, in [0, 1].
@@ -143,7 +160,7 @@ class MultipleScatteringPhase {
   Spectrum rayleigh_scattering_, mie_scattering_;
   DensityProfile rayleigh_density_, mie_density_;
   SpectrumD column_mie_share_{0.0};
-  SpectrumD column_mie_share_power_{0.0};  // m_column^order
+  SpectrumD column_mie_share_power_{0.0};  // m_column^order, thinned (MultipleShapeWeight)
 };
 
 }  // namespace skybake

@@ -261,6 +261,7 @@ TEST(ColourBakeFile, VersionThreeFileReadsAsWavelengths) {
   // The relabelled file states Bruneton's sun axis, as version 3 files have.
   BakeContents expected = bake.file.contents;
   expected.domain.sun_axis = SunAxisMapping::DistanceToTop;
+  expected.multiple_shape_weight = MultipleShapeWeight::ColumnShare;
   EXPECT_EQ(read.contents, expected);
   EXPECT_EQ(read.tables.single_rayleigh.texels, bake.file.tables.single_rayleigh.texels);
   const Sky sky(read);

@@ -76,6 +76,19 @@ class BakeFileTest : public ::testing::Test {
   fs::path dir;
 };
 
+// Tables divided by version 7's multiple-scattering shape (a version 7
+// file read and written again) are written as version 7, so that a reader
+// multiplies them back by the shape they were divided by.
+TEST_F(BakeFileTest, TablesOnTheUnthinnedShapeAreWrittenAsVersion7) {
+  BakeFile written = syntheticBake();
+  written.contents.multiple_shape_weight = MultipleShapeWeight::ColumnShare;
+  const fs::path path = dir / "version7.exr";
+  writeBakeFile(path, written);
+  const BakeFile read = readBakeFile(path);
+  EXPECT_EQ(read.format_version, kFirstThinnedShapeFormatVersion - 1);
+  EXPECT_TRUE(read.contents == written.contents);
+}
+
 TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
   const BakeFile written = syntheticBake();
   const fs::path path = dir / "bake.exr";
@@ -85,6 +98,7 @@ TEST_F(BakeFileTest, RoundTripPreservesDataAndEveryAttribute) {
   EXPECT_EQ(read.contents.domain, written.contents.domain);
   EXPECT_EQ(read.config_toml, written.config_toml);
   EXPECT_EQ(read.format_version, kBakeFormatVersion);
+  EXPECT_EQ(read.contents.multiple_shape_weight, MultipleShapeWeight::ThinnedByScatteringDepth);
   EXPECT_EQ(read.orders_computed, written.orders_computed);
   EXPECT_EQ(read.report_json, written.report_json);
   // Float storage is lossless: compare exactly, channel by channel (the

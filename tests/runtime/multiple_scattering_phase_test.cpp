@@ -29,9 +29,10 @@ TEST(MultipleScatteringPhase, IsNormalisedLikeAPhaseFunctionForAnyWeight) {
   }
 }
 
-TEST(MultipleScatteringPhase, PeakWeightIsTheLocalMieShareTimesTheColumnsSquared) {
+TEST(MultipleScatteringPhase, PeakWeightIsTheLocalMieShareTimesTheColumnsSquaredThinnedByScatteringDepth) {
   AtmosphereParameters a = builtinEarthConfig().atmosphere;
   const MultipleScatteringPhase shape(a);
+  const MultipleScatteringPhase version7_shape(a, kStoredShapeOrder, MultipleShapeWeight::ColumnShare);
   // Exponential profiles from 0 to the top (60 km): column = H (1 - exp(-top / H)).
   const double top_m = a.top_radius_m - a.bottom_radius_m;
   const double rayleigh_h = 8000.0, mie_h = 1200.0;  // the built-in Earth's scale heights
@@ -41,9 +42,12 @@ TEST(MultipleScatteringPhase, PeakWeightIsTheLocalMieShareTimesTheColumnsSquared
     const double tau_m = beta_m * mie_h * (1.0 - std::exp(-top_m / mie_h));
     const double column = tau_m / (tau_m + tau_r);
     const double local = beta_m / (beta_m + beta_r);  // at the ground, both densities 1
+    const double thinning = 1.0 - (tau_r + tau_m);
     // The midpoint rule's pieces are 15 m against a 1200 m scale height:
     // relative error (15 / 1200)^2 / 24 ~ 7e-6; 1e-4 leaves room.
-    EXPECT_NEAR(shape.peakWeightAt(0.0)[c], local * column * column, 1e-4 * local * column * column) << c;
+    const double expected = local * column * column * thinning;
+    EXPECT_NEAR(shape.peakWeightAt(0.0)[c], expected, 1e-4 * expected) << c;
+    EXPECT_NEAR(version7_shape.peakWeightAt(0.0)[c], local * column * column, 1e-4 * local * column * column) << c;
   }
   // At 10 km Mie's density is exp(-10000 / 1200) of the ground's: the weight
   // falls with it (the divisor turns broad above the haze).
@@ -77,6 +81,22 @@ TEST(MultipleScatteringPhase, NothingScatteringGivesTheIsotropicShape) {
   for (double nu : {-1.0, 0.0, 1.0}) {
     const Spectrum f = shape(0.0, nu);
     EXPECT_FLOAT_EQ(f[0], static_cast<float>(1.0 / (4.0 * kPi))) << nu;
+  }
+}
+
+TEST(MultipleScatteringPhase, AColumnThickerThanOneScatteringDepthHasNoPeak) {
+  AtmosphereParameters a = builtinEarthConfig().atmosphere;
+  a.mie_scattering *= 1000.0f;  // a vertical Mie scattering depth of several
+  a.mie_extinction *= 1000.0f;
+  for (int order : {2, 3}) {
+    const MultipleScatteringPhase shape(a, order);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(shape.peakWeightAt(0.0)[c], 0.0) << order << " " << c;
+      // The divisor is the broad part alone, never 0.
+      EXPECT_FLOAT_EQ(shape(0.0, 1.0)[c], static_cast<float>(MultipleScatteringPhase::kBroad)) << order << " " << c;
+    }
+    // A version 7 file's shape keeps its peak.
+    EXPECT_GT(MultipleScatteringPhase(a, order, MultipleShapeWeight::ColumnShare).peakWeightAt(0.0)[0], 0.1);
   }
 }
 
