@@ -55,23 +55,31 @@ ErrorReport compareLaneGroupsWithReference(const Sky& sky, const QuerySet& queri
     reports.push_back(
         compareWithReference(sky.laneGroup(g).atmosphere(), queries, references[g], bakes[g], reference_paths));
   }
-  // Every group answers the same queries, whose quantity and sun band are
-  // geometry alone: the groups' reports have the same rows.
+  // Every group answers the same queries, whose quantity, sun band and
+  // camera altitude are geometry alone: the groups' reports have the same
+  // rows in the same order.
   ErrorReport joined = reports.front();
   joined.wavelengths_nm = sky.atmosphere().wavelengths_nm;
   joined.channel_names = channelNames(sky.atmosphere());
-  for (ErrorRow& row : joined.rows) {
-    row.channels.clear();
-    for (int g = 0; g < groups; ++g) {
-      const ErrorRow* group_row = reports[g].find(row.quantity, row.band);
-      const size_t lanes = static_cast<size_t>(sky.laneGroup(g).channelCount());
-      if (group_row == nullptr || group_row->channels.size() != lanes) {
-        throw Error(ErrorKind::Internal, fmt::format("compareLaneGroupsWithReference: lane group {} has no row {} {}",
-                                                     g, row.quantity, row.band));
+  auto join = [&](std::vector<ErrorRow> ErrorReport::*rows) {
+    std::vector<ErrorRow>& joined_rows = joined.*rows;
+    for (size_t i = 0; i < joined_rows.size(); ++i) {
+      ErrorRow& row = joined_rows[i];
+      row.channels.clear();
+      for (int g = 0; g < groups; ++g) {
+        const std::vector<ErrorRow>& group_rows = reports[g].*rows;
+        const size_t lanes = static_cast<size_t>(sky.laneGroup(g).channelCount());
+        if (i >= group_rows.size() || group_rows[i].quantity != row.quantity || group_rows[i].band != row.band ||
+            group_rows[i].camera_altitude != row.camera_altitude || group_rows[i].channels.size() != lanes) {
+          throw Error(ErrorKind::Internal, fmt::format("compareLaneGroupsWithReference: lane group {} has no row {} {}",
+                                                       g, row.quantity, row.band));
+        }
+        row.channels.insert(row.channels.end(), group_rows[i].channels.begin(), group_rows[i].channels.end());
       }
-      row.channels.insert(row.channels.end(), group_row->channels.begin(), group_row->channels.end());
     }
-  }
+  };
+  join(&ErrorReport::rows);
+  join(&ErrorReport::altitude_rows);
   return joined;
 }
 

@@ -301,83 +301,6 @@ QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string&
   return out;
 }
 
-double smallestComparedValue(SunBand band) {
-  switch (band) {
-    case SunBand::Nautical:
-      return kSmallestComparedNauticalValue;
-    case SunBand::Astronomical:
-    case SunBand::Night:
-      return kSmallestComparedAstronomicalValue;
-    default:
-      return kSmallestComparedValue;
-  }
-}
-
-namespace {
-
-class StatsBuilder {
- public:
-  void add(const std::string& quantity, const std::string& band, int channel, double value, double reference,
-           double reference_error, double smallest_compared = kSmallestComparedValue) {
-    Samples& s = samples_[{quantity, band}][channel];
-    if (!(reference >= smallest_compared)) {
-      ++s.skipped;
-      return;
-    }
-    s.errors.push_back(std::abs(value - reference) / reference);
-    s.reference_errors.push_back(reference_error / reference);
-  }
-
-  std::vector<ErrorRow> rows(int channels) const {
-    static const char* kQuantityOrder[] = {"sky_radiance", "ground_radiance", "radiance_to_point", "transmittance",
-                                           "sky_irradiance"};
-    std::vector<std::string> band_order;
-    for (SunBand band : allSunBands()) band_order.push_back(sunBandName(band));
-    band_order.push_back("all");
-    std::vector<ErrorRow> out;
-    for (const char* quantity : kQuantityOrder) {
-      for (const std::string& band : band_order) {
-        auto it = samples_.find({quantity, band});
-        if (it == samples_.end()) continue;
-        ErrorRow row{quantity, band, {}};
-        for (int c = 0; c < channels; ++c) {
-          auto sc = it->second.find(c);
-          row.channels.push_back(sc == it->second.end() ? ErrorStats{} : summarize(sc->second));
-        }
-        out.push_back(row);
-      }
-    }
-    return out;
-  }
-
- private:
-  struct Samples {
-    std::vector<double> errors, reference_errors;
-    int skipped = 0;
-  };
-
-  static ErrorStats summarize(Samples s) {
-    ErrorStats e;
-    e.count = static_cast<int>(s.errors.size());
-    e.skipped = s.skipped;
-    if (s.errors.empty()) return e;
-    double sum2 = 0.0, ref2 = 0.0;
-    for (double x : s.errors) sum2 += x * x;
-    for (double x : s.reference_errors) ref2 += x * x;
-    std::sort(s.errors.begin(), s.errors.end());
-    e.rms = std::sqrt(sum2 / e.count);
-    e.max = s.errors.back();
-    // Nearest-rank 95th percentile.
-    e.p95 = s.errors[static_cast<size_t>(std::ceil(0.95 * e.count)) - 1];
-    e.reference_standard_error = std::sqrt(ref2 / e.count);
-    return e;
-  }
-
-  std::map<std::pair<std::string, std::string>, std::map<int, Samples>> samples_;
-};
-
-}  // namespace
-
 ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& queries,
                                  const ReferenceValues& reference, const MethodValues& method, int reference_paths) {
   ErrorReport report;
@@ -394,7 +317,8 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
   // spectral threshold times that width leaves out the same dark queries.
   const double value_scale = a.storesCieXyz() ? colour::ybarIntegral_nm() : 1.0;
   report.smallest_compared_value = kSmallestComparedValue * value_scale;
-  StatsBuilder stats;
+  const std::vector<CameraAltitudeGroup> groups = cameraAltitudeGroups(queries);
+  ErrorStatsBuilder stats;
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const RadianceQuery& q = queries.radiance[i];
     const std::string quantity = radianceQuantity(a, q);
@@ -402,11 +326,12 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
     const SunBand sun_band = sunBand(q.sun_zenith_deg);
     const char* band = sunBandName(sun_band);
     const CachedReference& r = reference.radiance[i];
+    const size_t group = cameraAltitudeGroupOf(groups, q.altitude_m);
     for (int c = 0; c < channels; ++c) {
-      stats.add(quantity, band, c, method.radiance[i][c], r.value[c], r.standard_error[c],
+      stats.add(quantity, band, group, c, method.radiance[i][c], r.value[c], r.standard_error[c],
                 smallestComparedValue(sun_band) * value_scale);
       if (compare_transmittance) {
-        stats.add("transmittance", "all", c, method.transmittance[i][c], r.transmittance[c], 0.0,
+        stats.add("transmittance", "all", std::nullopt, c, method.transmittance[i][c], r.transmittance[c], 0.0,
                   kSmallestComparedValue);
       }
     }
@@ -415,98 +340,16 @@ ErrorReport compareWithReference(const AtmosphereParameters& a, const QuerySet& 
     for (size_t i = 0; i < queries.irradiance.size(); ++i) {
       const SunBand sun_band = sunBand(queries.irradiance[i].sun_zenith_deg);
       const char* band = sunBandName(sun_band);
+      const size_t group = cameraAltitudeGroupOf(groups, queries.irradiance[i].altitude_m);
       for (int c = 0; c < channels; ++c) {
-        stats.add("sky_irradiance", band, c, method.irradiance[i][c], reference.irradiance[i].value[c],
+        stats.add("sky_irradiance", band, group, c, method.irradiance[i][c], reference.irradiance[i].value[c],
                   reference.irradiance[i].standard_error[c], smallestComparedValue(sun_band) * value_scale);
       }
     }
   }
-  report.rows = stats.rows(channels);
+  report.rows = stats.rows(channels, groups, false);
+  report.altitude_rows = stats.rows(channels, groups, true);
   return report;
-}
-
-const ErrorRow* ErrorReport::find(const std::string& quantity, const std::string& band) const {
-  for (const ErrorRow& row : rows) {
-    if (row.quantity == quantity && row.band == band) return &row;
-  }
-  return nullptr;
-}
-
-nlohmann::ordered_json ErrorReport::toJson() const {
-  nlohmann::ordered_json j;
-  j["query_set"] = query_set;
-  j["reference_paths"] = reference_paths;
-  j["wavelengths_nm"] = wavelengths_nm;
-  j["channels"] = channel_names;
-  j["smallest_compared_value"] = smallest_compared_value;
-  nlohmann::ordered_json floors;
-  for (SunBand band : allSunBands()) {
-    floors[sunBandName(band)] = smallestComparedValue(band) * (smallest_compared_value / kSmallestComparedValue);
-  }
-  j["smallest_compared_value_by_band"] = floors;
-  nlohmann::ordered_json rows_json = nlohmann::ordered_json::array();
-  for (const ErrorRow& row : rows) {
-    nlohmann::ordered_json channels = nlohmann::ordered_json::array();
-    for (const ErrorStats& s : row.channels) {
-      channels.push_back({{"count", s.count},
-                          {"skipped", s.skipped},
-                          {"rms", s.rms},
-                          {"p95", s.p95},
-                          {"max", s.max},
-                          {"reference_standard_error", s.reference_standard_error}});
-    }
-    rows_json.push_back({{"quantity", row.quantity}, {"band", row.band}, {"channels", channels}});
-  }
-  j["errors"] = rows_json;
-  return j;
-}
-
-namespace {
-
-// A channel's name in the table: a wavelength channel's wavelength to 5
-// digits ("406.67nm" where the file's channel name, which OpenEXR allows no
-// '.' in, is "406p6666666666667nm"); X, Y, Z as they are.
-std::vector<std::string> tableLabels(const ErrorReport& r) {
-  std::vector<std::string> labels = r.channel_names;
-  if (r.wavelengths_nm.size() != labels.size()) return labels;
-  for (size_t c = 0; c < labels.size(); ++c) {
-    if (labels[c].ends_with("nm")) labels[c] = fmt::format("{:.5g}nm", r.wavelengths_nm[c]);
-  }
-  return labels;
-}
-
-}  // namespace
-
-std::string ErrorReport::table() const {
-  // A spectral bake's channels (up to 64) are shown a lane group of 4 at a
-  // time, one table per group, each as wide as an ordinary bake's.
-  const std::vector<std::string> labels = tableLabels(*this);
-  const size_t channels = labels.size();
-  const size_t group = static_cast<size_t>(kMaxChannels);
-  const size_t groups = (channels + group - 1) / group;
-  std::string out;
-  for (size_t first = 0; first < channels; first += group) {
-    const size_t last = std::min(first + group, channels);
-    if (groups > 1) {
-      out += fmt::format("{}lane group {} of {} ({} to {}):\n", first == 0 ? "" : "\n", first / group + 1, groups,
-                         labels[first], labels[last - 1]);
-    }
-    out += fmt::format("{:<18} {:<12} {:>5} {:>5}", "quantity", "band", "n", "skip");
-    for (size_t c = first; c < last; ++c) out += fmt::format("  {:>22}", labels[c] + " rms/p95/max %");
-    out += "  ref stderr %\n";
-    for (const ErrorRow& row : rows) {
-      const ErrorStats& lead = row.channels[first];
-      out += fmt::format("{:<18} {:<12} {:>5} {:>5}", row.quantity, row.band, lead.count, lead.skipped);
-      double ref = 0.0;
-      for (size_t c = first; c < last; ++c) {
-        const ErrorStats& s = row.channels[c];
-        out += fmt::format("  {:>22}", fmt::format("{:.2f} / {:.2f} / {:.2f}", 100 * s.rms, 100 * s.p95, 100 * s.max));
-        ref = std::max(ref, s.reference_standard_error);
-      }
-      out += fmt::format("  {:>11.2f}\n", 100 * ref);
-    }
-  }
-  return out;
 }
 
 }  // namespace skybake

@@ -7,29 +7,13 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "baker/stages/progress.h"
+#include "baker/validation/error_report.h"
 #include "baker/validation/reference_cache.h"
 #include "baker/validation/validation_queries.h"
 #include "runtime/sky.h"
 
 namespace skybake {
-
-// Reference values below this radiance (W m^-2 sr^-1 nm^-1), irradiance
-// (W m^-2 nm^-1) or transmittance are left out of relative errors: deep in
-// twilight or behind a thick atmosphere a relative error of a value this
-// small says nothing a renderer could show. They are counted as skipped.
-inline constexpr double kSmallestComparedValue = 1e-5;
-// The same floor in nautical and astronomical twilight, where the whole sky
-// lies 1e-3 to 1e-8 below the day's (kSmallestComparedValue would skip all
-// of it): each about 1e-3 of the band's zenith sky seen from the ground
-// (docs/MEASUREMENTS.md, deep twilight), so what is left out is what a
-// renderer could not show beside the rest of that sky.
-inline constexpr double kSmallestComparedNauticalValue = 1e-9;
-inline constexpr double kSmallestComparedAstronomicalValue = 1e-11;
-// The floor for a sun band (night counts as astronomical twilight).
-double smallestComparedValue(SunBand band);
 
 // More Monte Carlo paths per query than this would take days per query set
 // (--reference-samples).
@@ -139,34 +123,6 @@ std::string radianceQuantity(const AtmosphereParameters& atmosphere, const Radia
 // for radiance to a point, the point): Sky::bakedRanges.
 // `left_out` gets a sentence saying what was dropped, or stays empty.
 QuerySet queriesAnsweredBy(const Sky& sky, const QuerySet& queries, std::string& left_out);
-
-struct ErrorStats {
-  int count = 0;                           // values compared (per channel)
-  int skipped = 0;                         // reference below kSmallestComparedValue
-  double rms = 0.0, p95 = 0.0, max = 0.0;  // relative errors
-  double reference_standard_error = 0.0;   // RMS of the reference's own relative standard error
-};
-
-struct ErrorRow {
-  std::string quantity;  // sky_radiance, ground_radiance, radiance_to_point, transmittance, sky_irradiance
-  std::string band;      // day, low_sun, twilight, nautical, astronomical, night, all
-  std::vector<ErrorStats> channels;
-};
-
-struct ErrorReport {
-  std::string query_set;
-  std::vector<double> wavelengths_nm;      // the bake's (a colour bake's: those it integrated)
-  std::vector<std::string> channel_names;  // channelNames (bake_file.h): "680nm", ... or X, Y, Z
-  int reference_paths = 0;
-  // Reference values below this are left out (kSmallestComparedValue; for a
-  // colour bake's X, Y, Z scaled to their units).
-  double smallest_compared_value = kSmallestComparedValue;
-  std::vector<ErrorRow> rows;
-
-  const ErrorRow* find(const std::string& quantity, const std::string& band) const;
-  nlohmann::ordered_json toJson() const;
-  std::string table() const;  // human-readable, one row per quantity and band
-};
 
 ErrorReport compareWithReference(const AtmosphereParameters& atmosphere, const QuerySet& queries,
                                  const ReferenceValues& reference, const MethodValues& method, int reference_paths);

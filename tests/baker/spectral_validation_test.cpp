@@ -144,9 +144,20 @@ TEST_F(SpectralValidationTest, EachWavelengthsErrorsAreTheOrdinaryBakesOfItsGrou
         EXPECT_EQ(a.skipped, b.skipped);
         EXPECT_EQ(a.rms, b.rms) << row.quantity << " " << row.band << " channel " << c;
         EXPECT_EQ(a.p95, b.p95);
+        EXPECT_EQ(a.mean, b.mean);
         EXPECT_EQ(a.max, b.max);
         EXPECT_EQ(a.reference_standard_error, b.reference_standard_error);
         compared += b.count;
+      }
+    }
+    // The camera-altitude rows are joined the same way.
+    ASSERT_EQ(own.altitude_rows.size(), joined.altitude_rows.size());
+    for (size_t i = 0; i < own.altitude_rows.size(); ++i) {
+      EXPECT_EQ(joined.altitude_rows[i].camera_altitude, own.altitude_rows[i].camera_altitude);
+      for (size_t c = 0; c < own.altitude_rows[i].channels.size(); ++c) {
+        const ErrorStats& a = joined.altitude_rows[i].channels[spectral_->laneGroupFirstChannel(g) + c];
+        EXPECT_EQ(a.rms, own.altitude_rows[i].channels[c].rms);
+        EXPECT_EQ(a.mean, own.altitude_rows[i].channels[c].mean);
       }
     }
   }

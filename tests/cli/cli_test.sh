@@ -194,6 +194,26 @@ expect_status 2 "--channels" -- render "$work/good.exr" --altitude-m 0 --sun-zen
 # checks the command, its outputs and the report sidecar, not accuracy).
 expect_status 0 "sky_radiance" -- validate "$work/good.exr" --queries quick --reference-samples 64 --no-cache --json "$work/v.json"
 grep -q '"errors"' "$work/v.json" || fail "validate --json wrote no errors"
+# Every band per camera altitude too (the quick set's cameras are at 0 and
+# 10 km), in the table and the JSON: each group's counts add up to the row of
+# every camera, and a mean of signed errors is at most their RMS.
+grep -q "^sky_radiance       day          10 km " "$work/stdout" || fail "validate printed no camera-altitude rows: $(cat "$work/stdout")"
+/usr/bin/python3 - "$work/v.json" <<'PY' || fail "validate --json has no consistent camera-altitude rows"
+import json, sys
+j = json.load(open(sys.argv[1]))
+every = {(r["quantity"], r["band"]): r for r in j["errors"]}
+groups = {}
+for r in j["errors_by_camera_altitude"]:
+    groups.setdefault((r["quantity"], r["band"]), []).append(r)
+assert sorted(r["camera_altitude_m"][0] for r in groups[("sky_radiance", "day")]) == [0.0, 10000.0], groups
+assert ("transmittance", "all") not in groups, "transmittance is not split by camera"
+for key, rows in groups.items():
+    for c, total in enumerate(every[key]["channels"]):
+        assert sum(r["channels"][c]["count"] for r in rows) == total["count"], key
+        for r in rows:
+            s = r["channels"][c]
+            assert abs(s["mean"]) <= s["rms"] + 1e-15, (key, s)
+PY
 grep -q '"validation"' "$work/good.report.json" || fail "validate did not add to the report sidecar"
 expect_status 2 "missing column" -- validate "$work/good.exr" --queries "$work/missing.csv" --no-cache
 # Off a terminal (stderr to a file, as in a log), a reference run of a few
