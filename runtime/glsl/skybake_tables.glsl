@@ -36,12 +36,6 @@ vec4 skybakeBlendGeometricWherePositive(vec4 a, vec4 b, float w, float geometric
               skybakeBlendGeometricWherePositive(a.w, b.w, w, geometric_share));
 }
 
-// The kernel's blend across the altitude axis, per channel (table_weights.glsl).
-vec4 skybakeBlendAcrossAltitude(vec4 a, vec4 b, float w) {
-  return vec4(skybakeBlendAcrossAltitude(a.x, b.x, w), skybakeBlendAcrossAltitude(a.y, b.y, w),
-              skybakeBlendAcrossAltitude(a.z, b.z, w), skybakeBlendAcrossAltitude(a.w, b.w, w));
-}
-
 vec4 skybakeBlendAcross(vec4 a, vec4 b, float w, bool geometric) {
   return geometric ? skybakeBlendGeometricWhereSteep(a, b, w) : a + (b - a) * w;
 }
@@ -60,9 +54,8 @@ vec4 skybakeSliceScales(int scale, SkybakeAxisLerp r, SkybakeAxisLerp mu_s) {
               texelFetch(skybake_slice_scales, ivec2(mu_s.i1, r.i1), 0)[scale]);
 }
 
-// Trilinear in (mu_s, r, mu) within one nu slice, mu_s blended geometrically
-// where `geometric` says, r as skybakeBlendAcrossAltitude; `scales` from
-// skybakeSliceScales.
+// Trilinear in (mu_s, mu, r) within one nu slice, mu_s blended geometrically
+// where `geometric` says; `scales` from skybakeSliceScales.
 vec4 skybakeSampleNuSlice(sampler3D table, vec4 scales, SkybakeAxisLerp r, SkybakeAxisLerp mu, SkybakeAxisLerp mu_s,
                           int i_nu, bool geometric) {
   vec4 r0mu0 = skybakeBlendAcross(skybakeTexel4D(table, r.i0, mu.i0, mu_s.i0, i_nu) * scales.x,
@@ -73,10 +66,9 @@ vec4 skybakeSampleNuSlice(sampler3D table, vec4 scales, SkybakeAxisLerp r, Skyba
                                   skybakeTexel4D(table, r.i1, mu.i0, mu_s.i1, i_nu) * scales.w, mu_s.w1, geometric);
   vec4 r1mu1 = skybakeBlendAcross(skybakeTexel4D(table, r.i1, mu.i1, mu_s.i0, i_nu) * scales.z,
                                   skybakeTexel4D(table, r.i1, mu.i1, mu_s.i1, i_nu) * scales.w, mu_s.w1, geometric);
-  // Across r at each mu texel, then across mu, as the CPU's sampleNuSlice.
-  vec4 mu0 = skybakeBlendAcrossAltitude(r0mu0, r1mu0, r.w1);
-  vec4 mu1 = skybakeBlendAcrossAltitude(r0mu1, r1mu1, r.w1);
-  return mu0 + (mu1 - mu0) * mu.w1;
+  vec4 r0 = r0mu0 + (r0mu1 - r0mu0) * mu.w1;
+  vec4 r1 = r1mu0 + (r1mu1 - r1mu0) * mu.w1;
+  return r0 + (r1 - r0) * r.w1;
 }
 
 // A 4D table's texture coordinates (texture_mapping.h, ScatteringCoord).

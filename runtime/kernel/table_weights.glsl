@@ -77,50 +77,6 @@ SKYBAKE_KERNEL Real skybakeBlendGeometricWhereSteep(Real a, Real b, Real w) {
   return linear_blend;
 }
 
-// The ratios of two neighbouring texels across the altitude axis up to
-// which skybakeBlendAcrossAltitude corrects the linear blend fully, and
-// from which it does not at all (smoothly between, as
-// skybakeGeometricBlendShare). An exponential of the air's scale height
-// over the widest r texel spacing (3.8 km near the built-in Earth's top)
-// changes by a factor of 1.6; steeper ratios are where the sky is no such
-// exponential: toward the top boundary, where the air above a camera ends
-// and an upward view's radiance falls to 0 linearly (corrected there, a
-// sky 2 km under the top read half its irradiance).
-#define SKYBAKE_ALTITUDE_BLEND_FULL_RATIO 2.0
-#define SKYBAKE_ALTITUDE_BLEND_LINEAR_RATIO 4.0
-
-// Two texels of a 4D table blended across its altitude (r) axis, with
-// weight w of b. The sky seen from an altitude falls off with it roughly
-// exponentially (the air's scale height), so a linear blend of two texels
-// overestimates it between them: from 30 km, where the built-in Earth's r
-// texels are 2.7 km apart, the day sky read 0.5 % bright on average, 0.7 %
-// toward the zenith (docs/MEASUREMENTS.md, "The sky across altitude"). The
-// geometric blend a^(1-w) b^w is exact for an exponential; this is that
-// blend to second order in the texels' difference,
-//   linear - w (1 - w) (b - a)^2 / (a + b),
-// within 3 % of the geometric blend's correction for ratios up to 2 and
-// with no transcendental (one division), so lookups stay cheap. It is
-// written as (a + b) times a sum of non-negative terms in a / (a + b) and
-// b / (a + b), so it is never negative for a, b >= 0 and cannot overflow.
-// Between texels that differ little it is the linear blend; a negative
-// texel (none is stored) is blended linearly.
-SKYBAKE_KERNEL Real skybakeBlendAcrossAltitude(Real a, Real b, Real w) {
-  Real linear_blend = a + (b - a) * w;
-  Real sum = a + b;
-  Real low = min(a, b);
-  Real high = max(a, b);
-  if (!(low >= 0.0 && sum > 0.0) || high >= SKYBAKE_ALTITUDE_BLEND_LINEAR_RATIO * low) return linear_blend;
-  Real t = a / sum;
-  Real u = b / sum;
-  Real v = 1.0 - w;
-  Real exponential_blend = sum * (v * v * t * t + (1.0 + 2.0 * w * v) * t * u + w * w * u * u);
-  Real x = clamp((high / low - SKYBAKE_ALTITUDE_BLEND_FULL_RATIO) /
-                     (SKYBAKE_ALTITUDE_BLEND_LINEAR_RATIO - SKYBAKE_ALTITUDE_BLEND_FULL_RATIO),
-                 0.0, 1.0);
-  Real share = 1.0 - x * x * (3.0 - 2.0 * x);
-  return linear_blend * (1.0 - share) + exponential_blend * share;
-}
-
 // Two texels blended with weight w of b: geometrically by `geometric_share`
 // (in [0, 1]) where both are positive, else linearly. The irradiance table
 // blends so across r (irradiance falls off with altitude roughly

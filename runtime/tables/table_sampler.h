@@ -79,15 +79,6 @@ inline Spectrum blendGeometricWhereSteep(const Spectrum& a, const Spectrum& b, f
   return out;
 }
 
-// The blend across a 4D table's altitude axis (the kernel's
-// skybakeBlendAcrossAltitude: the linear blend less its overestimate of an
-// exponential fall-off).
-inline Spectrum blendAcrossAltitude(const Spectrum& a, const Spectrum& b, float w) {
-  Spectrum out;
-  for (int c = 0; c < Spectrum::length(); ++c) out[c] = kernel_float::skybakeBlendAcrossAltitude(a[c], b[c], w);
-  return out;
-}
-
 template <Blend blend>
 inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w) {
   if constexpr (blend == Blend::Linear)
@@ -104,22 +95,18 @@ inline Spectrum blendAcross(const Spectrum& a, const Spectrum& b, float w, Blend
 // The blend for a radiance lookup with the sun at zenith cosine mu_s.
 inline Blend radianceBlend(double mu_s) { return mu_s < 0.0 ? Blend::GeometricWhereSteep : Blend::Linear; }
 
-// One nu slice of a quadrilinear lookup: trilinear in (mu_s, r, mu), mu_s
-// blended as `blend` says, r by blendAcrossAltitude. Callers that look up
-// many nu at one (r, mu, mu_s) interpolate every slice once and blend
-// across nu themselves.
+// One nu slice of a quadrilinear lookup: trilinear in (mu_s, mu, r), mu_s
+// blended as `blend` says. Callers that look up many nu at one (r, mu, mu_s)
+// interpolate every slice once and blend across nu themselves.
 template <Blend blend = Blend::Linear>
 inline Spectrum sampleNuSlice(const Texture4D& t, const AxisLerp& r, const AxisLerp& mu, const AxisLerp& mu_s,
                               int i_nu) {
   auto row = [&](int i_r, int i_mu) {
     return blendAcross<blend>(t.at(i_r, i_mu, mu_s.i0, i_nu), t.at(i_r, i_mu, mu_s.i1, i_nu), mu_s.w1);
   };
-  // Across r at each mu texel, then across mu: so a batch lookup, which
-  // blends a whole (mu, nu) slice across r first (sky_batch.cpp), reads
-  // the same.
-  const Spectrum mu0 = blendAcrossAltitude(row(r.i0, mu.i0), row(r.i1, mu.i0), r.w1);
-  const Spectrum mu1 = blendAcrossAltitude(row(r.i0, mu.i1), row(r.i1, mu.i1), r.w1);
-  return mu0 + (mu1 - mu0) * mu.w1;
+  const Spectrum r0 = row(r.i0, mu.i0) + (row(r.i0, mu.i1) - row(r.i0, mu.i0)) * mu.w1;
+  const Spectrum r1 = row(r.i1, mu.i0) + (row(r.i1, mu.i1) - row(r.i1, mu.i0)) * mu.w1;
+  return r0 + (r1 - r0) * r.w1;
 }
 
 // Quadrilinear lookup: trilinear in (mu_s, mu, r) within the two nearest nu
