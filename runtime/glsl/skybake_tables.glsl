@@ -263,7 +263,7 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
 // ---- the multiple-scattering shape f(r, nu), sr^-1 per channel ----
 
 // Its peak weight w at an altitude: Mie's share of scattering there times
-// m_column^2.
+// m_column^2 (thinned by the bake file's version: multiple_scattering_phase.h).
 vec4 skybakeMultiplePeakWeight(float altitude_m) {
   vec4 rayleigh = skybake_rayleigh_scattering * skybakeRayleighDensity(altitude_m);
   vec4 mie = skybake_mie_scattering * skybakeMieDensity(altitude_m);
