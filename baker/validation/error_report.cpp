@@ -67,7 +67,6 @@ void ErrorStatsBuilder::add(const std::string& quantity, const std::string& band
       ++s.skipped;
       return;
     }
-    s.errors.push_back(std::abs(value - reference) / reference);
     s.signed_errors.push_back((value - reference) / reference);
     s.reference_errors.push_back(reference_error / reference);
   };
@@ -107,21 +106,26 @@ std::vector<ErrorRow> ErrorStatsBuilder::rows(int channels, const std::vector<Ca
   return out;
 }
 
-ErrorStats ErrorStatsBuilder::summarize(Samples s) {
+ErrorStats ErrorStatsBuilder::summarize(const Samples& s) {
   ErrorStats e;
-  e.count = static_cast<int>(s.errors.size());
+  e.count = static_cast<int>(s.signed_errors.size());
   e.skipped = s.skipped;
-  if (s.errors.empty()) return e;
+  if (s.signed_errors.empty()) return e;
   double sum2 = 0.0, ref2 = 0.0, sum = 0.0;
-  for (double x : s.errors) sum2 += x * x;
-  for (double x : s.signed_errors) sum += x;
+  std::vector<double> errors;  // |L - Lref| / Lref
+  errors.reserve(s.signed_errors.size());
+  for (double x : s.signed_errors) {
+    sum += x;
+    sum2 += x * x;
+    errors.push_back(std::abs(x));
+  }
   for (double x : s.reference_errors) ref2 += x * x;
-  std::sort(s.errors.begin(), s.errors.end());
+  std::sort(errors.begin(), errors.end());
   e.rms = std::sqrt(sum2 / e.count);
   e.mean = sum / e.count;
-  e.max = s.errors.back();
+  e.max = errors.back();
   // Nearest-rank 95th percentile.
-  e.p95 = s.errors[static_cast<size_t>(std::ceil(0.95 * e.count)) - 1];
+  e.p95 = errors[static_cast<size_t>(std::ceil(0.95 * e.count)) - 1];
   e.reference_standard_error = std::sqrt(ref2 / e.count);
   return e;
 }

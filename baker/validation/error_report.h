@@ -78,13 +78,13 @@ class ErrorStatsBuilder {
 
  private:
   struct Samples {
-    std::vector<double> errors, signed_errors, reference_errors;
+    std::vector<double> signed_errors, reference_errors;  // (L - Lref) / Lref, stderr / Lref
     int skipped = 0;
   };
   static constexpr size_t kEveryCamera = static_cast<size_t>(-1);
   // (quantity, band, altitude group or kEveryCamera) -> channel -> samples
   std::map<std::tuple<std::string, std::string, size_t>, std::map<int, Samples>> samples_;
-  static ErrorStats summarize(Samples s);
+  static ErrorStats summarize(const Samples& s);
 };
 
 struct ErrorReport {
