@@ -28,10 +28,12 @@
 // mostly been scattered more than twice, each time broadening the peak, and
 // the peak's share falls with the vertical scattering optical depth tau_s:
 // w is multiplied by max(1 - tau_s, 0) (MultipleShapeWeight::
-// ThinnedByScatteringDepth, per channel). That factor is 1 - 2 % for the
-// clear Earth and about 0.5 for Mars's dust, where the unthinned weight
-// read the day sky near the horizon 4.75 % off at 680 nm (0.83 % thinned;
-// docs/MEASUREMENTS.md, "The thinned shape shipped").
+// ThinnedByScatteringDepth, per channel). That factor is 0.95 / 0.89 / 0.73
+// at 680 / 550 / 440 nm for the clear Earth, whose weight is tiny anyway
+// (Mie's column share 0.09 to 0.02), and about 0.5 for Mars's dust, where
+// the unthinned weight read the day sky near the horizon 4.75 % off at
+// 680 nm (0.83 % thinned; docs/MEASUREMENTS.md, "The thinned shape
+// shipped").
 //
 // Of the weights tried, m_local m_column^2 interpolates best for both clear
 // Earth and a thick haze (docs/MEASUREMENTS.md, "Multiple-scattering
