@@ -18,6 +18,7 @@
 
 #include <fmt/format.h>
 
+#include "baker/bake/altitude_prefilter.h"
 #include "baker/bake/bake_policy.h"
 #include "baker/bake/colour_bake.h"
 #include "baker/bake/order_convergence.h"
@@ -362,6 +363,13 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
 
   // The parts the file leaves out (no Mie scattering, outputs the scene does
   // not use): computed where later orders needed them, not kept.
+  // Every lookup blends linearly across r: the 4D tables store what that
+  // blend needs (altitude_prefilter.h), once every table has been computed
+  // from the values at the texels themselves.
+  for (Texture4D* table :
+       {&tables.single_rayleigh, &tables.single_mie, &tables.multiple_scattering, &tables.multiple_density}) {
+    prefilterAcrossAltitude(*table);
+  }
   out.file.contents = bakeContents(config);
   settleStoredTables(out.file.contents, tables);
 
