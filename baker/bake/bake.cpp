@@ -291,8 +291,23 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
       addReshaped(scene->density_sampler, TexelLayout::Density, scene->last, order_shape, stored_shape, Spectrum(1.0f),
                   scene->sum);
     }
-    delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r,
-                                 [&] { return computeIndirectIrradianceTable(previous_ctx, optical_depth, previous); });
+    if (order == 2) {
+      // Order 1's sky irradiance is stored: summed, at rows between the r
+      // texels, from the single-scattering tables as the lookups blend them.
+      Texture4D rayleigh = tables.single_rayleigh;
+      Texture4D mie = tables.single_mie;
+      prefilterAcrossAltitude(rayleigh);
+      prefilterAcrossAltitude(mie);
+      const OrderRadiance single{1, rayleigh, mie, delta_multiple, stored_shape};
+      delta_irradiance = stage.run("indirect_irradiance", 1, config.sizes.irradiance_r,
+                                   [&] { return computeIndirectIrradianceTable(ctx, optical_depth, single); });
+    } else {
+      // Later orders' feed the next order's light reflected by the ground,
+      // on the r texel of the ground, which prefiltering leaves as it is.
+      delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
+        return computeIndirectIrradianceTable(previous_ctx, optical_depth, previous);
+      });
+    }
     // Order 1's sky irradiance is stored; the later orders' come from the stored multiple scattering below.
     if (order == 2) tables.irradiance = delta_irradiance;
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
@@ -343,6 +358,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
       return computeMultipleScatteringTable(ctx, optical_depth, density_sampler, tables.multiple_density, stored_shape,
                                             kStoredRaySegments);
     });
+    prefilterAcrossAltitude(tables.multiple_scattering);
     // The sky irradiance of orders 2 and up, from the stored table: the same
     // light the sky radiance lookups give (its orders' own tables are coarser).
     const OrderRadiance stored{2, tables.single_rayleigh, tables.single_mie, tables.multiple_scattering, stored_shape};
@@ -361,15 +377,18 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     });
   }
 
-  // The parts the file leaves out (no Mie scattering, outputs the scene does
-  // not use): computed where later orders needed them, not kept.
   // Every lookup blends linearly across r: the 4D tables store what that
-  // blend needs (altitude_prefilter.h), once every table has been computed
-  // from the values at the texels themselves.
-  for (Texture4D* table :
-       {&tables.single_rayleigh, &tables.single_mie, &tables.multiple_scattering, &tables.multiple_density}) {
+  // blend needs (altitude_prefilter.h). Only now: while the orders iterate,
+  // each table is read at its own r texels (the next order's density) or
+  // along rays by an interpolation of its own (the density, geometric in r
+  // for a sun below the horizon). The whole domain's multiple scattering
+  // already is, for the sky irradiance.
+  for (Texture4D* table : {&tables.single_rayleigh, &tables.single_mie, &tables.multiple_density}) {
     prefilterAcrossAltitude(*table);
   }
+  if (scene) prefilterAcrossAltitude(tables.multiple_scattering);
+  // The parts the file leaves out (no Mie scattering, outputs the scene does
+  // not use): computed where later orders needed them, not kept.
   out.file.contents = bakeContents(config);
   settleStoredTables(out.file.contents, tables);
 

@@ -10,7 +10,8 @@ void addReferenceOptions(CLI::App& command, std::string& queries, int& reference
       .add_option("--queries", queries,
                   "standard (docs/QUERIES.md), quick (a small subset), eclipse (solar eclipses) or a CSV "
                   "with the columns of 'lookup radiance' (and optionally moon_separation_deg, "
-                  "moon_angular_radius_deg).")
+                  "moon_angular_radius_deg), or with those of 'lookup irradiance' alone (altitude_m, "
+                  "sun_zenith_deg: sky irradiance).")
       ->capture_default_str();
   requireWholeIn(command
                      .add_option("--reference-samples", reference_samples,

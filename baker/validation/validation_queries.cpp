@@ -113,8 +113,26 @@ void requireRadianceQueryRanges(const CsvReader& q, const CsvRow& row, const Rad
   if (c.moon_angular_radius_deg) q.requireRange(row, *c.moon_angular_radius_deg, 0.0, kMaxMoonAngularRadius_deg);
 }
 
+// A CSV with the columns of `lookup irradiance` alone (altitude_m,
+// sun_zenith_deg; no view): sky irradiance on a horizontal surface.
+QuerySet irradianceQuerySetFromCsv(CsvReader& q, const std::string& name) {
+  const size_t altitude_m = q.require("altitude_m");
+  const size_t sun_zenith_deg = q.require("sun_zenith_deg");
+  QuerySet set;
+  set.name = name;
+  for (CsvRow row; q.next(row);) {
+    q.requireRange(row, altitude_m, -kMaxQueryAltitude_m, kMaxQueryAltitude_m);
+    q.requireRange(row, sun_zenith_deg, 0.0, kMaxZenithAngle_deg);
+    set.irradiance.push_back({row.values[altitude_m], row.values[sun_zenith_deg]});
+  }
+  return set;
+}
+
 QuerySet querySetFromCsv(const std::filesystem::path& path) {
   CsvReader q(path);
+  if (!q.find("view_zenith_deg") && !q.find("view_azimuth_deg")) {
+    return irradianceQuerySetFromCsv(q, path.filename().string());
+  }
   const RadianceQueryColumns c = radianceQueryColumns(q);
   QuerySet set;
   set.name = path.filename().string();

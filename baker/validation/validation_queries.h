@@ -101,7 +101,9 @@ RadianceQueryColumns radianceQueryColumns(CsvReader& reader);
 // Refuses a row whose numbers lie outside the query limits above.
 void requireRadianceQueryRanges(const CsvReader& reader, const CsvRow& row, const RadianceQueryColumns& columns);
 
-// Radiance queries from a CSV with the columns of `skybake lookup radiance`.
+// Radiance queries from a CSV with the columns of `skybake lookup radiance`,
+// or sky irradiance queries from one with those of `skybake lookup
+// irradiance` alone (altitude_m and sun_zenith_deg, no view columns).
 QuerySet querySetFromCsv(const std::filesystem::path& path);
 
 // "standard", "quick", "eclipse", or else the path of a CSV (the --queries option).

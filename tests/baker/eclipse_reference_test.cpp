@@ -114,6 +114,22 @@ TEST(EclipseReference, TheEclipseQuerySetHasRaysToPoints) {
   EXPECT_EQ(from_csv.radiance[0].moon.angular_radius_deg, 0.28);
 }
 
+// A CSV with the columns of `lookup irradiance` alone asks for sky
+// irradiance there, and nothing else.
+TEST(QueryCsv, IrradianceColumnsAloneAskForSkyIrradiance) {
+  const std::filesystem::path irradiance_csv = std::filesystem::path(::testing::TempDir()) / "irradiance_points.csv";
+  {
+    std::ofstream out(irradiance_csv);
+    out << "sun_zenith_deg,altitude_m\n30,2000\n96.5,44000\n";
+  }
+  const QuerySet irradiance = querySetFromCsv(irradiance_csv);
+  EXPECT_TRUE(irradiance.radiance.empty());
+  ASSERT_EQ(irradiance.irradiance.size(), 2u);
+  EXPECT_EQ(irradiance.irradiance[1].altitude_m, 44000.0);
+  EXPECT_EQ(irradiance.irradiance[1].sun_zenith_deg, 96.5);
+  EXPECT_FALSE(irradiance.irradiance[1].moon.present());
+}
+
 // The eclipse set's sky irradiance: on the ground and at 10 km under every
 // moon. Their cache keys name the moon; the bake (Sky::irradiance with a
 // moon) and the reference (the moon in its sun connections) both see it: a
