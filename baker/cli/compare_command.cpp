@@ -250,7 +250,7 @@ void runColourCompare(const CompareOptions& o) {
   requireMemoryAvailable(fmt::format("{}: compare --colour (one bake at a time)", o.config_path), largest_peak_bytes);
 
   const AtmosphereParameters& geometry = variants.front().config.atmosphere;
-  const QuerySet all = querySetNamed(o.queries, geometry.top_radius_m - geometry.bottom_radius_m);
+  const QuerySet all = querySetNamed(o.queries, geometry.bottom_radius_m, geometry.top_radius_m);
   std::string left_out;
   const QuerySet queries = comparableQueries(all, "compare --colour", left_out);
   TerminalProgress progress;
@@ -302,7 +302,7 @@ void runCompare(const CompareOptions& o) {
   requireWavelengthChannels(a, o.config_path, "compare");
   const std::vector<BakeConfig> scaled_configs =
       scaledConfigs(config, o.config_path.empty() ? "<built-in earth>" : o.config_path, o.resolutions);
-  const QuerySet all = querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m);
+  const QuerySet all = querySetNamed(o.queries, a.bottom_radius_m, a.top_radius_m);
   std::string left_out;
   const QuerySet queries = comparableQueries(all, "compare", left_out);
 

@@ -91,7 +91,7 @@ void runReference(const ReferenceOptions& o) {
   const std::vector<AtmosphereParameters> groups = referenceAtmospheresOf(o.source_path);
   const AtmosphereParameters& a = groups.front();
   const QuerySet queries =
-      queryPiece(querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m), piece.index, piece.count);
+      queryPiece(querySetNamed(o.queries, a.bottom_radius_m, a.top_radius_m), piece.index, piece.count);
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, false);
   const std::string source = o.source_path.empty() ? "<built-in earth>" : o.source_path;
   const size_t total = queries.radiance.size() + queries.irradiance.size();

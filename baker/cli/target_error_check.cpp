@@ -45,7 +45,7 @@ TargetErrorCheck checkTargetError(const BakeFile& bake, int reference_paths, Pro
   const Sky sky(bake);
   const AtmosphereParameters& a = sky.atmosphere();
   std::string left_out;
-  const QuerySet queries = queriesAnsweredBy(sky, querySetNamed("quick", a.top_radius_m - a.bottom_radius_m), left_out);
+  const QuerySet queries = queriesAnsweredBy(sky, querySetNamed("quick", a.bottom_radius_m, a.top_radius_m), left_out);
   ReferenceSettings settings;
   settings.paths = reference_paths;
   const std::vector<ReferenceValues> references = computeLaneGroupReferences(sky, queries, settings, progress);

@@ -127,7 +127,7 @@ void runValidate(const ValidateOptions& o) {
   }
   std::string left_out;
   const QuerySet queries =
-      queriesAnsweredBy(sky, querySetNamed(o.queries, a.top_radius_m - a.bottom_radius_m), left_out);
+      queriesAnsweredBy(sky, querySetNamed(o.queries, a.bottom_radius_m, a.top_radius_m), left_out);
   const ReferenceSettings settings = referenceSettings(o.reference_samples, o.cache_dir, o.no_cache);
 
   TerminalProgress progress;

@@ -43,7 +43,7 @@ py::object validate(const std::string& bake_path, const std::string& queries_nam
     }
     std::string left_out;
     const QuerySet queries =
-        queriesAnsweredBy(sky, querySetNamed(queries_name, a.top_radius_m - a.bottom_radius_m), left_out);
+        queriesAnsweredBy(sky, querySetNamed(queries_name, a.bottom_radius_m, a.top_radius_m), left_out);
     const ReferenceSettings settings = referenceSettings(reference_samples, cache_dir, no_cache);
     cli::TerminalProgress progress;
     // A spectral bake's lane groups each against their own reference, as the command line does.

@@ -1,5 +1,8 @@
 #include "baker/validation/validation_queries.h"
 
+#include <cmath>
+
+#include "data_formats/angles.h"
 #include "data_formats/queries/csv_table.h"
 
 namespace skybake {
@@ -9,6 +12,16 @@ namespace {
 constexpr double kJustUnderTop_m = 100.0;
 // Far enough out that the whole atmosphere is below the horizon's limb.
 constexpr double kSpaceAltitudeAboveTop_m = 100000.0;
+// Where the sky irradiance table is weakest, besides the set's cameras: 2 km
+// up, inside the aerosol layer (a 1.2 km scale height for the Earth's)
+// between rows 4 km apart; and at 44/60 and 0.9 of the thickness (44 and 54
+// km for the Earth), where the sky above thins to nothing at the top and
+// each altitude's own sunset comes later than its row's. The first in m,
+// the others as shares of the thickness.
+constexpr double kWeakIrradianceAltitudes[] = {2000.0, 44.0 / 60.0, 0.9};
+// Suns after each altitude's own sunset (deg beyond the sun on its
+// horizon), and one before it: there the sky's light falls steepest.
+constexpr double kAfterOwnSunset_deg[] = {-0.5, 0.25, 1.0};
 
 QuerySet makeSet(const std::string& name, const std::vector<double>& altitudes, const std::vector<double>& suns,
                  const std::vector<double>& views, const std::vector<double>& space_views,
@@ -41,12 +54,31 @@ QuerySet makeSet(const std::string& name, const std::vector<double>& altitudes, 
 
 }  // namespace
 
-QuerySet standardQuerySet(double thickness) {
-  return makeSet("standard",
-                 {0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m},
-                 {0.0, 30.0, 60.0, 75.0, 85.0, 88.0, 90.0, 92.0, 95.0, 100.0, 98.0, 102.0, 104.0, 106.0, 108.0},
-                 {0.0, 30.0, 60.0, 75.0, 84.0, 88.0, 89.5, 90.5, 92.0, 96.0, 120.0, 170.0},
-                 {100.0, 106.0, 110.0, 120.0, 150.0, 180.0}, {0.0, 90.0, 180.0}, thickness, true);
+QuerySet standardQuerySet(double bottom_radius_m, double top_radius_m) {
+  const double thickness = top_radius_m - bottom_radius_m;
+  const std::vector<double> suns = {0.0,  30.0,  60.0, 75.0,  85.0,  88.0,  90.0, 92.0,
+                                    95.0, 100.0, 98.0, 102.0, 104.0, 106.0, 108.0};
+  QuerySet set = makeSet(
+      "standard", {0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m},
+      suns, {0.0, 30.0, 60.0, 75.0, 84.0, 88.0, 89.5, 90.5, 92.0, 96.0, 120.0, 170.0},
+      {100.0, 106.0, 110.0, 120.0, 150.0, 180.0}, {0.0, 90.0, 180.0}, thickness, true);
+  std::vector<double> irradiance_altitudes;
+  for (const IrradianceQuery& q : set.irradiance) {
+    if (irradiance_altitudes.empty() || irradiance_altitudes.back() != q.altitude_m) {
+      irradiance_altitudes.push_back(q.altitude_m);
+    }
+  }
+  for (double altitude : {kWeakIrradianceAltitudes[0], kWeakIrradianceAltitudes[1] * thickness,
+                          kWeakIrradianceAltitudes[2] * thickness}) {
+    for (double sun : suns) set.irradiance.push_back({altitude, sun});
+    irradiance_altitudes.push_back(altitude);
+  }
+  for (double altitude : irradiance_altitudes) {
+    // The sun on this altitude's own horizon, below the ground's.
+    const double sunset_deg = 90.0 + std::acos(bottom_radius_m / (bottom_radius_m + altitude)) * 180.0 / kPi;
+    for (double after_deg : kAfterOwnSunset_deg) set.irradiance.push_back({altitude, sunset_deg + after_deg});
+  }
+  return set;
 }
 
 QuerySet quickQuerySet(double thickness) {
@@ -148,9 +180,9 @@ QuerySet querySetFromCsv(const std::filesystem::path& path) {
   return set;
 }
 
-QuerySet querySetNamed(const std::string& which, double thickness) {
-  if (which == "standard") return standardQuerySet(thickness);
-  if (which == "quick") return quickQuerySet(thickness);
+QuerySet querySetNamed(const std::string& which, double bottom_radius_m, double top_radius_m) {
+  if (which == "standard") return standardQuerySet(bottom_radius_m, top_radius_m);
+  if (which == "quick") return quickQuerySet(top_radius_m - bottom_radius_m);
   if (which == "eclipse") return eclipseQuerySet();
   return querySetFromCsv(which);
 }

@@ -64,13 +64,16 @@ struct QuerySet {
   std::vector<IrradianceQuery> irradiance;
 };
 
-// The standard set for an atmosphere with the given top altitude (m above
-// the ground): cameras at 0, 1 km, 10 km, 30 km, just under the top and in
-// space; suns from the zenith to 18 deg below the horizon; views over the
+// The standard set for an atmosphere between these radii (m from the
+// planet's centre): cameras at 0, 1 km, 10 km, 30 km, just under the top and
+// in space; suns from the zenith to 18 deg below the horizon; views over the
 // dome and the ground, denser near the horizon; azimuths 0, 90 and 180 deg.
 // The suns of the first set (zenith to 10 deg below the horizon) come first
 // and keep their order; the deep-twilight suns (to 18 deg below) follow.
-QuerySet standardQuerySet(double atmosphere_thickness_m);
+// The sky irradiance is asked for at every camera inside the atmosphere and
+// at the altitudes where its table is weakest (kWeakIrradianceAltitudes),
+// at every sun and across each altitude's own sunset.
+QuerySet standardQuerySet(double bottom_radius_m, double top_radius_m);
 
 // A small subset of the standard set (for CI and quick looks).
 QuerySet quickQuerySet(double atmosphere_thickness_m);
@@ -107,7 +110,7 @@ void requireRadianceQueryRanges(const CsvReader& reader, const CsvRow& row, cons
 QuerySet querySetFromCsv(const std::filesystem::path& path);
 
 // "standard", "quick", "eclipse", or else the path of a CSV (the --queries option).
-QuerySet querySetNamed(const std::string& which, double atmosphere_thickness_m);
+QuerySet querySetNamed(const std::string& which, double bottom_radius_m, double top_radius_m);
 
 // Sun bands by the sun's zenith angle: day (elevation above 10 deg), low sun
 // (0 to 10 deg), then the three twilights as almanacs define them by the

@@ -8,15 +8,17 @@ namespace skybake {
 namespace {
 
 TEST(CameraAltitudeGroups, TheStandardSetHasAGroupPerCameraAltitude) {
-  const QuerySet standard = standardQuerySet(60000.0);
+  const QuerySet standard = standardQuerySet(6360e3, 6420e3);
   const std::vector<CameraAltitudeGroup> groups = cameraAltitudeGroups(standard);
-  ASSERT_EQ(groups.size(), 6u);
-  const std::vector<std::string> labels = {"0 km", "1 km", "10 km", "30 km", "59.9 km", "160 km"};
+  // The cameras' altitudes and those where only the sky irradiance is asked for.
+  ASSERT_EQ(groups.size(), 9u);
+  const std::vector<std::string> labels = {"0 km",  "1 km",  "2 km",    "10 km", "30 km",
+                                           "44 km", "54 km", "59.9 km", "160 km"};
   for (size_t g = 0; g < groups.size(); ++g) {
     EXPECT_EQ(groups[g].min_m, groups[g].max_m);
     EXPECT_EQ(groups[g].label(), labels[g]);
   }
-  EXPECT_EQ(cameraAltitudeGroupOf(groups, 30000.0), 3u);
+  EXPECT_EQ(cameraAltitudeGroupOf(groups, 30000.0), 4u);
 }
 
 TEST(CameraAltitudeGroups, ManyAltitudesShareGroupsInOrder) {

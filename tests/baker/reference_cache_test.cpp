@@ -5,6 +5,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -15,6 +17,7 @@
 
 #include "baker/validation/reference_cache.h"
 #include "baker/validation/validation.h"
+#include "data_formats/angles.h"
 #include "data_formats/config/config.h"
 
 namespace skybake {
@@ -161,7 +164,7 @@ TEST_F(ReferenceCacheTest, AnUnwritableCacheKeepsResultsInMemoryWithANote) {
 
 // The pieces of a query set partition it.
 TEST(ReferencePieces, PiecesPartitionTheSet) {
-  const QuerySet set = querySetNamed("quick", 100000.0);
+  const QuerySet set = querySetNamed("quick", 6360e3, 6460e3);
   for (int pieces : {1, 2, 3, 7}) {
     size_t radiance = 0, irradiance = 0;
     for (int k = 1; k <= pieces; ++k) {
@@ -182,7 +185,7 @@ TEST(ReferencePieces, PiecesPartitionTheSet) {
 // cache, is bit for bit the reference computed whole without a cache: each
 // query's paths are seeded by the query, not by the run.
 TEST_F(ReferenceCacheTest, PiecesGiveTheWholeSetsValues) {
-  const QuerySet set = querySetNamed("quick", atmosphere_.top_radius_m - atmosphere_.bottom_radius_m);
+  const QuerySet set = querySetNamed("quick", atmosphere_.bottom_radius_m, atmosphere_.top_radius_m);
   SilentProgress progress;
   ReferenceSettings cached{64, dir_};
   for (int k : {1, 2}) {
@@ -225,7 +228,7 @@ TEST(SunBands, CivilNauticalAndAstronomicalTwilightBoundaries) {
 // at least two suns (420 radiance queries) each, and the daylight queries
 // are the ones they were (their cached references stay valid).
 TEST(SunBands, StandardSetCoversEveryTwilightBandAndKeepsDaylightKeys) {
-  const QuerySet set = standardQuerySet(60000.0);
+  const QuerySet set = standardQuerySet(6360e3, 6420e3);
   std::map<SunBand, size_t> per_band;
   for (const RadianceQuery& q : set.radiance) ++per_band[sunBand(q.sun_zenith_deg)];
   for (SunBand band : {SunBand::Twilight, SunBand::Nautical, SunBand::Astronomical}) {
@@ -239,6 +242,29 @@ TEST(SunBands, StandardSetCoversEveryTwilightBandAndKeepsDaylightKeys) {
   EXPECT_EQ(irradianceKey({1000.0, 88.0}), "e 1000 88");
   EXPECT_EQ(radianceKey({0.0, 100.0, 60.0, 90.0, 0.0}), "r 0 100 60 90 0 guided2");
   EXPECT_EQ(irradianceKey({1000.0, 92.0}), "e 1000 92 guided2");
+}
+
+// The sky irradiance where its table is weakest: inside the aerosol layer
+// and toward the top at every sun, and across every altitude's own sunset.
+TEST(StandardSet, AsksForSkyIrradianceWhereItsTableIsWeakest) {
+  const double bottom_m = 6360e3;
+  const QuerySet set = standardQuerySet(bottom_m, bottom_m + 60e3);
+  std::map<double, std::vector<double>> suns_at;
+  for (const IrradianceQuery& q : set.irradiance) suns_at[q.altitude_m].push_back(q.sun_zenith_deg);
+  // The 5 cameras inside the atmosphere and 2, 44 and 54 km; 15 suns each
+  // and 3 around the altitude's own sunset.
+  ASSERT_EQ(suns_at.size(), 8u);
+  for (double altitude : {0.0, 1000.0, 2000.0, 10000.0, 30000.0, 44000.0, 54000.0, 59900.0}) {
+    ASSERT_EQ(suns_at.count(altitude), 1u) << altitude;
+    EXPECT_EQ(suns_at[altitude].size(), 18u) << altitude;
+  }
+  // 30 km up the sun sets 5.56 deg below the ground's horizon.
+  const std::vector<double>& at_30_km = suns_at[30000.0];
+  const double sunset_deg = 90.0 + std::acos(bottom_m / (bottom_m + 30e3)) * 180.0 / kPi;
+  EXPECT_NEAR(sunset_deg, 95.56, 0.01);
+  EXPECT_NE(std::find(at_30_km.begin(), at_30_km.end(), sunset_deg + 0.25), at_30_km.end());
+  // The radiance queries are the ones they were.
+  EXPECT_EQ(set.radiance.size(), 3150u);
 }
 
 // Rays to a point with the sun below the camera's horizon take more paths

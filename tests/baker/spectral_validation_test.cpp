@@ -51,7 +51,7 @@ class SpectralValidationTest : public ::testing::Test {
       groups_->emplace_back(bakeAtmosphere(parseConfig(configText(wavelengths, ""), "g.toml"), 2, quiet).file);
     }
     queries_ = new QuerySet(
-        querySetNamed("quick", spectral_->atmosphere().top_radius_m - spectral_->atmosphere().bottom_radius_m));
+        querySetNamed("quick", spectral_->atmosphere().bottom_radius_m, spectral_->atmosphere().top_radius_m));
   }
   static void TearDownTestSuite() {
     delete spectral_;
