@@ -4,9 +4,10 @@ lookups of the same bake, on a horizontal surface.
     PYTHONPATH=build/python /usr/bin/python3 scripts/irradiance_against_sky.py BAKE.exr
     PYTHONPATH=build/python /usr/bin/python3 scripts/irradiance_against_sky.py --dense BAKE.exr [STEP_M]
 
-The irradiance table holds rows 4 km apart in altitude (the default); the sum
-over the sky radiance lookups has no such rows, so where the two part is
-where the table's rows and their blending miss the air between them
+The irradiance table holds 16 rows in altitude (the default; cosine spaced,
+dense near the ground and the top); the sum over the sky radiance lookups
+has no such rows, so where the two part is where the table's rows and
+their blending miss the air between them
 (docs/ERROR_VS_TIME.md, "The frontier"). The sum: 256 x 256 directions,
 cosine weighted (midpoints in sin^2 of the zenith angle and in azimuth),
 within about 0.1 % of the table on the ground by day. Printed per case:

@@ -270,6 +270,7 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                                 [&] { return makeScatteringDensityKernel(scene->density_ctx, optical_depth); });
     }
   }
+  bool single_prefiltered = false;  // the single-scattering tables (altitude_prefilter.h)
   for (int order = 2; order <= last_order; ++order) {
     const MultipleScatteringPhase order_shape(a, order);
     const OrderRadiance previous{order - 1, tables.single_rayleigh, tables.single_mie, delta_multiple,
@@ -292,22 +293,18 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
                   scene->sum);
     }
     if (order == 2) {
-      // Order 1's sky irradiance is stored: summed, at rows between the r
-      // texels, from the single-scattering tables as the lookups blend them.
-      Texture4D rayleigh = tables.single_rayleigh;
-      Texture4D mie = tables.single_mie;
-      prefilterAcrossAltitude(rayleigh);
-      prefilterAcrossAltitude(mie);
-      const OrderRadiance single{1, rayleigh, mie, delta_multiple, stored_shape};
-      delta_irradiance = stage.run("indirect_irradiance", 1, config.sizes.irradiance_r,
-                                   [&] { return computeIndirectIrradianceTable(ctx, optical_depth, single); });
-    } else {
-      // Later orders' feed the next order's light reflected by the ground,
-      // on the r texel of the ground, which prefiltering leaves as it is.
-      delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r, [&] {
-        return computeIndirectIrradianceTable(previous_ctx, optical_depth, previous);
-      });
+      // Order 2's densities were the last to read the single-scattering
+      // tables at their own r texels. Order 1's sky irradiance, stored, is
+      // summed at rows between them, from the tables as the lookups blend
+      // them (altitude_prefilter.h); later orders' irradiance feeds only
+      // the next order's light reflected by the ground, on the r texel of
+      // the ground, which prefiltering leaves as it is.
+      prefilterAcrossAltitude(tables.single_rayleigh);
+      prefilterAcrossAltitude(tables.single_mie);
+      single_prefiltered = true;
     }
+    delta_irradiance = stage.run("indirect_irradiance", order - 1, config.sizes.irradiance_r,
+                                 [&] { return computeIndirectIrradianceTable(previous_ctx, optical_depth, previous); });
     // Order 1's sky irradiance is stored; the later orders' come from the stored multiple scattering below.
     if (order == 2) tables.irradiance = delta_irradiance;
     report.orders.back().mean_irradiance = meanOf(delta_irradiance.texels);
@@ -382,9 +379,12 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
   // each table is read at its own r texels (the next order's density) or
   // along rays by an interpolation of its own (the density, geometric in r
   // for a sun below the horizon). The whole domain's multiple scattering
-  // already is, for the sky irradiance.
-  for (Texture4D* table : {&tables.single_rayleigh, &tables.single_mie, &tables.multiple_density}) {
-    prefilterAcrossAltitude(*table);
+  // and single scattering already are, for the sky irradiance; a scene's
+  // tables were computed again on its own texels.
+  prefilterAcrossAltitude(tables.multiple_density);
+  if (scene || !single_prefiltered) {
+    prefilterAcrossAltitude(tables.single_rayleigh);
+    prefilterAcrossAltitude(tables.single_mie);
   }
   if (scene) prefilterAcrossAltitude(tables.multiple_scattering);
   // The parts the file leaves out (no Mie scattering, outputs the scene does

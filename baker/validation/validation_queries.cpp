@@ -14,10 +14,10 @@ constexpr double kJustUnderTop_m = 100.0;
 constexpr double kSpaceAltitudeAboveTop_m = 100000.0;
 // Where the sky irradiance table is weakest, besides the set's cameras: 2 km
 // up, inside the aerosol layer (a 1.2 km scale height for the Earth's)
-// between rows 4 km apart; and at 44/60 and 0.9 of the thickness (44 and 54
-// km for the Earth), where the sky above thins to nothing at the top and
-// each altitude's own sunset comes later than its row's. The first in m,
-// the others as shares of the thickness.
+// between two rows; and at 44/60 and 0.9 of the thickness (44 and 54 km for
+// the Earth), where the sky above thins to nothing toward the top and each
+// altitude's own sunset comes later than a lower row's. The first in m, the
+// others as shares of the thickness.
 constexpr double kWeakIrradianceAltitudes[] = {2000.0, 44.0 / 60.0, 0.9};
 // Suns after each altitude's own sunset (deg beyond the sun on its
 // horizon), and one before it: there the sky's light falls steepest.

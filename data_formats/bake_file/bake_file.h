@@ -29,10 +29,12 @@ namespace skybake {
 // included, and the irradiance always FLOAT; version 7 states the density
 // part's own view (mu) size, which may be smaller than the other 4D parts';
 // version 8 divides multiple scattering by a shape whose peak is thinned by
-// the vertical scattering optical depth (MultipleShapeWeight).
-// Versions 2 to 7 (2 to 4 on Bruneton's sun axis; 2 and 3 always
+// the vertical scattering optical depth (MultipleShapeWeight); version 9
+// spaces the irradiance rows by a cosine and blends them over the vertical
+// optical depth above (IrradianceRows).
+// Versions 2 to 8 (2 to 4 on Bruneton's sun axis; 2 and 3 always
 // wavelengths) are still read (FORMAT.md, "Older versions").
-inline constexpr int kBakeFormatVersion = 8;
+inline constexpr int kBakeFormatVersion = 9;
 // The first format version whose HALF 4D parts carry slice exponents.
 inline constexpr int kFirstHalfSliceExponentsFormatVersion = 6;
 // The first format version that states the density part's view size.
@@ -40,6 +42,8 @@ inline constexpr int kFirstDensityViewSizeFormatVersion = 7;
 // The first format version whose multiple-scattering shape is thinned by the
 // scattering depth.
 inline constexpr int kFirstThinnedShapeFormatVersion = 8;
+// The first format version whose irradiance rows are IrradianceRows::CosineOverDepth.
+inline constexpr int kFirstCosineIrradianceRowsFormatVersion = 9;
 // The first format version whose sun axis is SunAxisMapping::SplitAtHorizon.
 inline constexpr int kFirstSplitSunAxisFormatVersion = 5;
 
@@ -47,6 +51,11 @@ inline constexpr int kFirstSplitSunAxisFormatVersion = 5;
 inline SunAxisMapping sunAxisOfFormatVersion(int format_version) {
   return format_version >= kFirstSplitSunAxisFormatVersion ? SunAxisMapping::SplitAtHorizon
                                                            : SunAxisMapping::DistanceToTop;
+}
+// The irradiance rows of a file of this format version.
+inline IrradianceRows irradianceRowsOfFormatVersion(int format_version) {
+  return format_version >= kFirstCosineIrradianceRowsFormatVersion ? IrradianceRows::CosineOverDepth
+                                                                   : IrradianceRows::Linear;
 }
 // The multiple-scattering shape of a file of this format version.
 inline MultipleShapeWeight multipleShapeWeightOfFormatVersion(int format_version) {
@@ -57,11 +66,12 @@ inline MultipleShapeWeight multipleShapeWeightOfFormatVersion(int format_version
 // the way an older version stores them (a bake read from an older file and
 // written again) the last version that stores them so, so that a reader
 // decodes them as they were baked. Tables on Bruneton's sun axis predate
-// the thinned shape.
-inline int formatVersionToWrite(SunAxisMapping sun_axis, MultipleShapeWeight shape_weight) {
-  if (sun_axis != SunAxisMapping::SplitAtHorizon) return kFirstSplitSunAxisFormatVersion - 1;
-  return shape_weight == MultipleShapeWeight::ThinnedByScatteringDepth ? kBakeFormatVersion
-                                                                       : kFirstThinnedShapeFormatVersion - 1;
+// the thinned shape, and those with the unthinned shape the cosine rows.
+inline int formatVersionToWrite(const AtmosphereDomain& domain, MultipleShapeWeight shape_weight) {
+  if (domain.sun_axis != SunAxisMapping::SplitAtHorizon) return kFirstSplitSunAxisFormatVersion - 1;
+  if (shape_weight != MultipleShapeWeight::ThinnedByScatteringDepth) return kFirstThinnedShapeFormatVersion - 1;
+  return domain.irradiance_rows == IrradianceRows::CosineOverDepth ? kBakeFormatVersion
+                                                                   : kFirstCosineIrradianceRowsFormatVersion - 1;
 }
 inline constexpr int kOldestReadBakeFormatVersion = 2;
 

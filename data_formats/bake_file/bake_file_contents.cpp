@@ -287,6 +287,7 @@ BakeContents readContentsAttributes(const Imf::Header& header, int format_versio
   AtmosphereDomain& d = c.domain;
   d = AtmosphereDomain::fromParameters(a);
   d.sun_axis = sunAxisOfFormatVersion(format_version);
+  d.irradiance_rows = irradianceRowsOfFormatVersion(format_version);
   const Imath::V2d rho = in.range(kAttrScatteringRhoRange);
   const Imath::V2d mu_s_coord = in.range(kAttrScatteringMuSCoordRange);
   d.scattering_rho_min_m = rho.x;

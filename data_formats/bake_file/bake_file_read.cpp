@@ -254,6 +254,7 @@ constexpr double kVersion2SunCoordSnap = 1e-9;
 AtmosphereDomain version2Domain(const Reader& in, int part, const BakeConfig& config) {
   AtmosphereDomain d = AtmosphereDomain::fromParameters(config.atmosphere);
   d.sun_axis = sunAxisOfFormatVersion(2);
+  d.irradiance_rows = irradianceRowsOfFormatVersion(2);
   const Imath::V2d r = in.attribute<Imf::V2dAttribute>(part, kAttrScatteringRRange).value();
   const Imath::V2d mu_s = in.attribute<Imf::V2dAttribute>(part, kAttrScatteringMuSRange).value();
   auto rho = [&](double radius, double whole) {

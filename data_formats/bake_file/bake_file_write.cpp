@@ -117,8 +117,8 @@ Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imat
   const Imf::PixelType type = storedAsHalf(bake, part) ? Imf::HALF : Imf::FLOAT;
   for (const std::string& channel : channelNames(a)) header.channels().insert(channel, Imf::Channel(type));
   if (part.extra_texels != nullptr) header.channels().insert(part.extra_channel, Imf::Channel(type));
-  header.insert(kAttrFormatVersion, Imf::IntAttribute(formatVersionToWrite(bake.contents.domain.sun_axis,
-                                                                           bake.contents.multiple_shape_weight)));
+  header.insert(kAttrFormatVersion,
+                Imf::IntAttribute(formatVersionToWrite(bake.contents.domain, bake.contents.multiple_shape_weight)));
   header.insert(kAttrContent, Imf::StringAttribute(part.content));
   header.insert(kAttrUnits, Imf::StringAttribute(part.units));
   header.insert(kAttrTableSize, Imf::StringAttribute(part.size_text));

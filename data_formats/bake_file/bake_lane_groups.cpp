@@ -25,6 +25,9 @@ BakeFile takeLaneGroup(BakeFile& spectral, size_t g) {
   }
   group.contents.atmosphere = spectral.contents.lane_groups[g];
   group.contents.lane_groups.clear();
+  // The irradiance rows are blended over one of the group's own channels, as
+  // an ordinary bake of those wavelengths blends them.
+  group.contents.domain.irradiance_depth_channel = irradianceDepthChannel(group.contents.atmosphere);
   group.tables = std::move(spectral.lane_group_tables[g]);
   // The part a group without Mie scattering holds zeros in: an ordinary bake
   // of those wavelengths has no such table.

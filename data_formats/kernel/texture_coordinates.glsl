@@ -140,7 +140,43 @@ SKYBAKE_KERNEL Real skybakeScatteringCoordNu(Real nu) { return (nu + 1.0) * 0.5;
 
 // ---- the irradiance table (2D: u = mu_s, v = r) ----
 
-// The r coordinate: linear in r from the ground to the top.
-SKYBAKE_KERNEL Real skybakeIrradianceCoordR(Real r, Real bottom_radius_m, Real top_radius_m, int size_r) {
-  return skybakeTextureCoordFromUnitRange((r - bottom_radius_m) / (top_radius_m - bottom_radius_m), size_r);
+// The rows' altitudes (IrradianceRows): cosine_rows 1, the altitude share
+// (r - bottom) / (top - bottom) at row i of n is (1 - cos(pi i / (n - 1))) /
+// 2, rows dense near the ground (the aerosol layer) and near the top (where
+// the sky above thins to nothing); cosine_rows 0, linear (format versions 2
+// to 8).
+SKYBAKE_KERNEL Real skybakeIrradianceRowUnit(Real altitude_share, int cosine_rows) {
+  if (cosine_rows == 0) return altitude_share;
+  return acos(clamp(1.0 - 2.0 * altitude_share, -1.0, 1.0)) / SKYBAKE_PI;
+}
+
+// The sun cosine whose place on the sun axis a row at radius r reads
+// (horizon_relative 1, with the cosine rows): the axis's horizon texel moved
+// to the sun on r's own horizon (mu_h = skybakeTangentZenithCosine, below
+// the ground's), the ends (mu_s_min and the zenith) kept, linear in between
+// on either side; so that each row's own sunset, where its sky's light falls
+// steepest, sits on the same texel. mu_s_min >= mu_h (a sun range that ends
+// before r's own sunset): the cosine itself.
+SKYBAKE_KERNEL Real skybakeIrradianceSunCosine(Real mu_s, Real r, Real bottom_radius_m, Real mu_s_min,
+                                               int horizon_relative) {
+  if (horizon_relative == 0) return mu_s;
+  Real mu_h = skybakeTangentZenithCosine(max(r, bottom_radius_m), bottom_radius_m);
+  if (!(mu_s_min < mu_h)) return mu_s;
+  if (mu_s >= mu_h) return (mu_s - mu_h) / (1.0 - mu_h);
+  return mu_s_min * (mu_s - mu_h) / (mu_s_min - mu_h);
+}
+
+// The r coordinate.
+SKYBAKE_KERNEL Real skybakeIrradianceCoordR(Real r, Real bottom_radius_m, Real top_radius_m, int size_r,
+                                            int cosine_rows) {
+  return skybakeTextureCoordFromUnitRange(
+      skybakeIrradianceRowUnit((r - bottom_radius_m) / (top_radius_m - bottom_radius_m), cosine_rows), size_r);
+}
+
+// The radius of row i_r of size_r.
+SKYBAKE_KERNEL Real skybakeIrradianceRowRadius(int i_r, int size_r, Real bottom_radius_m, Real top_radius_m,
+                                               int cosine_rows) {
+  Real x = Real(i_r) / Real(size_r - 1);
+  Real share = cosine_rows == 0 ? x : 0.5 * (1.0 - cos(SKYBAKE_PI * x));
+  return bottom_radius_m + share * (top_radius_m - bottom_radius_m);
 }

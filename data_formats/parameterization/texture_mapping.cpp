@@ -49,8 +49,32 @@ RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r,
 }
 
 RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s, int i_r) {
-  const double x_r = unitRangeFromTextureCoord(texelCentre(i_r, size_r), size_r);
-  return {d.bottom_radius_m + x_r * (d.top_radius_m - d.bottom_radius_m), muSFromIrradianceTexel(d, size_mu_s, i_mu_s)};
+  const bool cosine_rows = d.irradiance_rows == IrradianceRows::CosineOverDepth;
+  const double r = kernel::skybakeIrradianceRowRadius(i_r, size_r, d.bottom_radius_m, d.top_radius_m, cosine_rows);
+  // The axis's cosine, turned back into the sun's at this row
+  // (skybakeIrradianceSunCosine inverted).
+  const double axis_mu_s = muSFromIrradianceTexel(d, size_mu_s, i_mu_s);
+  const double mu_h = kernel::skybakeTangentZenithCosine(r, d.bottom_radius_m);
+  if (!cosine_rows || !(d.mu_s_min < mu_h)) return {r, axis_mu_s};
+  const double mu_s =
+      axis_mu_s >= 0.0 ? mu_h + axis_mu_s * (1.0 - mu_h) : mu_h + axis_mu_s * (d.mu_s_min - mu_h) / d.mu_s_min;
+  return {r, clampCosine(mu_s)};
+}
+
+int irradianceDepthChannel(const AtmosphereParameters& a) {
+  int best = 0;
+  double best_share = 2.0;  // above any share
+  for (int c = 0; c < a.laneCount(); ++c) {
+    const double absorption = a.absorption_extinction[c];
+    const double extinction = a.rayleigh_scattering[c] + a.mie_extinction[c] + absorption;
+    if (!(extinction > 0.0)) continue;
+    const double share = absorption / extinction;
+    if (share < best_share) {
+      best_share = share;
+      best = c;
+    }
+  }
+  return best;
 }
 
 double rFromScatteringTexel(const AtmosphereDomain& d, const ScatteringSizes& s, int i_r) {

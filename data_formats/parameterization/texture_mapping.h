@@ -57,6 +57,24 @@ inline constexpr double kSunAxisBelowHorizonShare = 18.0 / 40.0;
 // axis, the deep end 1.25 deg.
 inline constexpr double kSunAxisHorizonSpacing = 0.75;
 
+// Where the sky irradiance table's rows sit and how a lookup blends them.
+enum class IrradianceRows {
+  // Linear in altitude, blended geometrically (format versions 2 to 8).
+  Linear,
+  // Cosine spaced (skybakeIrradianceRowUnit), dense near the ground and the
+  // top; the irradiance over the vertical optical depth above blended
+  // geometrically (TableSampler::irradiance); each row's sun axis relative
+  // to its own horizon (skybakeIrradianceSunCosine). Format version 9 on.
+  CosineOverDepth,
+};
+
+// The channel whose vertical optical depth the irradiance rows are blended
+// over (IrradianceRows::CosineOverDepth): the one whose extinction owes
+// least to absorption (ties: the first), as the sky's light follows the air
+// that scatters it; an absorbing layer (ozone) bends the optical depth of
+// its own channels away from it.
+int irradianceDepthChannel(const AtmosphereParameters& a);
+
 // The part of the atmosphere's geometry that the parameterization needs, and
 // the part of it the 4D tables cover.
 struct AtmosphereDomain {
@@ -81,12 +99,17 @@ struct AtmosphereDomain {
   bool scattering_ground_views = true;
   // The sun axis's texel spacing (a bake file states it by its format version).
   SunAxisMapping sun_axis = SunAxisMapping::SplitAtHorizon;
+  // The sky irradiance table's rows (a bake file states them by its format
+  // version) and the channel they are blended over (irradianceDepthChannel).
+  IrradianceRows irradiance_rows = IrradianceRows::CosineOverDepth;
+  int irradiance_depth_channel = 0;
   bool operator==(const AtmosphereDomain&) const = default;
 
   // The whole domain: every altitude, every sun up to sun.max_zenith_deg.
   static AtmosphereDomain fromParameters(const AtmosphereParameters& a) {
     AtmosphereDomain d{a.bottom_radius_m, a.top_radius_m, a.sunMuSMin()};
     d.scattering_rho_max_m = d.horizonToTopDistance();
+    d.irradiance_depth_channel = irradianceDepthChannel(a);
     return d;
   }
 
@@ -281,8 +304,11 @@ inline double scatteringCoordMuAtDistance(const AtmosphereDomain& d, int size_mu
 // degrees, which a coordinate linear in mu_s would straddle with one texel.
 inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s, int size_r, double r,
                                               double mu_s) {
-  return {textureCoordFromUnitRange(muSUnitCoord(d, mu_s), size_mu_s),
-          kernel::skybakeIrradianceCoordR(r, d.bottom_radius_m, d.top_radius_m, size_r)};
+  const int cosine_rows = d.irradiance_rows == IrradianceRows::CosineOverDepth ? 1 : 0;
+  const double axis_mu_s =
+      kernel::skybakeIrradianceSunCosine(mu_s, std::min(r, d.top_radius_m), d.bottom_radius_m, d.mu_s_min, cosine_rows);
+  return {textureCoordFromUnitRange(muSUnitCoord(d, axis_mu_s), size_mu_s),
+          kernel::skybakeIrradianceCoordR(r, d.bottom_radius_m, d.top_radius_m, size_r, cosine_rows)};
 }
 
 inline ScatteringCoord scatteringCoordFromRMuMuSNu(const AtmosphereDomain& d, const ScatteringSizes& s, double r,

@@ -129,6 +129,9 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   b.outputs[1] = sky.outputs().ground_irradiance ? 1 : 0;
   b.outputs[2] = sky.channelCount();
   b.outputs[3] = sky.channels().kind == ChannelKind::CieXyz ? 1 : 0;
+  b.irradiance_rows[0] = d.irradiance_rows == IrradianceRows::CosineOverDepth ? 1 : 0;
+  b.irradiance_rows[1] = d.irradiance_depth_channel;
+  b.irradiance_sun[0] = static_cast<float>(d.mu_s_min);
   put(b.sun_irradiance, a.sun_irradiance);
   put(b.solar_radiance, sky.solarRadiance());
   put(b.rayleigh_scattering, a.rayleigh_scattering);
@@ -170,6 +173,7 @@ std::string skyGlslDefines() {
   define("SKYBAKE_REFINED_OPTICAL_DEPTH", glslFloat(kRefinedOpticalDepth));
   define("SKYBAKE_MAX_PIECES_PER_SUBINTERVAL", std::to_string(kMaxPiecesPerSubinterval));
   define("SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE", glslFloat(kIntegratedSingleScatteringTopCosine));
+  define("SKYBAKE_MAX_IRRADIANCE_DEPTH_FACTOR", glslFloat(kMaxIrradianceDepthFactor));
   define("SKYBAKE_LOOKUP_SINGLE_SCATTERING_SEGMENTS", std::to_string(kLookupSingleScatteringSegments));
   define("SKYBAKE_GROUND_RAY_SUBINTERVALS", std::to_string(kGroundRaySubintervals));
   define("SKYBAKE_MIE_TWILIGHT_FADE_COSINE", glslFloat(kMieTwilightFadeCosine));

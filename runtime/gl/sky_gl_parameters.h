@@ -29,7 +29,7 @@ struct SkyUniformBlock {
 #undef SKYBAKE_BLOCK_MEMBER
 #undef SKYBAKE_MAX_DENSITY_LAYERS
 };
-static_assert(sizeof(SkyUniformBlock) == (24 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
+static_assert(sizeof(SkyUniformBlock) == (26 + 6 * kMaxGlDensityLayers) * 16, "std140: vec4s only, no padding");
 
 // The block's values for a loaded bake.
 SkyUniformBlock skyUniformBlock(const Sky& sky);

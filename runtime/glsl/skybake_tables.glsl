@@ -219,21 +219,44 @@ vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
 // ---- irradiance (2D: u = mu_s, v = r) ----
 
 // Row `row` of the irradiance table at the mu_s position x: linear with the
-// sun above the horizon, geometric below it where both texels are positive,
-// the interval holding the horizon in proportion to its part below
-// (TableSampler::irradianceRow).
+// sun above the ground's horizon, geometric below it where both texels are
+// positive, the interval holding the horizon in proportion to its part
+// below (TableSampler::irradianceRow; with rows on their own horizons the
+// ground's horizon sits higher on the axis of a higher row).
 vec4 skybakeIrradianceRow(SkybakeAxisLerp x, int row) {
   vec4 a = texelFetch(skybake_irradiance, ivec2(x.i0, row), 0);
   vec4 b = texelFetch(skybake_irradiance, ivec2(x.i1, row), 0);
-  float horizon_texel = skybakeMuSUnitCoord(0.0) * float(skybake_table_2d_size.z - 1);
+  int cosine_rows = skybake_irradiance_rows.x;
+  float row_r = skybakeIrradianceRowRadius(row, skybake_table_2d_size.w, skybake_radii_m.x, skybake_radii_m.y,
+                                           cosine_rows);
+  float horizon_mu_s =
+      skybakeIrradianceSunCosine(0.0, row_r, skybake_radii_m.x, skybake_irradiance_sun.x, cosine_rows);
+  float horizon_texel = skybakeMuSUnitCoord(horizon_mu_s) * float(skybake_table_2d_size.z - 1);
   float below_horizon = skybakeBelowHorizonShare(horizon_texel, x.i1);
   if (below_horizon <= 0.0) return a + (b - a) * x.w1;
   return skybakeBlendGeometricWherePositive(a, b, x.w1, below_horizon);
 }
 
+// The vertical optical depth above r over its geometric blend between the
+// irradiance rows i0 and i1, in the depth channel (TableSampler::depthOverItsBlend).
+float skybakeIrradianceDepthOverItsBlend(float r, int size_r, SkybakeAxisLerp y) {
+  float bottom = skybake_radii_m.x;
+  float top = skybake_radii_m.y;
+  int k = skybake_irradiance_rows.y;
+  float r_low = skybakeIrradianceRowRadius(y.i0, size_r, bottom, top, 1);
+  float r_high = skybakeIrradianceRowRadius(y.i1, size_r, bottom, top, 1);
+  float low = skybakeOpticalDepthToTop(r_low, 1.0)[k];
+  float high = skybakeOpticalDepthToTop(r_high, 1.0)[k];
+  float here = skybakeOpticalDepthToTop(clamp(r, r_low, r_high), 1.0)[k];
+  if (!(low > 0.0 && high > 0.0 && here > 0.0)) return 1.0;
+  float blend = exp((1.0 - y.w1) * log(low) + y.w1 * log(high));
+  return clamp(here / blend, 1.0 / SKYBAKE_MAX_IRRADIANCE_DEPTH_FACTOR, SKYBAKE_MAX_IRRADIANCE_DEPTH_FACTOR);
+}
+
 // Sky irradiance on a horizontal surface at radius r: across mu_s as
-// skybakeIrradianceRow, geometric in r where both rows are positive; between
-// the last row below the top and the top, the lower row's times the
+// skybakeIrradianceRow, geometric in r where both rows are positive (with
+// cosine rows, of the irradiance over the vertical optical depth above);
+// between the last row below the top and the top, the lower row's times the
 // vertical optical depth above r over that above the row
 // (TableSampler::irradiance).
 vec4 skybakeIrradianceTable(float r, float mu_s) {
@@ -241,13 +264,15 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
   int size_r = skybake_table_2d_size.w;
   float bottom = skybake_radii_m.x;
   float top = skybake_radii_m.y;
-  float u = skybakeTextureCoordFromUnitRange(skybakeMuSUnitCoord(mu_s), size_mu_s);
-  float v = skybakeIrradianceCoordR(r, bottom, top, size_r);
+  int cosine_rows = skybake_irradiance_rows.x;
+  float axis_mu_s = skybakeIrradianceSunCosine(mu_s, min(r, top), bottom, skybake_irradiance_sun.x, cosine_rows);
+  float u = skybakeTextureCoordFromUnitRange(skybakeMuSUnitCoord(axis_mu_s), size_mu_s);
+  float v = skybakeIrradianceCoordR(r, bottom, top, size_r, cosine_rows);
   SkybakeAxisLerp x = skybakeAxisLerp(u, size_mu_s);
   SkybakeAxisLerp y = skybakeAxisLerp(v, size_r);
   vec4 low = skybakeIrradianceRow(x, y.i0);
   if (y.i1 == size_r - 1 && y.i1 > y.i0) {
-    float row_r = bottom + float(y.i0) / float(size_r - 1) * (top - bottom);
+    float row_r = skybakeIrradianceRowRadius(y.i0, size_r, bottom, top, cosine_rows);
     vec4 above_r = skybakeOpticalDepthToTop(min(r, top), 1.0);
     vec4 above_row = skybakeOpticalDepthToTop(row_r, 1.0);
     // The floor keeps the discarded quotient finite where no air is above
@@ -257,7 +282,9 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
     return low * thinning * skybakeNightScale(mu_s);
   }
   vec4 high = skybakeIrradianceRow(x, y.i1);
-  return skybakeBlendGeometricWherePositive(low, high, y.w1, 1.0) * skybakeNightScale(mu_s);
+  vec4 blend = skybakeBlendGeometricWherePositive(low, high, y.w1, 1.0);
+  if (cosine_rows != 0 && y.i1 > y.i0) blend *= skybakeIrradianceDepthOverItsBlend(r, size_r, y);
+  return blend * skybakeNightScale(mu_s);
 }
 
 // ---- the multiple-scattering shape f(r, nu), sr^-1 per channel ----

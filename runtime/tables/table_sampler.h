@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include "data_formats/bake_file/bake_file.h"
 #include "data_formats/parameterization/texture_mapping.h"
@@ -37,6 +38,15 @@ struct AxisLerp {
   float w1;
   static AxisLerp of(const kernel::SkybakeAxisLerp& k) { return {k.i0, k.i1, static_cast<float>(k.w1)}; }
 };
+
+// The most by which the vertical optical depth above a point may differ
+// from its geometric blend between the irradiance rows either side
+// (TableSampler::irradiance, IrradianceRows::CosineOverDepth). Where the
+// depth falls off exponentially the two are equal; the aerosol layer and the
+// top bend it by a few percent between the default rows. A larger factor
+// would come from a forged or broken optical-depth table and is not
+// allowed to scale the sky's light without bound.
+inline constexpr float kMaxIrradianceDepthFactor = 2.0f;
 
 inline AxisLerp axisLerpFromTextureCoord(double u, int size) { return AxisLerp::of(kernel::skybakeAxisLerp(u, size)); }
 
@@ -154,7 +164,7 @@ class TableSampler {
         H_(domain.horizonToTopDistance()),
         night_(night),
         night_4d_(domain.scattering_mu_s_coord_min <= 0.0),
-        irradiance_horizon_unit_(muSUnitCoord(domain, 0.0)) {}
+        irradiance_horizon_units_(irradianceHorizonUnits(domain, sizes)) {}
 
   const AtmosphereDomain& domain() const { return domain_; }
   const NightContinuation& night() const { return night_; }
@@ -266,20 +276,29 @@ class TableSampler {
   }
 
   // Sky irradiance on a horizontal surface at radius r.
-  // Across mu_s: linear with the sun above the horizon. Below it, where the
-  // irradiance falls about tenfold per degree of depression, geometric (both
-  // neighbours positive): linear read up to 6 % high between texels 0.5 deg
-  // apart in twilight, geometric within 0.5 % (docs/MEASUREMENTS.md). The
-  // interval holding the horizon takes the geometric blend in proportion to
-  // its part below it, so the lookup is continuous for any table size.
-  // Across r: geometric, as irradiance falls off with altitude roughly
-  // exponentially (scale heights of kilometres; linear between rows 4 km
-  // apart is 3 % high midway), or linear where a neighbour is 0 (night).
-  // Between the last row below the top and the top, where the sky above
-  // thins to nothing and the top row holds 0, the lower row's irradiance
-  // scaled by the vertical optical depth above r over that above the row: a
-  // thin layer's sky glows in proportion to the air in it. Linear in r read
-  // 27 % high 100 m below the default Earth's top, this within 8 %.
+  // Across mu_s: linear with the sun above the ground's horizon. Below it,
+  // where the irradiance falls about tenfold per degree of depression,
+  // geometric (both neighbours positive): linear read up to 6 % high between
+  // texels 0.5 deg apart in twilight, geometric within 0.5 %
+  // (docs/MEASUREMENTS.md). The interval holding the horizon takes the
+  // geometric blend in proportion to its part below it, so the lookup is
+  // continuous for any table size. With IrradianceRows::CosineOverDepth
+  // each row's sun axis is relative to its own horizon
+  // (skybakeIrradianceSunCosine), so that every row's own sunset falls on
+  // one texel, and the ground's horizon sits higher on a higher row's axis.
+  // Across r: the irradiance over the vertical optical depth above (of
+  // domain_.irradiance_depth_channel) geometrically, times the depth above
+  // r (with IrradianceRows::Linear, the irradiance alone): exact where the
+  // sky glows in proportion to the air above it, toward the top and wherever
+  // both fall off alike, and it follows the aerosol layer; linear where a
+  // neighbour is 0 (night). On rows linear in altitude the irradiance alone
+  // read 6 % low midway between rows 4 km apart below the top, and 4 % high
+  // 2 km up at 680 nm (docs/MEASUREMENTS.md, "The sky irradiance across
+  // altitude"). Between the last row below the top and the top, where the
+  // sky above thins to nothing and the top row holds 0, the lower row's
+  // irradiance scaled by the vertical optical depth above r over that above
+  // the row, per channel: a thin layer's sky glows in proportion to the air
+  // in it.
   Spectrum irradiance(const Texture2D& irradiance, const Texture2D& optical_depth, double r, double mu_s) const {
     const TextureCoord2D uv = irradianceCoordFromRMuS(domain_, sizes_.irradiance_mu_s, sizes_.irradiance_r, r, mu_s);
     const AxisLerp x = axisLerpFromTextureCoord(uv.u, irradiance.width);
@@ -294,6 +313,9 @@ class TableSampler {
     for (int c = 0; c < kMaxChannels; ++c) {
       out[c] = kernel_float::skybakeBlendGeometricWherePositive(low[c], high[c], y.w1, 1.0f);
     }
+    if (domain_.irradiance_rows == IrradianceRows::CosineOverDepth && y.i1 > y.i0) {
+      out *= depthOverItsBlend(optical_depth, r, irradiance.height, y);
+    }
     return out * nightScale(mu_s);
   }
   // The sky irradiance on the ground (the table's lowest row), blended
@@ -305,11 +327,28 @@ class TableSampler {
   }
 
  private:
+  // Each irradiance row's unit sun coordinate of the ground's horizon
+  // (mu_s = 0): below it the sky's light falls steepest, in the planet's
+  // shadow or, higher up, in the sunlight's grazing path. With rows on
+  // their own horizons (IrradianceRows::CosineOverDepth) it moves up the
+  // axis with the row's altitude.
+  static std::vector<double> irradianceHorizonUnits(const AtmosphereDomain& domain, const TextureSizes& sizes) {
+    std::vector<double> units(static_cast<size_t>(std::max(sizes.irradiance_r, 0)));
+    const int cosine_rows = domain.irradiance_rows == IrradianceRows::CosineOverDepth ? 1 : 0;
+    for (int i_r = 0; i_r < sizes.irradiance_r; ++i_r) {
+      const double r = kernel::skybakeIrradianceRowRadius(i_r, sizes.irradiance_r, domain.bottom_radius_m,
+                                                          domain.top_radius_m, cosine_rows);
+      units[i_r] = muSUnitCoord(
+          domain, kernel::skybakeIrradianceSunCosine(0.0, r, domain.bottom_radius_m, domain.mu_s_min, cosine_rows));
+    }
+    return units;
+  }
+
   // Row i_r of the irradiance table at the mu_s position x (see irradiance).
   Spectrum irradianceRow(const Texture2D& irradiance, const AxisLerp& x, int i_r) const {
     const Spectrum a = irradiance.at(x.i0, i_r), b = irradiance.at(x.i1, i_r);
     const double below_horizon =
-        kernel::skybakeBelowHorizonShare(irradiance_horizon_unit_ * (irradiance.width - 1), x.i1);
+        kernel::skybakeBelowHorizonShare(irradiance_horizon_units_[i_r] * (irradiance.width - 1), x.i1);
     // Above the horizon the linear blend alone, in float (vectorized).
     if (below_horizon <= 0.0) return a + (b - a) * x.w1;
     Spectrum out;
@@ -317,6 +356,25 @@ class TableSampler {
       out[c] = kernel_float::skybakeBlendGeometricWherePositive(a[c], b[c], x.w1, static_cast<float>(below_horizon));
     }
     return out;
+  }
+  // The vertical optical depth above r over its geometric blend between the
+  // rows y.i0 and y.i1 (below the top), in the depth channel: what turns the
+  // irradiance's geometric blend into that of the irradiance over the depth
+  // (irradiance). 1 where a row has no air above it; within
+  // [1 / kMaxIrradianceDepthFactor, kMaxIrradianceDepthFactor].
+  float depthOverItsBlend(const Texture2D& optical_depth, double r, int rows, const AxisLerp& y) const {
+    const int cosine = 1;
+    const int k = domain_.irradiance_depth_channel;
+    const double r_low =
+        kernel::skybakeIrradianceRowRadius(y.i0, rows, domain_.bottom_radius_m, domain_.top_radius_m, cosine);
+    const double r_high =
+        kernel::skybakeIrradianceRowRadius(y.i1, rows, domain_.bottom_radius_m, domain_.top_radius_m, cosine);
+    const float low = opticalDepthToTop(optical_depth, r_low, 1.0)[k];
+    const float high = opticalDepthToTop(optical_depth, r_high, 1.0)[k];
+    const float here = opticalDepthToTop(optical_depth, std::clamp(r, r_low, r_high), 1.0)[k];
+    if (!(low > 0.0f && high > 0.0f && here > 0.0f)) return 1.0f;
+    const float blend = std::exp((1.0f - y.w1) * std::log(low) + y.w1 * std::log(high));
+    return std::clamp(here / blend, 1.0f / kMaxIrradianceDepthFactor, kMaxIrradianceDepthFactor);
   }
   // The vertical optical depth above r over that above r_row (r_row < top),
   // per channel: 1 at r_row, 0 at the top. Kept within [0, 1] against the
@@ -336,8 +394,8 @@ class TableSampler {
   ScatteringSizes scattering_sizes_;
   double H_;  // domain_.horizonToTopDistance()
   NightContinuation night_;
-  bool night_4d_;                   // the 4D tables' sun axis reaches the domain's lowest sun
-  double irradiance_horizon_unit_;  // the irradiance table's unit mu_s coordinate of the horizon
+  bool night_4d_;                                 // the 4D tables' sun axis reaches the domain's lowest sun
+  std::vector<double> irradiance_horizon_units_;  // irradianceHorizonUnits
 };
 
 }  // namespace skybake

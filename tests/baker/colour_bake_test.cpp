@@ -258,9 +258,11 @@ TEST(ColourBakeFile, VersionThreeFileReadsAsWavelengths) {
   fs::remove(v4);
   EXPECT_EQ(read.format_version, 3);
   EXPECT_EQ(read.contents.atmosphere.channel_kind, ChannelKind::Wavelengths);
-  // The relabelled file states Bruneton's sun axis, as version 3 files have.
+  // The relabelled file states Bruneton's sun axis, as version 3 files have,
+  // and their shape and irradiance rows.
   BakeContents expected = bake.file.contents;
   expected.domain.sun_axis = SunAxisMapping::DistanceToTop;
+  expected.domain.irradiance_rows = IrradianceRows::Linear;
   expected.multiple_shape_weight = MultipleShapeWeight::ColumnShare;
   EXPECT_EQ(read.contents, expected);
   EXPECT_EQ(read.tables.single_rayleigh.texels, bake.file.tables.single_rayleigh.texels);

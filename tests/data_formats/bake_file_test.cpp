@@ -77,15 +77,30 @@ class BakeFileTest : public ::testing::Test {
 };
 
 // Tables divided by version 7's multiple-scattering shape (a version 7
-// file read and written again) are written as version 7, so that a reader
-// multiplies them back by the shape they were divided by.
+// file read and written again, whose irradiance rows are linear too) are
+// written as version 7, so that a reader multiplies them back by the shape
+// they were divided by.
 TEST_F(BakeFileTest, TablesOnTheUnthinnedShapeAreWrittenAsVersion7) {
   BakeFile written = syntheticBake();
   written.contents.multiple_shape_weight = MultipleShapeWeight::ColumnShare;
+  written.contents.domain.irradiance_rows = IrradianceRows::Linear;
   const fs::path path = dir / "version7.exr";
   writeBakeFile(path, written);
   const BakeFile read = readBakeFile(path);
   EXPECT_EQ(read.format_version, kFirstThinnedShapeFormatVersion - 1);
+  EXPECT_TRUE(read.contents == written.contents);
+}
+
+// An irradiance table on linear rows (a version 8 file read and written
+// again) is written as version 8, so that a reader places its rows there.
+TEST_F(BakeFileTest, LinearIrradianceRowsAreWrittenAsVersion8) {
+  BakeFile written = syntheticBake();
+  written.contents.domain.irradiance_rows = IrradianceRows::Linear;
+  const fs::path path = dir / "version8.exr";
+  writeBakeFile(path, written);
+  const BakeFile read = readBakeFile(path);
+  EXPECT_EQ(read.format_version, kFirstCosineIrradianceRowsFormatVersion - 1);
+  EXPECT_EQ(read.contents.domain.irradiance_rows, IrradianceRows::Linear);
   EXPECT_TRUE(read.contents == written.contents);
 }
 

@@ -28,9 +28,10 @@ TEST(BakeFileVersion2, WholeDomainFileReadsAsItsConfigSays) {
   EXPECT_EQ(bake.contents.sizes, config.sizes);
   EXPECT_EQ(bake.contents.outputs, config.scene);
   // The stated ends are the whole domain's to rounding, and are read as them,
-  // on Bruneton's sun axis.
+  // on Bruneton's sun axis, with irradiance rows linear in altitude.
   AtmosphereDomain whole = AtmosphereDomain::fromParameters(config.atmosphere);
   whole.sun_axis = SunAxisMapping::DistanceToTop;
+  whole.irradiance_rows = IrradianceRows::Linear;
   EXPECT_EQ(bake.contents.domain, whole);
   EXPECT_EQ(bake.orders_computed, 3);
   EXPECT_EQ(bake.tables.optical_depth.texels.size(), 16u * 4u);

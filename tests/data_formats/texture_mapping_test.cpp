@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "data_formats/angles.h"
 #include "data_formats/config/config.h"
 #include "data_formats/parameterization/texture_mapping.h"
 
@@ -105,13 +106,55 @@ TEST_F(TextureMapping, TransmittanceAndIrradianceTexelCentresRoundTrip) {
       EXPECT_NEAR(uv.v, centre(i_r, s.transmittance_r), kCoordTolerance);
     }
   }
-  for (int i_r = 0; i_r < s.irradiance_r; ++i_r) {
-    for (int i_mu_s = 0; i_mu_s < s.irradiance_mu_s; ++i_mu_s) {
-      const RMuS rm = irradianceTexelConfig(domain, s.irradiance_mu_s, s.irradiance_r, i_mu_s, i_r);
-      const TextureCoord2D uv = irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, rm.r, rm.mu_s);
-      EXPECT_NEAR(uv.u, centre(i_mu_s, s.irradiance_mu_s), kCoordTolerance);
-      EXPECT_NEAR(uv.v, centre(i_r, s.irradiance_r), kCoordTolerance);
+  // The irradiance table's rows and suns, as version 9 places them and as
+  // earlier versions did.
+  AtmosphereDomain linear_rows = domain;
+  linear_rows.irradiance_rows = IrradianceRows::Linear;
+  for (const AtmosphereDomain& d : {domain, linear_rows}) {
+    for (int i_r = 0; i_r < s.irradiance_r; ++i_r) {
+      for (int i_mu_s = 0; i_mu_s < s.irradiance_mu_s; ++i_mu_s) {
+        const RMuS rm = irradianceTexelConfig(d, s.irradiance_mu_s, s.irradiance_r, i_mu_s, i_r);
+        const TextureCoord2D uv = irradianceCoordFromRMuS(d, s.irradiance_mu_s, s.irradiance_r, rm.r, rm.mu_s);
+        EXPECT_NEAR(uv.u, centre(i_mu_s, s.irradiance_mu_s), kCoordTolerance);
+        EXPECT_NEAR(uv.v, centre(i_r, s.irradiance_r), kCoordTolerance);
+      }
     }
+  }
+}
+
+// Version 9's irradiance rows: cosine spaced (the Earth's 16 rows: the
+// first 0.66 km up, the last but one 59.34 km), and each row's sun axis
+// puts that row's own sunset on the texel of the horizon.
+TEST_F(TextureMapping, IrradianceRowsAreCosineSpacedOnTheirOwnHorizon) {
+  const TextureSizes& s = config.sizes;
+  ASSERT_EQ(domain.irradiance_rows, IrradianceRows::CosineOverDepth);
+  const double thickness_m = domain.top_radius_m - domain.bottom_radius_m;
+  const int last = s.irradiance_r - 1;
+  auto altitude = [&](int i_r) {
+    return irradianceTexelConfig(domain, 1, s.irradiance_r, 0, i_r).r - domain.bottom_radius_m;
+  };
+  EXPECT_EQ(altitude(0), 0.0);
+  EXPECT_NEAR(altitude(last), thickness_m, 1e-6);
+  EXPECT_NEAR(altitude(1), thickness_m * (1.0 - std::cos(kPi / last)) / 2.0, 1e-6);
+  EXPECT_NEAR(altitude(last - 1) / thickness_m, (1.0 + std::cos(kPi / last)) / 2.0, 1e-9);
+  // Each row's own sunset sits where the ground's horizon does on the sun
+  // axis; the axis's ends (the lowest sun, the zenith) stay.
+  const double ground_horizon_u =
+      irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, domain.bottom_radius_m, 0.0).u;
+  for (double altitude_m : {2000.0, 30000.0, 59000.0}) {
+    const double r = domain.bottom_radius_m + altitude_m;
+    const double own_horizon = -std::sqrt(1.0 - std::pow(domain.bottom_radius_m / r, 2.0));
+    auto u = [&](double mu_s) { return irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, r, mu_s).u; };
+    EXPECT_NEAR(u(own_horizon), ground_horizon_u, 1e-12) << altitude_m;
+    EXPECT_LT(u(0.0), 1.0) << altitude_m;
+    EXPECT_GT(u(0.0), ground_horizon_u) << altitude_m;
+    EXPECT_NEAR(u(1.0),
+                irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, domain.bottom_radius_m, 1.0).u,
+                1e-12);
+    EXPECT_NEAR(
+        u(domain.mu_s_min),
+        irradianceCoordFromRMuS(domain, s.irradiance_mu_s, s.irradiance_r, domain.bottom_radius_m, domain.mu_s_min).u,
+        1e-12);
   }
 }
 
