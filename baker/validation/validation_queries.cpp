@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "data_formats/angles.h"
+#include "data_formats/parameterization/ray_sphere.h"
 #include "data_formats/queries/csv_table.h"
 
 namespace skybake {
@@ -56,17 +57,17 @@ QuerySet makeSet(const std::string& name, const std::vector<double>& altitudes, 
 
 QuerySet standardQuerySet(double bottom_radius_m, double top_radius_m) {
   const double thickness = top_radius_m - bottom_radius_m;
+  const std::vector<double> cameras = {
+      0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m};
   const std::vector<double> suns = {0.0,  30.0,  60.0, 75.0,  85.0,  88.0,  90.0, 92.0,
                                     95.0, 100.0, 98.0, 102.0, 104.0, 106.0, 108.0};
-  QuerySet set = makeSet(
-      "standard", {0.0, 1000.0, 10000.0, 30000.0, thickness - kJustUnderTop_m, thickness + kSpaceAltitudeAboveTop_m},
-      suns, {0.0, 30.0, 60.0, 75.0, 84.0, 88.0, 89.5, 90.5, 92.0, 96.0, 120.0, 170.0},
-      {100.0, 106.0, 110.0, 120.0, 150.0, 180.0}, {0.0, 90.0, 180.0}, thickness, true);
+  QuerySet set =
+      makeSet("standard", cameras, suns, {0.0, 30.0, 60.0, 75.0, 84.0, 88.0, 89.5, 90.5, 92.0, 96.0, 120.0, 170.0},
+              {100.0, 106.0, 110.0, 120.0, 150.0, 180.0}, {0.0, 90.0, 180.0}, thickness, true);
+  // makeSet asked for the irradiance at every camera inside the atmosphere.
   std::vector<double> irradiance_altitudes;
-  for (const IrradianceQuery& q : set.irradiance) {
-    if (irradiance_altitudes.empty() || irradiance_altitudes.back() != q.altitude_m) {
-      irradiance_altitudes.push_back(q.altitude_m);
-    }
+  for (double altitude : cameras) {
+    if (altitude <= thickness) irradiance_altitudes.push_back(altitude);
   }
   for (double altitude : {kWeakIrradianceAltitudes[0], kWeakIrradianceAltitudes[1] * thickness,
                           kWeakIrradianceAltitudes[2] * thickness}) {
@@ -75,7 +76,8 @@ QuerySet standardQuerySet(double bottom_radius_m, double top_radius_m) {
   }
   for (double altitude : irradiance_altitudes) {
     // The sun on this altitude's own horizon, below the ground's.
-    const double sunset_deg = 90.0 + std::acos(bottom_radius_m / (bottom_radius_m + altitude)) * 180.0 / kPi;
+    const double sunset_deg =
+        degreesFromRadians(std::acos(tangentZenithCosine(bottom_radius_m + altitude, bottom_radius_m)));
     for (double after_deg : kAfterOwnSunset_deg) set.irradiance.push_back({altitude, sunset_deg + after_deg});
   }
   return set;

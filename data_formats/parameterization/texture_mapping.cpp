@@ -49,13 +49,13 @@ RMu transmittanceTexelConfig(const AtmosphereDomain& d, int size_mu, int size_r,
 }
 
 RMuS irradianceTexelConfig(const AtmosphereDomain& d, int size_mu_s, int size_r, int i_mu_s, int i_r) {
-  const bool cosine_rows = d.irradiance_rows == IrradianceRows::CosineOverDepth;
+  const int cosine_rows = d.irradianceCosineRows();
   const double r = kernel::skybakeIrradianceRowRadius(i_r, size_r, d.bottom_radius_m, d.top_radius_m, cosine_rows);
   // The axis's cosine, turned back into the sun's at this row
   // (skybakeIrradianceSunCosine inverted).
   const double axis_mu_s = muSFromIrradianceTexel(d, size_mu_s, i_mu_s);
   const double mu_h = kernel::skybakeTangentZenithCosine(r, d.bottom_radius_m);
-  if (!cosine_rows || !(d.mu_s_min < mu_h)) return {r, axis_mu_s};
+  if (cosine_rows == 0 || !(d.mu_s_min < mu_h)) return {r, axis_mu_s};
   const double mu_s =
       axis_mu_s >= 0.0 ? mu_h + axis_mu_s * (1.0 - mu_h) : mu_h + axis_mu_s * (d.mu_s_min - mu_h) / d.mu_s_min;
   return {r, clampCosine(mu_s)};

@@ -103,6 +103,8 @@ struct AtmosphereDomain {
   // version) and the channel they are blended over (irradianceDepthChannel).
   IrradianceRows irradiance_rows = IrradianceRows::CosineOverDepth;
   int irradiance_depth_channel = 0;
+  // irradiance_rows as the kernel's cosine_rows flag (1 CosineOverDepth, 0 Linear).
+  int irradianceCosineRows() const { return irradiance_rows == IrradianceRows::CosineOverDepth ? 1 : 0; }
   bool operator==(const AtmosphereDomain&) const = default;
 
   // The whole domain: every altitude, every sun up to sun.max_zenith_deg.
@@ -304,7 +306,7 @@ inline double scatteringCoordMuAtDistance(const AtmosphereDomain& d, int size_mu
 // degrees, which a coordinate linear in mu_s would straddle with one texel.
 inline TextureCoord2D irradianceCoordFromRMuS(const AtmosphereDomain& d, int size_mu_s, int size_r, double r,
                                               double mu_s) {
-  const int cosine_rows = d.irradiance_rows == IrradianceRows::CosineOverDepth ? 1 : 0;
+  const int cosine_rows = d.irradianceCosineRows();
   const double axis_mu_s =
       kernel::skybakeIrradianceSunCosine(mu_s, std::min(r, d.top_radius_m), d.bottom_radius_m, d.mu_s_min, cosine_rows);
   return {textureCoordFromUnitRange(muSUnitCoord(d, axis_mu_s), size_mu_s),

@@ -129,7 +129,7 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   b.outputs[1] = sky.outputs().ground_irradiance ? 1 : 0;
   b.outputs[2] = sky.channelCount();
   b.outputs[3] = sky.channels().kind == ChannelKind::CieXyz ? 1 : 0;
-  b.irradiance_rows[0] = d.irradiance_rows == IrradianceRows::CosineOverDepth ? 1 : 0;
+  b.irradiance_rows[0] = d.irradianceCosineRows();
   b.irradiance_rows[1] = d.irradiance_depth_channel;
   b.irradiance_sun[0] = static_cast<float>(d.mu_s_min);
   put(b.sun_irradiance, a.sun_irradiance);

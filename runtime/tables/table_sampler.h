@@ -334,7 +334,7 @@ class TableSampler {
   // axis with the row's altitude.
   static std::vector<double> irradianceHorizonUnits(const AtmosphereDomain& domain, const TextureSizes& sizes) {
     std::vector<double> units(static_cast<size_t>(std::max(sizes.irradiance_r, 0)));
-    const int cosine_rows = domain.irradiance_rows == IrradianceRows::CosineOverDepth ? 1 : 0;
+    const int cosine_rows = domain.irradianceCosineRows();
     for (int i_r = 0; i_r < sizes.irradiance_r; ++i_r) {
       const double r = kernel::skybakeIrradianceRowRadius(i_r, sizes.irradiance_r, domain.bottom_radius_m,
                                                           domain.top_radius_m, cosine_rows);

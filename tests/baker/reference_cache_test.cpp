@@ -262,7 +262,9 @@ TEST(StandardSet, AsksForSkyIrradianceWhereItsTableIsWeakest) {
   const std::vector<double>& at_30_km = suns_at[30000.0];
   const double sunset_deg = 90.0 + std::acos(bottom_m / (bottom_m + 30e3)) * 180.0 / kPi;
   EXPECT_NEAR(sunset_deg, 95.56, 0.01);
-  EXPECT_NE(std::find(at_30_km.begin(), at_30_km.end(), sunset_deg + 0.25), at_30_km.end());
+  EXPECT_NE(std::find_if(at_30_km.begin(), at_30_km.end(),
+                         [&](double sun) { return std::abs(sun - (sunset_deg + 0.25)) < 1e-9; }),
+            at_30_km.end());
   // The radiance queries are the ones they were.
   EXPECT_EQ(set.radiance.size(), 3150u);
 }
