@@ -96,7 +96,8 @@ Sky::Sky(BakeFile bake)
       mie_phase_(bake_.contents.atmosphere.mie_phase_g),
       ranges_(bakedRangesOf(sampler_.domain())),
       baked_mu_s_min_(std::cos(radiansFromDegrees(ranges_.sun_zenith_max_deg))),
-      baked_mu_s_max_(std::cos(radiansFromDegrees(ranges_.sun_zenith_min_deg))) {}
+      baked_mu_s_max_(std::cos(radiansFromDegrees(ranges_.sun_zenith_min_deg))),
+      wavelength_groups_to_xyz_(wavelengthGroupsToXyzOf(bake_.contents)) {}
 
 double Sky::luminance(const Spectrum& value) const {
   requireOneLaneGroup("luminance(Spectrum)");

@@ -323,6 +323,13 @@ class Sky {
   // geometry conventions above for lookups outside them).
   const BakedRanges& bakedRanges() const { return ranges_; }
   const BakeTables& tables() const { return bake_.tables; }
+  // A colour bake's wavelength groups (BakeContents::wavelength_groups):
+  // what each adds to X, Y, Z (ColourWavelengths) and its optical depths.
+  // Empty for any other bake, and for a colour bake read from a file before
+  // format version 10, whose twilight single scattering comes from its
+  // X, Y, Z atmosphere.
+  const std::vector<WavelengthGroupToXyz>& wavelengthGroupsToXyz() const { return wavelength_groups_to_xyz_; }
+  const std::vector<Texture2D>& wavelengthOpticalDepth() const { return bake_.wavelength_optical_depth; }
 
  private:
   // In-scattering over [0, d - shadow] of the ray (r, mu) as the difference of
@@ -386,6 +393,12 @@ class Sky {
   // `ray` with a sun outside the baked sun angles moved to the nearest one,
   // as the tables take it (see the geometry conventions above).
   SunlitRay withBakedSun(const SunlitRay& ray) const;
+  // integrateSingleScattering of `ray` with this bake's tables: a colour
+  // bake's per wavelength where the file has its wavelengths.
+  SingleScattering integratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, int segments,
+                                              const MoonAlongRay* moon = nullptr) const;
+  // wavelengthGroupsToXyz() of a bake with these contents.
+  static std::vector<WavelengthGroupToXyz> wavelengthGroupsToXyzOf(const BakeContents& contents);
   void blendInIntegratedSingleScattering(const SunlitRay& ray, double t_start, double t_end, double weight,
                                          SingleScattering& s) const;
 
@@ -417,7 +430,8 @@ class Sky {
   MultipleScatteringPhase multiple_shape_;  // what multiple scattering is stored divided by
   CornetteShanksPhase mie_phase_;           // the atmosphere's Mie phase function
   BakedRanges ranges_;
-  double baked_mu_s_min_, baked_mu_s_max_;  // ranges_' sun angles as zenith cosines
+  double baked_mu_s_min_, baked_mu_s_max_;                      // ranges_' sun angles as zenith cosines
+  std::vector<WavelengthGroupToXyz> wavelength_groups_to_xyz_;  // wavelengthGroupsToXyz
 };
 
 template <typename Lookup, size_t Parts>

@@ -70,11 +70,10 @@ RadianceAndTransmittance Sky::eclipsedSkyRadiance(const glm::dvec3& camera_given
     const AtmosphereRay& s = p.start;
     const SunlitRay ray{s.r, s.mu, p.mu_s, p.nu, s.ends_on_ground};
     const MoonAlongRay along{moon, s.origin, s.dir, sun_dir, atmosphere().sun_angular_radius_rad};
-    const Texture2D& depth = bake_.tables.optical_depth;
-    const SingleScattering with_moon = integrateSingleScattering(sampler_, depth, atmosphere(), ray, p.lit_from_m,
-                                                                 s.length, kEclipseSingleScatteringSegments, &along);
-    const SingleScattering without = integrateSingleScattering(sampler_, depth, atmosphere(), ray, p.lit_from_m,
-                                                               s.length, kEclipseSingleScatteringSegments);
+    const SingleScattering with_moon =
+        integratedSingleScattering(ray, p.lit_from_m, s.length, kEclipseSingleScatteringSegments, &along);
+    const SingleScattering without =
+        integratedSingleScattering(ray, p.lit_from_m, s.length, kEclipseSingleScatteringSegments);
     p.single.rayleigh *= eclipsedShare(with_moon.rayleigh, without.rayleigh);
     p.single.mie *= eclipsedShare(with_moon.mie, without.mie);
   }
@@ -117,11 +116,8 @@ RadianceAndTransmittance Sky::eclipsedRadianceToPoint(const glm::dvec3& camera_g
   const double nu = clampCosine(glm::dot(view_dir, sun_dir));
   const SunlitRay ray{s.r, s.mu, mu_s, nu, s.ends_on_ground};
   const MoonAlongRay along{moon, s.origin, s.dir, sun_dir, atmosphere().sun_angular_radius_rad};
-  const Texture2D& depth = bake_.tables.optical_depth;
-  const SingleScattering with_moon =
-      integrateSingleScattering(sampler_, depth, atmosphere(), ray, 0.0, d, kEclipseSingleScatteringSegments, &along);
-  const SingleScattering without =
-      integrateSingleScattering(sampler_, depth, atmosphere(), ray, 0.0, d, kEclipseSingleScatteringSegments);
+  const SingleScattering with_moon = integratedSingleScattering(ray, 0.0, d, kEclipseSingleScatteringSegments, &along);
+  const SingleScattering without = integratedSingleScattering(ray, 0.0, d, kEclipseSingleScatteringSegments);
   auto withPhases = [&](const SingleScattering& x) {
     return x.rayleigh * static_cast<float>(rayleighPhase(nu)) + x.mie * static_cast<float>(mie_phase_(nu));
   };

@@ -79,8 +79,7 @@ Sky::SkyRadianceParts Sky::skyRadianceParts(const glm::dvec3& camera_given, cons
 void Sky::groundRayRadiance(const SunlitRay& ray, double t_start, double t_end, const SunlitRay& from_start,
                             const Spectrum& to_start, SingleScattering& single, Spectrum& multiple) const {
   const BakeTables& t = bake_.tables;
-  single = integrateSingleScattering(sampler_, t.optical_depth, atmosphere(), withBakedSun(ray), t_start, t_end,
-                                     kGroundRaySubintervals);
+  single = integratedSingleScattering(withBakedSun(ray), t_start, t_end, kGroundRaySubintervals);
   const SunlitRay baked_from_start = withBakedSun(from_start);
   const RadianceAndTransmittance tabulated_density = directSegmentRadiance(
       sampler_, t, atmosphere(), multiple_shape_, baked_from_start.r, baked_from_start.mu, baked_from_start.mu_s,

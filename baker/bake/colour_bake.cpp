@@ -111,6 +111,9 @@ BakeOutput bakeCieXyz(const BakeConfig& settled, int threads, ProgressSink& prog
       xyz.multiple_density = zeroedLike(t.multiple_density);
       optical_depths.assign(t.optical_depth.texels.size() * static_cast<size_t>(wavelengths), 0.0);
     }
+    // Kept as the pass stored it: twilight lookups integrate single
+    // scattering per wavelength from it (FORMAT.md "Colour bakes").
+    out.file.wavelength_optical_depth.push_back(t.optical_depth);
     for (size_t i = 0; i < t.optical_depth.texels.size(); ++i) {
       for (int l = 0; l < lanes; ++l) {
         optical_depths[i * static_cast<size_t>(wavelengths) + first_wavelength + l] = t.optical_depth.texels[i][l];

@@ -92,6 +92,10 @@ void runInfo(const std::string& path) {
              c.precision == StoragePrecision::Half ? "half" : "float", c.stored_fraction_bits, kFloatFractionBits,
              std::ldexp(1.0, -(c.stored_fraction_bits + 1)));
   fmt::print("optical depth: {} mu x {} r\n", s.transmittance_mu, s.transmittance_r);
+  if (!c.wavelength_groups.empty()) {
+    fmt::print("               and per wavelength ({} wavelengths, for twilight single scattering)\n",
+               c.atmosphere.wavelengths_nm.size());
+  }
   fmt::print("irradiance:    {} mu_s x {} r\n", s.irradiance_mu_s, s.irradiance_r);
   fmt::print("scattering:    {} r x {} mu x {} mu_s x {} nu (the density: {} mu)\n", s.scattering_r, s.scattering_mu,
              s.scattering_mu_s, s.scattering_nu, c.density_view_size);

@@ -127,9 +127,12 @@ ColourErrorReport compareColourWithReference(const AtmosphereParameters& a, cons
                                               k * (kColourReferenceLast_nm - kColourReferenceFirst_nm) /
                                                   (kColourReferenceWavelengthCount - 1));
   }
-  std::map<std::pair<int, int>, std::pair<std::string, Samples>> samples;  // (quantity, band) order
-  auto add = [&](const std::string& quantity, SunBand band, const colour::Xyz& value, const CachedReference& r) {
-    auto& [name, s] = samples[{quantityOrder(quantity), static_cast<int>(band)}];
+  // (quantity, row) order; row 2 * band, and the last degree's after the low sun's.
+  std::map<std::pair<int, int>, std::pair<std::string, Samples>> samples;
+  const int last_degree_row = 2 * static_cast<int>(SunBand::LowSun) + 1;
+  auto addToRow = [&](const std::string& quantity, int row, SunBand band, const colour::Xyz& value,
+                      const CachedReference& r) {
+    auto& [name, s] = samples[{quantityOrder(quantity), row}];
     name = quantity;
     const colour::Xyz ref = xyzOf(r.value);
     if (!(ref.y >= smallestComparedY(band))) {
@@ -141,19 +144,28 @@ ColourErrorReport compareColourWithReference(const AtmosphereParameters& a, cons
     s.reference_luminance_errors.push_back(r.standard_error.y / ref.y);
     s.reference_ciede2000.push_back(referenceColourError(ref, xyzOf(r.half_difference)));
   };
+  auto add = [&](const std::string& quantity, double sun_zenith_deg, const colour::Xyz& value,
+                 const CachedReference& r) {
+    const SunBand band = sunBand(sun_zenith_deg);
+    addToRow(quantity, 2 * static_cast<int>(band), band, value, r);
+    if (band == SunBand::LowSun && sun_zenith_deg >= kLastDegreeFromZenith_deg) {
+      addToRow(quantity, last_degree_row, band, value, r);
+    }
+  };
   for (size_t i = 0; i < queries.radiance.size(); ++i) {
     const std::string quantity = radianceQuantity(a, queries.radiance[i]);
     if (quantity.empty()) continue;
-    add(quantity, sunBand(queries.radiance[i].sun_zenith_deg), method.radiance[i], reference.radiance[i]);
+    add(quantity, queries.radiance[i].sun_zenith_deg, method.radiance[i], reference.radiance[i]);
   }
   if (!method.irradiance.empty()) {
     for (size_t i = 0; i < queries.irradiance.size(); ++i) {
-      add("sky_irradiance", sunBand(queries.irradiance[i].sun_zenith_deg), method.irradiance[i],
-          reference.irradiance[i]);
+      add("sky_irradiance", queries.irradiance[i].sun_zenith_deg, method.irradiance[i], reference.irradiance[i]);
     }
   }
   for (const auto& [order, entry] : samples) {
-    report.rows.push_back({entry.first, sunBandName(static_cast<SunBand>(order.second)), summarize(entry.second)});
+    const char* band =
+        order.second == last_degree_row ? kLastDegreeBand : sunBandName(static_cast<SunBand>(order.second / 2));
+    report.rows.push_back({entry.first, band, summarize(entry.second)});
   }
   return report;
 }

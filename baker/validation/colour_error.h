@@ -29,6 +29,14 @@ namespace skybake {
 // 0.22 units.
 inline constexpr double kComparedLightness = 50.0;
 
+// The low sun's last degree, sun zenith 89 to 90 deg, is reported again as
+// its own band (kLastDegreeBand): there lookups start to integrate single
+// scattering along the ray (Sky::singleScattering), which a colour bake
+// does per wavelength, and a few bad values would hide in the low sun's
+// whole band.
+inline constexpr double kLastDegreeFromZenith_deg = 89.0;
+inline constexpr const char* kLastDegreeBand = "sun_89_90";
+
 // Reference Y below this (W m^-2 sr^-1, or W m^-2 for irradiance) is left
 // out in `band`, as validate leaves out spectral values below
 // smallestComparedValue(band): it is the Y of a flat spectrum of that value.

@@ -31,10 +31,12 @@ namespace skybake {
 // version 8 divides multiple scattering by a shape whose peak is thinned by
 // the vertical scattering optical depth (MultipleShapeWeight); version 9
 // spaces the irradiance rows by a cosine and blends them over the vertical
-// optical depth above (IrradianceRows).
-// Versions 2 to 8 (2 to 4 on Bruneton's sun axis; 2 and 3 always
+// optical depth above (IrradianceRows); version 10 gives a colour bake each
+// wavelength's optical depth and coefficients (BakeContents::wavelength_groups,
+// BakeFile::wavelength_optical_depth).
+// Versions 2 to 9 (2 to 4 on Bruneton's sun axis; 2 and 3 always
 // wavelengths) are still read (FORMAT.md, "Older versions").
-inline constexpr int kBakeFormatVersion = 9;
+inline constexpr int kBakeFormatVersion = 10;
 // The first format version whose HALF 4D parts carry slice exponents.
 inline constexpr int kFirstHalfSliceExponentsFormatVersion = 6;
 // The first format version that states the density part's view size.
@@ -44,6 +46,9 @@ inline constexpr int kFirstDensityViewSizeFormatVersion = 7;
 inline constexpr int kFirstThinnedShapeFormatVersion = 8;
 // The first format version whose irradiance rows are IrradianceRows::CosineOverDepth.
 inline constexpr int kFirstCosineIrradianceRowsFormatVersion = 9;
+// The first format version whose colour bakes state their wavelengths'
+// optical depths and coefficients.
+inline constexpr int kFirstWavelengthDepthFormatVersion = 10;
 // The first format version whose sun axis is SunAxisMapping::SplitAtHorizon.
 inline constexpr int kFirstSplitSunAxisFormatVersion = 5;
 
@@ -61,17 +66,6 @@ inline IrradianceRows irradianceRowsOfFormatVersion(int format_version) {
 inline MultipleShapeWeight multipleShapeWeightOfFormatVersion(int format_version) {
   return format_version >= kFirstThinnedShapeFormatVersion ? MultipleShapeWeight::ThinnedByScatteringDepth
                                                            : MultipleShapeWeight::ColumnShare;
-}
-// The version a file is written at: the current one, or for tables baked
-// the way an older version stores them (a bake read from an older file and
-// written again) the last version that stores them so, so that a reader
-// decodes them as they were baked. Tables on Bruneton's sun axis predate
-// the thinned shape, and those with the unthinned shape the cosine rows.
-inline int formatVersionToWrite(const AtmosphereDomain& domain, MultipleShapeWeight shape_weight) {
-  if (domain.sun_axis != SunAxisMapping::SplitAtHorizon) return kFirstSplitSunAxisFormatVersion - 1;
-  if (shape_weight != MultipleShapeWeight::ThinnedByScatteringDepth) return kFirstThinnedShapeFormatVersion - 1;
-  return domain.irradiance_rows == IrradianceRows::CosineOverDepth ? kBakeFormatVersion
-                                                                   : kFirstCosineIrradianceRowsFormatVersion - 1;
 }
 inline constexpr int kOldestReadBakeFormatVersion = 2;
 
@@ -123,6 +117,13 @@ struct BakeContents {
   // cosine (densityCoordMu) and smooth, so it may hold fewer texels than
   // the radiance tables' (set by the baker; before format version 7, equal).
   int density_view_size = 0;
+  // A colour bake's wavelengths in groups of at most kMaxChannels, in
+  // wavelength order, each the ordinary atmosphere of those wavelengths its
+  // pass was baked with (FORMAT.md "Colour bakes"): the runtime integrates
+  // twilight single scattering per wavelength from them and
+  // BakeFile::wavelength_optical_depth. Empty otherwise, and for colour
+  // bakes read from files before kFirstWavelengthDepthFormatVersion.
+  std::vector<AtmosphereParameters> wavelength_groups;
   // What multiple scattering and its density are stored divided by (set
   // from the format version when read).
   MultipleShapeWeight multiple_shape_weight = MultipleShapeWeight::ThinnedByScatteringDepth;
@@ -135,6 +136,22 @@ struct BakeContents {
     return s;
   }
 };
+
+// The version a file is written at: the current one, or for tables baked
+// the way an older version stores them (a bake read from an older file and
+// written again) the last version that stores them so, so that a reader
+// decodes them as they were baked. Tables on Bruneton's sun axis predate
+// the thinned shape, those with the unthinned shape the cosine rows, and a
+// colour bake without its wavelengths' optical depths version 10.
+inline int formatVersionToWrite(const BakeContents& contents) {
+  const AtmosphereDomain& domain = contents.domain;
+  if (domain.sun_axis != SunAxisMapping::SplitAtHorizon) return kFirstSplitSunAxisFormatVersion - 1;
+  if (contents.multiple_shape_weight != MultipleShapeWeight::ThinnedByScatteringDepth)
+    return kFirstThinnedShapeFormatVersion - 1;
+  if (domain.irradiance_rows != IrradianceRows::CosineOverDepth) return kFirstCosineIrradianceRowsFormatVersion - 1;
+  const bool without_wavelengths = contents.atmosphere.storesCieXyz() && contents.wavelength_groups.empty();
+  return without_wavelengths ? kFirstWavelengthDepthFormatVersion - 1 : kBakeFormatVersion;
+}
 
 // The contents of a bake of `config` whose 4D tables cover `domain`.
 BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& domain);
@@ -217,6 +234,10 @@ struct BakeFile {
   // what an ordinary bake of that group's wavelengths holds: multiple
   // scattering divided by the group's own shape. Empty otherwise.
   std::vector<BakeTables> lane_group_tables;
+  // A colour bake's optical depth per wavelength group
+  // (contents.wavelength_groups), each what an ordinary bake of that group
+  // holds in BakeTables::optical_depth. Empty otherwise.
+  std::vector<Texture2D> wavelength_optical_depth;
 };
 
 // The number of lane groups of a bake: 1, or a spectral bake's groups.

@@ -9,6 +9,8 @@ inline constexpr const char* kPartSingleMie = "single_mie";
 inline constexpr const char* kPartMultipleScattering = "multiple_scattering";
 inline constexpr const char* kPartIrradiance = "irradiance";
 inline constexpr const char* kPartMultipleDensity = "multiple_scattering_density";
+// Version 10: a colour bake's optical depth per wavelength, one channel each.
+inline constexpr const char* kPartWavelengthOpticalDepth = "wavelength_optical_depth";
 // Version 2's name of the optical-depth part.
 inline constexpr const char* kPartOpticalDepthVersion2 = "transmittance";
 
@@ -39,6 +41,14 @@ inline constexpr const char* kAttrMiePhaseG = "skybake:mie_phase_g";
 inline constexpr const char* kAttrMieDensity = "skybake:mie_density";
 inline constexpr const char* kAttrAbsorptionExtinction = "skybake:absorption_extinction";
 inline constexpr const char* kAttrAbsorptionDensity = "skybake:absorption_density";
+// Version 10, colour bakes: each wavelength's own values of the per-channel
+// quantities above, in skybake:wavelengths_nm's order.
+inline constexpr const char* kAttrWavelengthGroundAlbedo = "skybake:wavelength_ground_albedo";
+inline constexpr const char* kAttrWavelengthSunIrradiance = "skybake:wavelength_sun_irradiance";
+inline constexpr const char* kAttrWavelengthRayleighScattering = "skybake:wavelength_rayleigh_scattering";
+inline constexpr const char* kAttrWavelengthMieScattering = "skybake:wavelength_mie_scattering";
+inline constexpr const char* kAttrWavelengthMieExtinction = "skybake:wavelength_mie_extinction";
+inline constexpr const char* kAttrWavelengthAbsorptionExtinction = "skybake:wavelength_absorption_extinction";
 
 // The tables' sizes and what they hold (version 3).
 inline constexpr const char* kAttrOpticalDepthSize = "skybake:optical_depth_size";

@@ -65,30 +65,37 @@ std::vector<double> profileNumbers(const DensityProfile& profile) {
   return numbers;
 }
 
-// A per-channel quantity's values in channel order: the atmosphere's lanes,
-// or a spectral bake's groups' lanes one after the other.
-std::vector<float> spectrumValues(const BakeContents& contents, Spectrum AtmosphereParameters::*quantity) {
+// A per-channel quantity's values of `groups`' lanes one after the other.
+std::vector<float> groupValues(const std::vector<AtmosphereParameters>& groups,
+                               Spectrum AtmosphereParameters::*quantity) {
   std::vector<float> values;
-  auto add = [&](const AtmosphereParameters& a) {
-    for (int c = 0; c < a.laneCount(); ++c) values.push_back((a.*quantity)[c]);
-  };
-  if (contents.lane_groups.empty()) add(contents.atmosphere);
-  for (const AtmosphereParameters& g : contents.lane_groups) add(g);
+  for (const AtmosphereParameters& g : groups) {
+    for (int c = 0; c < g.laneCount(); ++c) values.push_back((g.*quantity)[c]);
+  }
   return values;
 }
 
-// The per-channel quantities a file states, each one attribute.
+// A per-channel quantity's values in channel order: the atmosphere's lanes,
+// or a spectral bake's groups' lanes one after the other.
+std::vector<float> spectrumValues(const BakeContents& contents, Spectrum AtmosphereParameters::*quantity) {
+  return contents.lane_groups.empty() ? groupValues({contents.atmosphere}, quantity)
+                                      : groupValues(contents.lane_groups, quantity);
+}
+
+// The per-channel quantities a file states, each one attribute, and (a
+// colour bake's) each wavelength's own.
 struct SpectrumAttribute {
   const char* name;
+  const char* wavelength_name;
   Spectrum AtmosphereParameters::*quantity;
 };
 constexpr SpectrumAttribute kSpectrumAttributes[] = {
-    {kAttrGroundAlbedo, &AtmosphereParameters::ground_albedo},
-    {kAttrSunIrradiance, &AtmosphereParameters::sun_irradiance},
-    {kAttrRayleighScattering, &AtmosphereParameters::rayleigh_scattering},
-    {kAttrMieScattering, &AtmosphereParameters::mie_scattering},
-    {kAttrMieExtinction, &AtmosphereParameters::mie_extinction},
-    {kAttrAbsorptionExtinction, &AtmosphereParameters::absorption_extinction},
+    {kAttrGroundAlbedo, kAttrWavelengthGroundAlbedo, &AtmosphereParameters::ground_albedo},
+    {kAttrSunIrradiance, kAttrWavelengthSunIrradiance, &AtmosphereParameters::sun_irradiance},
+    {kAttrRayleighScattering, kAttrWavelengthRayleighScattering, &AtmosphereParameters::rayleigh_scattering},
+    {kAttrMieScattering, kAttrWavelengthMieScattering, &AtmosphereParameters::mie_scattering},
+    {kAttrMieExtinction, kAttrWavelengthMieExtinction, &AtmosphereParameters::mie_extinction},
+    {kAttrAbsorptionExtinction, kAttrWavelengthAbsorptionExtinction, &AtmosphereParameters::absorption_extinction},
 };
 
 std::string outputsText(const SceneOutputs& outputs) {
@@ -167,6 +174,10 @@ void insertContentsAttributes(const BakeContents& contents, Imf::Header& header)
   header.insert(kAttrTopRadius, Imf::DoubleAttribute(a.top_radius_m));
   for (const SpectrumAttribute& attribute : kSpectrumAttributes) {
     header.insert(attribute.name, Imf::FloatVectorAttribute(spectrumValues(contents, attribute.quantity)));
+    if (!contents.wavelength_groups.empty()) {
+      header.insert(attribute.wavelength_name,
+                    Imf::FloatVectorAttribute(groupValues(contents.wavelength_groups, attribute.quantity)));
+    }
   }
   header.insert(kAttrSunAngularRadius, Imf::DoubleAttribute(a.sun_angular_radius_rad));
   header.insert(kAttrSunMaxZenith, Imf::DoubleAttribute(a.sun_max_zenith_deg));
@@ -229,20 +240,32 @@ BakeContents readContentsAttributes(const Imf::Header& header, int format_versio
   a.mie_phase_g = in.real(kAttrMiePhaseG);
   a.mie_density = in.profile(kAttrMieDensity);
   a.absorption_density = in.profile(kAttrAbsorptionDensity);
-  if (a.storesLaneGroups()) {
-    for (int first = 0; first < n; first += kMaxChannels) {
-      const int count = std::min(kMaxChannels, n - first);
+  // `a`'s wavelengths in groups of at most kMaxChannels, each an ordinary
+  // atmosphere of those wavelengths with its values of every per-channel
+  // quantity from the attributes named by `name`.
+  const int wavelength_count = static_cast<int>(a.wavelengths_nm.size());
+  auto wavelengthGroups = [&](const char* const SpectrumAttribute::*name) {
+    std::vector<AtmosphereParameters> groups;
+    for (int first = 0; first < wavelength_count; first += kMaxChannels) {
+      const int count = std::min(kMaxChannels, wavelength_count - first);
       AtmosphereParameters g = a;
       g.channel_kind = ChannelKind::Wavelengths;
       g.wavelengths_nm.assign(a.wavelengths_nm.begin() + first, a.wavelengths_nm.begin() + first + count);
       for (const SpectrumAttribute& attribute : kSpectrumAttributes) {
-        g.*attribute.quantity = in.spectrum(attribute.name, n, first, count);
+        g.*attribute.quantity = in.spectrum(attribute.*name, wavelength_count, first, count);
       }
-      c.lane_groups.push_back(std::move(g));
+      groups.push_back(std::move(g));
     }
+    return groups;
+  };
+  if (a.storesLaneGroups()) {
+    c.lane_groups = wavelengthGroups(&SpectrumAttribute::name);
   } else {
     for (const SpectrumAttribute& attribute : kSpectrumAttributes)
       a.*attribute.quantity = in.spectrum(attribute.name, n);
+  }
+  if (a.storesCieXyz() && format_version >= kFirstWavelengthDepthFormatVersion) {
+    c.wavelength_groups = wavelengthGroups(&SpectrumAttribute::wavelength_name);
   }
 
   TextureSizes& s = c.sizes;
@@ -314,7 +337,8 @@ void validateContents(const BakeContents& contents, const std::string& source) {
   config.bake.stored_fraction_bits = contents.stored_fraction_bits;
   config.bake.combined_single_mie = contents.combined_single_mie;
   config.scene_ranges.views_below_horizon = contents.domain.scattering_ground_views;
-  config.colour_groups = contents.lane_groups;
+  // Each wavelength group is checked as its own pass's atmosphere.
+  config.colour_groups = contents.lane_groups.empty() ? contents.wavelength_groups : contents.lane_groups;
   validateConfig(config, source);
   // The density's view axis is linear over [-1, 1] with a texel at each end
   // (muFromDensityTexel), so it needs 2; more than the radiance tables' view

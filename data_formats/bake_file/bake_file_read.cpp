@@ -388,6 +388,19 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
                                    first.version, group_tables.size()));
     stored_bytes += layouts.back().stored_bytes;
   }
+  // A colour bake's optical depth per wavelength: the channels of every
+  // wavelength group, one group's table each.
+  const std::vector<AtmosphereParameters>& wavelength_groups = bake.contents.wavelength_groups;
+  std::optional<PartLayout> wavelength_layout;
+  if (!wavelength_groups.empty()) {
+    AtmosphereParameters every_wavelength = a;
+    every_wavelength.channel_kind = ChannelKind::Spectral;
+    wavelength_layout = in.checkPart(kPartWavelengthOpticalDepth, t.optical_depth.width, t.optical_depth.height,
+                                     every_wavelength, std::string(), std::nullopt, first.version, 1);
+    stored_bytes += wavelength_layout->stored_bytes;
+    bake.wavelength_optical_depth.assign(wavelength_groups.size(),
+                                         emptyTexture2D(t.optical_depth.width, t.optical_depth.height));
+  }
   if (stored_bytes / kMaxExrExpansion > file_bytes) {
     in.fail(
         fmt::format("the config's table sizes need {} bytes of pixel data, more than a file of {} "
@@ -401,6 +414,13 @@ BakeFile readChecked(Imf::IStream& stream, const std::string& source, uint64_t f
       groups.push_back({group_atmospheres[g], &tables[i].texels(*group_tables[g])});
     }
     in.readPart(layouts[i], groups, &bake.tables.single_mie.texels);
+  }
+  if (wavelength_layout) {
+    std::vector<Reader::LaneGroupTexels> groups;
+    for (size_t g = 0; g < wavelength_groups.size(); ++g) {
+      groups.push_back({&wavelength_groups[g], &bake.wavelength_optical_depth[g].texels});
+    }
+    in.readPart(*wavelength_layout, groups);
   }
   if (combined_mie) approximateSingleMie(a, bake.tables.single_rayleigh, bake.tables.single_mie);
   // A spectral bake's group without Mie scattering holds zeros in the part

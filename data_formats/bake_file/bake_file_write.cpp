@@ -84,7 +84,26 @@ struct PartToWrite {
   // A 4D table's layout; the 2D tables (optical depth, irradiance) have
   // none and are stored as FLOAT whatever bake.precision says (FORMAT.md).
   std::optional<HalfSliceLayout> layout_4d = std::nullopt;
+  // Whose channels `texels` hold, one atmosphere per entry: the lane
+  // groups' where empty (a colour bake's wavelength optical depths have
+  // their own).
+  std::vector<const AtmosphereParameters*> channel_groups = {};
 };
+
+// The channel names of a part, in channel order.
+std::vector<std::string> partChannelNames(const PartToWrite& part, const std::vector<LaneGroup>& groups) {
+  std::vector<std::string> names;
+  auto add = [&](const AtmosphereParameters& a) {
+    const std::vector<std::string> group_names = channelNames(a);
+    names.insert(names.end(), group_names.begin(), group_names.end());
+  };
+  if (part.channel_groups.empty()) {
+    for (const LaneGroup& g : groups) add(*g.atmosphere);
+  } else {
+    for (const AtmosphereParameters* a : part.channel_groups) add(*a);
+  }
+  return names;
+}
 
 bool storedAsHalf(const BakeFile& bake, const PartToWrite& part) {
   return bake.contents.precision == StoragePrecision::Half && part.layout_4d.has_value();
@@ -107,18 +126,18 @@ std::vector<int> sliceExponentsOf(const PartToWrite& part, const std::vector<Lan
 
 // Parts of a multi-part file must share one display window; each part's data
 // window is its own table size.
-Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const Imath::Box2i& display_window,
-                       const std::vector<int>& slice_exponents) {
-  const AtmosphereParameters& a = bake.contents.atmosphere;
+Imf::Header makeHeader(const BakeFile& bake, const PartToWrite& part, const std::vector<LaneGroup>& groups,
+                       const Imath::Box2i& display_window, const std::vector<int>& slice_exponents) {
   Imf::Header header(display_window, Imath::Box2i({0, 0}, {part.width - 1, part.height - 1}));
   header.setName(part.name);
   header.setType(Imf::SCANLINEIMAGE);
   header.compression() = Imf::ZIP_COMPRESSION;
   const Imf::PixelType type = storedAsHalf(bake, part) ? Imf::HALF : Imf::FLOAT;
-  for (const std::string& channel : channelNames(a)) header.channels().insert(channel, Imf::Channel(type));
+  for (const std::string& channel : partChannelNames(part, groups)) {
+    header.channels().insert(channel, Imf::Channel(type));
+  }
   if (part.extra_texels != nullptr) header.channels().insert(part.extra_channel, Imf::Channel(type));
-  header.insert(kAttrFormatVersion,
-                Imf::IntAttribute(formatVersionToWrite(bake.contents.domain, bake.contents.multiple_shape_weight)));
+  header.insert(kAttrFormatVersion, Imf::IntAttribute(formatVersionToWrite(bake.contents)));
   header.insert(kAttrContent, Imf::StringAttribute(part.content));
   header.insert(kAttrUnits, Imf::StringAttribute(part.units));
   header.insert(kAttrTableSize, Imf::StringAttribute(part.size_text));
@@ -148,7 +167,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
   std::vector<Imf::Header> headers;
   for (const PartToWrite& part : parts) {
     slice_exponents.push_back(storedAsHalf(bake, part) ? sliceExponentsOf(part, groups) : std::vector<int>());
-    headers.push_back(makeHeader(bake, part, display_window, slice_exponents.back()));
+    headers.push_back(makeHeader(bake, part, groups, display_window, slice_exponents.back()));
   }
   Imf::MultiPartOutputFile file(file_name.c_str(), headers.data(), static_cast<int>(headers.size()));
   for (size_t i = 0; i < parts.size(); ++i) {
@@ -170,7 +189,7 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
       return halves;
     };
     // Kept alive until the part is written: the slices point into them.
-    std::vector<std::vector<Imath::half>> halves(groups.size() + 1);
+    std::vector<std::vector<Imath::half>> halves(part.texels.size() + 1);
     std::vector<Imath::half> extra_halves;
     const size_t value_bytes = half ? sizeof(Imath::half) : sizeof(float);
     const size_t texel_bytes = value_bytes * kMaxChannels;
@@ -182,13 +201,14 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
     };
     // Allocated only for a group that lacks the table.
     std::vector<Spectrum> zeros;
-    for (size_t g = 0; g < groups.size(); ++g) {
+    for (size_t g = 0; g < part.texels.size(); ++g) {
       if (part.texels[g]->empty() && zeros.empty()) {
         zeros.assign(static_cast<size_t>(part.width) * part.height, Spectrum(0.0f));
       }
       const std::vector<Spectrum>& texels = part.texels[g]->empty() ? zeros : *part.texels[g];
       char* base = baseOf(texels, halves[g], g);
-      const std::vector<std::string> channel_names = channelNames(*groups[g].atmosphere);
+      const std::vector<std::string> channel_names =
+          channelNames(part.channel_groups.empty() ? *groups[g].atmosphere : *part.channel_groups[g]);
       for (size_t c = 0; c < channel_names.size(); ++c) {
         frame.insert(channel_names[c], Imf::Slice(type, base + c * value_bytes, texel_bytes, texel_bytes * part.width));
       }
@@ -204,6 +224,28 @@ void writeParts(const std::string& file_name, const BakeFile& bake, const std::v
 
 std::string table4DSizeText(const Texture4D& t) {
   return fmt::format("r={} mu={} mu_s={} nu={}", t.r_size, t.mu_size, t.mu_s_size, t.nu_size);
+}
+
+// A colour bake's optical depth per wavelength: one channel per wavelength,
+// each wavelength group's table what its pass stored as optical_depth.
+PartToWrite wavelengthOpticalDepthPart(const BakeFile& bake) {
+  const std::vector<AtmosphereParameters>& groups = bake.contents.wavelength_groups;
+  if (bake.wavelength_optical_depth.size() != groups.size()) {
+    throw Error(ErrorKind::Internal, "a colour bake whose wavelength groups and their optical depths differ in number");
+  }
+  const Texture2D& shape = bake.tables.optical_depth;
+  PartToWrite part{kPartWavelengthOpticalDepth,
+                   "each wavelength's optical depth from (r, mu) to the top boundary; transmittance = exp(-value)",
+                   "dimensionless",
+                   {},
+                   shape.width,
+                   shape.height,
+                   fmt::format("mu={} r={}", shape.width, shape.height)};
+  for (size_t g = 0; g < groups.size(); ++g) {
+    part.texels.push_back(&bake.wavelength_optical_depth[g].texels);
+    part.channel_groups.push_back(&groups[g]);
+  }
+  return part;
 }
 
 }  // namespace
@@ -247,6 +289,9 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
               "divided by the multiple-scattering shape at the texel's r and nu",
               "W m^-3 nm^-1 (W m^-3 sr^-1 nm^-1 over shape sr^-1)", &BakeTables::multiple_density),
   };
+  if (!bake.contents.wavelength_groups.empty()) {
+    parts.push_back(wavelengthOpticalDepthPart(bake));
+  }
   if (bake.contents.combined_single_mie) {
     auto is_rayleigh = [](const PartToWrite& p) { return p.name == std::string_view(kPartSingleRayleigh); };
     PartToWrite& rayleigh = *std::find_if(parts.begin(), parts.end(), is_rayleigh);
@@ -264,7 +309,7 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
   for (const PartToWrite& part : parts) {
     const size_t size = static_cast<size_t>(part.width) * part.height;
     // Only a spectral bake's group without Mie scattering may lack a written table.
-    for (size_t g = 0; g < groups.size(); ++g) {
+    for (size_t g = 0; g < part.texels.size(); ++g) {
       const bool may_lack = groups.size() > 1 && part.name == std::string_view(kPartSingleMie) &&
                             !bakeStoresSingleMie(*groups[g].atmosphere);
       if ((part.texels[g]->size() != size && !(may_lack && part.texels[g]->empty())) || part.width <= 0 ||
@@ -277,8 +322,9 @@ void writeBakeFile(const std::filesystem::path& path, const BakeFile& bake,
   // A table outside its range (a config whose numbers overflow float) is
   // refused before anything is written: the existing file stays.
   for (const PartToWrite& part : parts) {
-    for (size_t g = 0; g < groups.size(); ++g) {
-      checkTableValues(path.string(), part.name, *part.texels[g], groups[g].atmosphere->channelCount());
+    for (size_t g = 0; g < part.texels.size(); ++g) {
+      const AtmosphereParameters& a = part.channel_groups.empty() ? *groups[g].atmosphere : *part.channel_groups[g];
+      checkTableValues(path.string(), part.name, *part.texels[g], a.channelCount());
     }
     if (part.extra_texels != nullptr) checkTableValues(path.string(), part.name, *part.extra_texels, 1);
   }

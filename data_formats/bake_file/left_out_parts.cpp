@@ -26,6 +26,8 @@ BakeContents storedContents(const BakeConfig& config, const AtmosphereDomain& do
       c.lane_groups = config.colour_groups;
     }
   }
+  // A colour bake's passes, whose optical depths the file keeps.
+  if (config.atmosphere.storesCieXyz()) c.wavelength_groups = config.colour_groups;
   return c;
 }
 

@@ -151,6 +151,18 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   b.night[3] = d.scattering_mu_s_coord_min <= 0.0 ? 1.0f : 0.0f;  // as TableSampler::nightScale4D
   put(b.night_exponent, night.exponent);
   put(b.luminance_weights, sky.luminanceWeights());
+  const std::vector<WavelengthGroupToXyz>& to_xyz = sky.wavelengthGroupsToXyz();
+  if (to_xyz.size() > static_cast<size_t>(kMaxGlWavelengthGroups)) {
+    throwBadInput(fmt::format("a colour bake of {} wavelength groups: the GLSL library holds at most {}", to_xyz.size(),
+                              kMaxGlWavelengthGroups));
+  }
+  b.wavelength_groups[0] = static_cast<std::int32_t>(to_xyz.size());
+  for (size_t g = 0; g < to_xyz.size(); ++g) {
+    for (int c = 0; c < kCieXyzChannels; ++c) {
+      put(b.wavelength_rayleigh_to_xyz[3 * g + c], Spectrum(to_xyz[g].rayleigh[c]));
+      put(b.wavelength_mie_to_xyz[3 * g + c], Spectrum(to_xyz[g].mie[c]));
+    }
+  }
   putLayers(b, 0, a.rayleigh_density, "rayleigh");
   putLayers(b, 1, a.mie_density, "mie");
   putLayers(b, 2, a.absorption_density, "absorption");
@@ -166,6 +178,7 @@ std::string skyGlslDefines() {
     return fmt::format("float[{}]({})", kGaussNodes, list);
   };
   define("SKYBAKE_MAX_DENSITY_LAYERS", std::to_string(kMaxGlDensityLayers));
+  define("SKYBAKE_MAX_WAVELENGTH_GROUPS", std::to_string(kMaxGlWavelengthGroups));
   define("SKYBAKE_GAUSS_NODES", std::to_string(kGaussNodes));
   define("SKYBAKE_GAUSS_ABSCISSA", floatArray(kGaussAbscissa));
   define("SKYBAKE_GAUSS_WEIGHT", floatArray(kGaussWeight));

@@ -75,6 +75,21 @@ GLuint upload4D(const Texture4D& t, const char* name, int channels, GpuTablePrec
   return id;
 }
 
+// A colour bake's wavelength groups' optical-depth tables, one below the
+// other (group g's r rows from g * height on); none for any other bake.
+Texture2D stackedRows(const std::vector<Texture2D>& groups) {
+  if (groups.empty()) return {};
+  Texture2D stacked;
+  stacked.width = groups.front().width;
+  stacked.height = 0;
+  for (const Texture2D& g : groups) {
+    if (g.width != stacked.width) throw Error(ErrorKind::Internal, "wavelength optical depths of different widths");
+    stacked.texels.insert(stacked.texels.end(), g.texels.begin(), g.texels.end());
+    stacked.height += g.height;
+  }
+  return stacked;
+}
+
 }  // namespace
 
 SkyGlResources::SkyGlResources(const Sky& sky, GpuTablePrecision precision) : constants_(skyUniformBlock(sky)) {
@@ -91,8 +106,10 @@ SkyGlResources::SkyGlResources(const Sky& sky, GpuTablePrecision precision) : co
                upload4D(t.multiple_scattering, "multiple_scattering", channels, precision, slice_scales.texels, 2),
                upload4D(t.multiple_density, "multiple_scattering_density", channels, precision, slice_scales.texels, 3),
                upload2D(t.irradiance, "irradiance"),
-               upload2D(slice_scales, "slice scales")};
-  targets_ = {GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_2D, GL_TEXTURE_2D};
+               upload2D(slice_scales, "slice scales"),
+               upload2D(stackedRows(sky.wavelengthOpticalDepth()), "wavelength optical depth")};
+  targets_ = {GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_3D,
+              GL_TEXTURE_3D, GL_TEXTURE_2D, GL_TEXTURE_2D, GL_TEXTURE_2D};
   glGenBuffers(1, &uniform_buffer_);
   glBindBuffer(GL_UNIFORM_BUFFER, uniform_buffer_);
   glBufferData(GL_UNIFORM_BUFFER, sizeof(constants_), &constants_, GL_STATIC_DRAW);

@@ -82,18 +82,31 @@ bool skybakeNextPiece(inout SkybakePieces p, out float piece_start, out float pi
   return false;
 }
 
+// Optical depth from (r, mu) to the top for pass g of the single-scattering
+// integral: the channels' own (a bake without wavelength groups has one
+// pass), or a colour bake's wavelength group g's.
+vec4 skybakePassOpticalDepthToTop(int g, float r, float mu) {
+  return skybake_wavelength_groups.x == 0 ? skybakeOpticalDepthToTop(r, mu)
+                                          : skybakeWavelengthOpticalDepthToTop(g, r, mu);
+}
+
 // Single scattering at the 4-point rule's nodes over [a, b] of the ray
-// (r, mu) with the sun at (mu_s, nu), added to rayleigh and mie (without
-// the factors common to every node); with a moon (an eclipse) also to
+// (r, mu) with the sun at (mu_s, nu), pass g (skybakePassOpticalDepthToTop;
+// start_to_top_up and _down the ray's own legs to the top in it), added to
+// rayleigh and mie without the factors common to every node, or for a
+// colour bake's wavelength group weighted into X, Y, Z with each
+// wavelength's sun and scattering coefficient
+// (skybake_wavelength_*_to_xyz); with a moon (an eclipse) also to
 // rayleigh_past_moon and mie_past_moon with the sunlight at each node
 // dimmed by the part of the disk the moon hides there.
-void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, bool ray_intersects_ground,
+void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, bool ray_intersects_ground, int g,
                                     vec4 start_to_top_up, vec4 start_to_top_down, float a, float b,
                                     SkybakeMoonAlongRay moon, inout vec4 rayleigh, inout vec4 mie,
                                     inout vec4 rayleigh_past_moon, inout vec4 mie_past_moon) {
   float bottom = skybake_radii_m.x;
   float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
   float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
+  bool to_xyz = skybake_wavelength_groups.x > 0;
   float h = b - a;
   for (int k = 0; k < SKYBAKE_GAUSS_NODES; ++k) {
     float t = a + 0.5 * h * (1.0 + gauss_abscissa[k]);
@@ -103,22 +116,35 @@ void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, boo
     float mu_s_t = skybakeClampCosine((r * mu_s + t * nu) / r_t);
     float visible = skybakeSunDiskVisibleFraction(mu_s_t - skybakeTangentZenithCosine(r_t, bottom),
                                                   skybakeSunDiskHalfSizeAtHorizon(bottom, r_t, skybake_sun_disk.x));
-    if (visible <= 0.0) continue;  // in the planet's shadow
-    // The sunlight's whole path in one exponential: to the node, then on to
-    // the ray's start.
-    float mu_t = skybakeCosineAlongRay(r, mu, t, r_t);
-    bool reversed = ray_intersects_ground || t <= -r * mu;
-    vec4 along = reversed ? max(skybakeOpticalDepthToTop(r_t, -mu_t) - start_to_top_down, vec4(0.0))
-                          : max(start_to_top_up - skybakeOpticalDepthToTop(r_t, mu_t), vec4(0.0));
-    vec4 light = exp(-(skybakeOpticalDepthToTop(r_t, mu_s_t) + along)) * visible;
-    vec4 rayleigh_term = light * (w * skybakeRayleighDensity(altitude_m));
-    vec4 mie_term = light * (w * skybakeMieDensity(altitude_m));
-    rayleigh += rayleigh_term;
-    mie += mie_term;
-    if (moon.moon.radius_m > 0.0) {
-      float past_moon = skybakeMoonVisibleSunFractionAt(moon, t);
-      rayleigh_past_moon += rayleigh_term * past_moon;
-      mie_past_moon += mie_term * past_moon;
+    // Nothing where the node is in the planet's shadow (an if, not a
+    // continue: llvmpipe mishandles continue in loops nested this deep).
+    if (visible > 0.0) {
+      // The sunlight's whole path in one exponential: to the node, then on to
+      // the ray's start.
+      float mu_t = skybakeCosineAlongRay(r, mu, t, r_t);
+      bool reversed = ray_intersects_ground || t <= -r * mu;
+      vec4 along = reversed ? max(skybakePassOpticalDepthToTop(g, r_t, -mu_t) - start_to_top_down, vec4(0.0))
+                            : max(start_to_top_up - skybakePassOpticalDepthToTop(g, r_t, mu_t), vec4(0.0));
+      vec4 light = exp(-(skybakePassOpticalDepthToTop(g, r_t, mu_s_t) + along)) * visible;
+      vec4 rayleigh_light = light;
+      vec4 mie_light = light;
+      if (to_xyz) {
+        rayleigh_light = vec4(dot(skybake_wavelength_rayleigh_to_xyz[3 * g], light),
+                              dot(skybake_wavelength_rayleigh_to_xyz[3 * g + 1], light),
+                              dot(skybake_wavelength_rayleigh_to_xyz[3 * g + 2], light), 0.0);
+        mie_light = vec4(dot(skybake_wavelength_mie_to_xyz[3 * g], light),
+                         dot(skybake_wavelength_mie_to_xyz[3 * g + 1], light),
+                         dot(skybake_wavelength_mie_to_xyz[3 * g + 2], light), 0.0);
+      }
+      vec4 rayleigh_term = rayleigh_light * (w * skybakeRayleighDensity(altitude_m));
+      vec4 mie_term = mie_light * (w * skybakeMieDensity(altitude_m));
+      rayleigh += rayleigh_term;
+      mie += mie_term;
+      if (moon.moon.radius_m > 0.0) {
+        float past_moon = skybakeMoonVisibleSunFractionAt(moon, t);
+        rayleigh_past_moon += rayleigh_term * past_moon;
+        mie_past_moon += mie_term * past_moon;
+      }
     }
   }
 }
@@ -149,29 +175,53 @@ SkybakeSingleScatteringPastMoon skybakeIntegrateSingleScattering(float r, float 
   SkybakeSingleScattering none = SkybakeSingleScattering(rayleigh, mie);
   // A light shaft's shadow can reach past the ray's end: nothing is lit.
   if (!(t_end > t_start)) return SkybakeSingleScatteringPastMoon(none, none);
-  // The ray's own legs to the top, the same at every node.
-  vec4 start_to_top_up = skybakeOpticalDepthToTop(r, mu);
-  vec4 start_to_top_down = skybakeOpticalDepthToTop(r, -mu);
+  // One pass over the ray per wavelength group of a colour bake (the same
+  // nodes each time), one for any other bake; each pass's pieces
+  // (skybakeNextPiece) cut at the shadow's crossings into parts. All in
+  // one loop, each iteration integrating one part (fetching the next piece
+  // first where the last one is done): llvmpipe counts every loop's
+  // iterations against one limit (65535 per shader run), which an
+  // eclipse's irradiance, 48 such integrals and its kernel, comes near.
+  int passes = max(skybake_wavelength_groups.x, 1);
+  int g = 0;
+  // The ray's own legs to the top, the same at every node of a pass.
+  vec4 start_to_top_up = skybakePassOpticalDepthToTop(g, r, mu);
+  vec4 start_to_top_down = skybakePassOpticalDepthToTop(g, r, -mu);
   SkybakeShadowCrossings crossings = skybakePlanetShadowCrossings(r, mu, mu_s, nu, t_end);
   SkybakePieces pieces = skybakePieces(r, mu, t_start, t_end, segments);
-  float a, b;
-  while (skybakeNextPiece(pieces, a, b)) {
-    // The piece's parts between the crossings inside it, then the last
-    // part; one call site, so that shader compilers inline the rule once.
-    float part_start = a;
-    for (int i = 0; i < 3; ++i) {
-      float cut = i == 0 ? crossings.distance_m.x : crossings.distance_m.y;
-      bool last = i == 2;
-      if (last || (i < crossings.count && cut > part_start && cut < b)) {
-        float part_end = last ? b : cut;
-        skybakeAddSingleScatteringPart(r, mu, mu_s, nu, ray_intersects_ground, start_to_top_up, start_to_top_down,
-                                       part_start, part_end, moon, rayleigh, mie, rayleigh_past_moon, mie_past_moon);
-        part_start = part_end;
+  float a = t_start;
+  float b = t_start;
+  float part_start = t_start;
+  while (true) {
+    if (!(part_start < b)) {
+      if (skybakeNextPiece(pieces, a, b)) {
+        part_start = a;
+      } else {
+        if (g + 1 >= passes) break;
+        g += 1;
+        start_to_top_up = skybakePassOpticalDepthToTop(g, r, mu);
+        start_to_top_down = skybakePassOpticalDepthToTop(g, r, -mu);
+        pieces = skybakePieces(r, mu, t_start, t_end, segments);
       }
     }
+    if (part_start < b) {
+      // Up to the first crossing inside the piece's rest, or its end; one
+      // call site, so that shader compilers inline the rule once.
+      float part_end = b;
+      if (crossings.count > 0 && crossings.distance_m.x > part_start && crossings.distance_m.x < part_end)
+        part_end = crossings.distance_m.x;
+      if (crossings.count > 1 && crossings.distance_m.y > part_start && crossings.distance_m.y < part_end)
+        part_end = crossings.distance_m.y;
+      skybakeAddSingleScatteringPart(r, mu, mu_s, nu, ray_intersects_ground, g, start_to_top_up, start_to_top_down,
+                                     part_start, part_end, moon, rayleigh, mie, rayleigh_past_moon, mie_past_moon);
+      part_start = part_end;
+    }
   }
-  vec4 rayleigh_factor = skybake_sun_irradiance * skybake_rayleigh_scattering;
-  vec4 mie_factor = skybake_sun_irradiance * skybake_mie_scattering;
+  // A colour bake's wavelength groups weighed each wavelength's sun and
+  // coefficients in at the nodes.
+  bool weighed = skybake_wavelength_groups.x > 0;
+  vec4 rayleigh_factor = weighed ? vec4(1.0) : skybake_sun_irradiance * skybake_rayleigh_scattering;
+  vec4 mie_factor = weighed ? vec4(1.0) : skybake_sun_irradiance * skybake_mie_scattering;
   return SkybakeSingleScatteringPastMoon(
       SkybakeSingleScattering(rayleigh * rayleigh_factor, mie * mie_factor),
       SkybakeSingleScattering(rayleigh_past_moon * rayleigh_factor, mie_past_moon * mie_factor));

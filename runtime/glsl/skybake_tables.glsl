@@ -129,6 +129,17 @@ vec4 skybakeOpticalDepthToTop(float r, float mu) {
   return skybakeOpticalDepthAtCoord(at, skybakeOpticalDepthMuCoord(at, mu));
 }
 
+// The same from a colour bake's wavelength group g's table
+// (skybake_wavelength_optical_depth): one lane per wavelength of the group.
+vec4 skybakeWavelengthOpticalDepthToTop(int group, float r, float mu) {
+  SkybakeOpticalDepthAtR at = skybakeOpticalDepthAtR(r);
+  SkybakeAxisLerp x = skybakeAxisLerp(skybakeOpticalDepthMuCoord(at, mu), skybake_table_2d_size.x);
+  int first_row = group * skybake_table_2d_size.y;
+  vec4 a = skybakeSampleRow(skybake_wavelength_optical_depth, x, first_row + at.r_lerp.i0);
+  vec4 b = skybakeSampleRow(skybake_wavelength_optical_depth, x, first_row + at.r_lerp.i1);
+  return a + (b - a) * at.r_lerp.w1;
+}
+
 // Optical depth over [0, d] of the ray (r, mu), as a difference of depths to
 // the top, both legs reversed (pointing up) for a ray to the ground or a
 // segment that ends before the ray's lowest point (TableSampler::opticalDepthAlongRay).

@@ -9,6 +9,9 @@
 // (forEachOpticallyThinNodeCutAt).
 #pragma once
 
+#include <array>
+#include <span>
+
 #include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/physics/moon_occluder.h"
 #include "runtime/physics/planet_shadow.h"
@@ -32,16 +35,38 @@ struct SunlitRay {
   bool ray_intersects_ground;
 };
 
+// A colour bake's wavelengths as the integral below needs them: the
+// sunlight reaching each point and the view ray's transmittance depend on
+// the wavelength, and summing them into X, Y, Z before the product (the
+// X, Y, Z atmosphere's effective depths and coefficients) reads twilight
+// skies 5 to 20 % off (docs/COLOUR_BAKES.md). Per wavelength group g (of at
+// most kMaxChannels wavelengths): its optical-depth table, and for each of
+// X, Y, Z what one unit of each lane's integral adds to it: the
+// colour-matching weight times the sun's irradiance times the scattering
+// coefficient (W m^-2 per unit, Rayleigh and Mie apart).
+struct WavelengthGroupToXyz {
+  std::array<SpectrumD, kCieXyzChannels> rayleigh;
+  std::array<SpectrumD, kCieXyzChannels> mie;
+};
+struct ColourWavelengths {
+  std::span<const Texture2D> optical_depth;      // per group
+  std::span<const WavelengthGroupToXyz> to_xyz;  // per group
+};
+
 // Single scattering over [t_start, t_end] of `ray` (metres from its start),
 // seen from the ray's start; `segments` is how many sub-intervals of 4
 // Gauss nodes [t_start, t_end] gets (optically thick ones split further, see
 // ray_quadrature.h), each cut at the shadow's edges inside it. With `moon`,
 // the sunlight at each node is also dimmed by the part of the disk the moon
 // hides there (an eclipse); its origin, dir and sun_dir must be the 3D form
-// of `ray`.
+// of `ray`. With `colour` (a colour bake's wavelengths), the sunlight and
+// view-ray transmittance at each node are each wavelength's, from its own
+// optical depths, summed into X, Y, Z at the node; `optical_depth` and
+// `a` (the X, Y, Z atmosphere) then only place the nodes.
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
-                                           double t_end, int segments, const MoonAlongRay* moon = nullptr);
+                                           double t_end, int segments, const MoonAlongRay* moon = nullptr,
+                                           const ColourWavelengths* colour = nullptr);
 
 // How much of a lookup's single scattering comes from this integral rather
 // than the tables, for a sun at zenith cosine mu_s: 1 from the horizon

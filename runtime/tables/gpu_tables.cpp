@@ -58,8 +58,14 @@ GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision pr
   }
   const uint64_t irradiance_texels =
       leavesOut(contents, bake_file::kPartIrradiance) ? 1 : static_cast<uint64_t>(s.irradiance_mu_s) * s.irradiance_r;
+  // A colour bake's wavelength optical depths, its groups' tables stacked
+  // (one texel of zeros for any other bake).
+  const uint64_t groups = contents.wavelength_groups.size();
+  const uint64_t wavelength_depth_texels =
+      groups == 0 ? 1 : groups * static_cast<uint64_t>(s.transmittance_mu) * s.transmittance_r;
   bytes.tables_2d =
-      (static_cast<uint64_t>(s.transmittance_mu) * s.transmittance_r + irradiance_texels) * kFloatTexelBytes;
+      (static_cast<uint64_t>(s.transmittance_mu) * s.transmittance_r + irradiance_texels + wavelength_depth_texels) *
+      kFloatTexelBytes;
   bytes.slice_scales =
       (precision == GpuTablePrecision::Half ? static_cast<uint64_t>(s.scattering_r) * s.scattering_mu_s : 1) *
       kFloatTexelBytes;

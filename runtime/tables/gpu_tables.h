@@ -43,7 +43,7 @@ HalfTable4D halfTable4D(const Texture4D& table, int channels);
 // the GL formats' sizes (a driver may pad RGB16F to 8 bytes).
 struct GpuUploadBytes {
   uint64_t tables_4d = 0;     // the 4D tables the file holds (a left-out one is one texel)
-  uint64_t tables_2d = 0;     // optical depth, irradiance
+  uint64_t tables_2d = 0;     // optical depth, irradiance, a colour bake's wavelength optical depths
   uint64_t slice_scales = 0;  // the scale table (one texel for a float upload)
   uint64_t total() const { return tables_4d + tables_2d + slice_scales; }
 };

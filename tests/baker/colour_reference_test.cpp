@@ -217,5 +217,38 @@ TEST(ColourError, LuminanceErrorAloneIsALightnessDifference) {
   EXPECT_GT(colourDifference({white.x * 0.2, 0.2, white.z * 0.22}, grey(0.2)), 1.0);
 }
 
+// The low sun's last degree is a row of its own besides the low sun's: a
+// query at 89.5 deg counts in both, one at 85 deg only in the low sun's,
+// and the rows come day, low sun, last degree, twilight.
+TEST(ColourError, LastDegreeOfTheLowSunIsReportedApart) {
+  AtmosphereParameters a = colourAtmospheres().groups.front();
+  QuerySet queries;
+  for (double sun : {30.0, 85.0, 89.5, 92.0}) queries.radiance.push_back({0.0, sun, 60.0, 90.0, 0.0});
+  ColourReferenceValues reference;
+  MethodXyz method;
+  for (size_t i = 0; i < queries.radiance.size(); ++i) {
+    CachedReference r;
+    r.value = SpectrumD(5.0, 5.0, 5.0, 0.0);
+    r.standard_error = SpectrumD(0.0);
+    reference.radiance.push_back(r);
+    // 1 % too bright at 89.5 deg, exact elsewhere.
+    const double y = queries.radiance[i].sun_zenith_deg == 89.5 ? 5.05 : 5.0;
+    method.radiance.push_back({5.0, y, 5.0});
+  }
+  const ColourErrorReport report = compareColourWithReference(a, queries, reference, method, 0);
+  std::vector<std::string> bands;
+  for (const ColourErrorRow& row : report.rows) bands.push_back(row.band);
+  EXPECT_EQ(bands, (std::vector<std::string>{"day", "low_sun", kLastDegreeBand, "twilight"}));
+  const ColourErrorRow* low = report.find("sky_radiance", "low_sun");
+  const ColourErrorRow* last = report.find("sky_radiance", kLastDegreeBand);
+  ASSERT_NE(low, nullptr);
+  ASSERT_NE(last, nullptr);
+  EXPECT_EQ(low->stats.count, 2);
+  EXPECT_EQ(last->stats.count, 1);
+  EXPECT_NEAR(last->stats.luminance_rms, 0.01, 1e-9);
+  EXPECT_NEAR(low->stats.luminance_rms, 0.01 / std::sqrt(2.0), 1e-9);
+  EXPECT_NE(report.table().find(kLastDegreeBand), std::string::npos);
+}
+
 }  // namespace
 }  // namespace skybake

@@ -267,7 +267,7 @@ for command in info "lookup irradiance" render validate; do
     validate) extra=("${validate_q[@]}"); out=$work/existing.csv ;;
   esac
   # shellcheck disable=SC2086 # "lookup irradiance" is two words
-  kept "$out" "v99.exr: format version 99 is not understood by this skybake (it reads versions 2 to 9)" -- $command "$work/v99.exr" "${extra[@]}"
+  kept "$out" "v99.exr: format version 99 is not understood by this skybake (it reads versions 2 to 10)" -- $command "$work/v99.exr" "${extra[@]}"
   kept "$out" "no_part.exr: part 'optical_depth' is missing" -- $command "$work/no_part.exr" "${extra[@]}"
 done
 kept "$work/existing.png" "flipped.exr: not a readable skybake bake file: " -- render "$work/flipped.exr" "${render_v[@]}"

@@ -15,7 +15,7 @@ expect_status 0 "bake" -- --help
 expect_status 0 "--precision" -- bake --help
 # --version names the program's version (the top-level CMakeLists.txt's) and the bake formats it handles.
 version=$(sed -n 's/^project(skybake VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")
-expect_status 0 "skybake $version (writes bake file format 9, reads formats 2 to 9)" -- --version
+expect_status 0 "skybake $version (writes bake file format 10, reads formats 2 to 10)" -- --version
 expect_status 2 "" -- frobnicate
 expect_status 2 "--threads" -- bake "$small" -o "$work/x.exr" --threads 0
 expect_status 2 "--precision" -- bake "$small" -o "$work/x.exr" --precision double
