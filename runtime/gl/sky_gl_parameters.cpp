@@ -152,17 +152,29 @@ SkyUniformBlock skyUniformBlock(const Sky& sky) {
   put(b.night_exponent, night.exponent);
   put(b.luminance_weights, sky.luminanceWeights());
   const std::vector<WavelengthGroupToXyz>& to_xyz = sky.wavelengthGroupsToXyz();
-  if (to_xyz.size() > static_cast<size_t>(kMaxGlWavelengthGroups)) {
+  if (to_xyz.size() > static_cast<size_t>(kMaxGlIntegralPasses)) {
     throwBadInput(fmt::format("a colour bake of {} wavelength groups: the GLSL library holds at most {}", to_xyz.size(),
-                              kMaxGlWavelengthGroups));
+                              kMaxGlIntegralPasses));
   }
-  b.wavelength_groups[0] = static_cast<std::int32_t>(to_xyz.size());
-  for (size_t g = 0; g < to_xyz.size(); ++g) {
-    for (int c = 0; c < kCieXyzChannels; ++c) {
-      put(b.wavelength_rayleigh_to_xyz[3 * g + c], Spectrum(to_xyz[g].rayleigh[c]));
-      put(b.wavelength_mie_to_xyz[3 * g + c], Spectrum(to_xyz[g].mie[c]));
+  const std::int32_t rows = sky.contents().sizes.transmittance_r;
+  if (to_xyz.empty()) {
+    b.integral_passes[0] = 1;
+    for (int c = 0; c < kMaxChannels; ++c) {
+      b.pass_rayleigh_weights[c][c] = a.sun_irradiance[c] * a.rayleigh_scattering[c];
+      b.pass_mie_weights[c][c] = a.sun_irradiance[c] * a.mie_scattering[c];
+    }
+  } else {
+    // After the X, Y, Z table's rows (SkyGlResources stacks them so).
+    b.integral_passes[0] = static_cast<std::int32_t>(to_xyz.size());
+    b.integral_passes[1] = rows;
+    for (size_t g = 0; g < to_xyz.size(); ++g) {
+      for (int c = 0; c < kCieXyzChannels; ++c) {
+        put(b.pass_rayleigh_weights[4 * g + c], Spectrum(to_xyz[g].rayleigh[c]));
+        put(b.pass_mie_weights[4 * g + c], Spectrum(to_xyz[g].mie[c]));
+      }
     }
   }
+  b.integral_passes[2] = rows;
   putLayers(b, 0, a.rayleigh_density, "rayleigh");
   putLayers(b, 1, a.mie_density, "mie");
   putLayers(b, 2, a.absorption_density, "absorption");
@@ -178,7 +190,7 @@ std::string skyGlslDefines() {
     return fmt::format("float[{}]({})", kGaussNodes, list);
   };
   define("SKYBAKE_MAX_DENSITY_LAYERS", std::to_string(kMaxGlDensityLayers));
-  define("SKYBAKE_MAX_WAVELENGTH_GROUPS", std::to_string(kMaxGlWavelengthGroups));
+  define("SKYBAKE_MAX_INTEGRAL_PASSES", std::to_string(kMaxGlIntegralPasses));
   define("SKYBAKE_GAUSS_NODES", std::to_string(kGaussNodes));
   define("SKYBAKE_GAUSS_ABSCISSA", floatArray(kGaussAbscissa));
   define("SKYBAKE_GAUSS_WEIGHT", floatArray(kGaussWeight));

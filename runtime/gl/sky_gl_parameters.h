@@ -14,9 +14,10 @@ namespace skybake::gl {
 // Density layers per profile the uniform block holds; a bake with more is
 // refused (Error(BadInput)) by skyUniformBlock.
 inline constexpr int kMaxGlDensityLayers = 8;
-// Wavelength groups of a colour bake the uniform block holds: every colour
-// bake's (kMaxColourWavelengths in groups of kMaxChannels).
-inline constexpr int kMaxGlWavelengthGroups = kMaxColourWavelengths / kMaxChannels;
+// Passes of the single-scattering integral the uniform block holds: a
+// colour bake's wavelength groups, every colour bake's
+// (kMaxColourWavelengths in groups of kMaxChannels).
+inline constexpr int kMaxGlIntegralPasses = kMaxColourWavelengths / kMaxChannels;
 
 // The uniform block SkybakeAtmosphere in std140 layout, its members those
 // of runtime/glsl/skybake_uniform_block.inc (the one description, with each
@@ -25,16 +26,16 @@ struct SkyUniformBlock {
   using vec4 = float[4];
   using ivec4 = std::int32_t[4];
 #define SKYBAKE_MAX_DENSITY_LAYERS kMaxGlDensityLayers
-#define SKYBAKE_MAX_WAVELENGTH_GROUPS kMaxGlWavelengthGroups
+#define SKYBAKE_MAX_INTEGRAL_PASSES kMaxGlIntegralPasses
 #define SKYBAKE_BLOCK_MEMBER(type, name) type name;
 #define SKYBAKE_BLOCK_ARRAY(type, name, count) type name[count];
 #include "runtime/glsl/skybake_uniform_block.inc"
 #undef SKYBAKE_BLOCK_ARRAY
 #undef SKYBAKE_BLOCK_MEMBER
-#undef SKYBAKE_MAX_WAVELENGTH_GROUPS
+#undef SKYBAKE_MAX_INTEGRAL_PASSES
 #undef SKYBAKE_MAX_DENSITY_LAYERS
 };
-static_assert(sizeof(SkyUniformBlock) == (27 + 6 * kMaxGlDensityLayers + 6 * kMaxGlWavelengthGroups) * 16,
+static_assert(sizeof(SkyUniformBlock) == (27 + 6 * kMaxGlDensityLayers + 8 * kMaxGlIntegralPasses) * 16,
               "std140: vec4s only, no padding");
 
 // The block's values for a loaded bake.

@@ -75,15 +75,13 @@ GLuint upload4D(const Texture4D& t, const char* name, int channels, GpuTablePrec
   return id;
 }
 
-// A colour bake's wavelength groups' optical-depth tables, one below the
-// other (group g's r rows from g * height on); none for any other bake.
-Texture2D stackedRows(const std::vector<Texture2D>& groups) {
-  if (groups.empty()) return {};
-  Texture2D stacked;
-  stacked.width = groups.front().width;
-  stacked.height = 0;
-  for (const Texture2D& g : groups) {
-    if (g.width != stacked.width) throw Error(ErrorKind::Internal, "wavelength optical depths of different widths");
+// The optical-depth texture: the bake's table, and below it a colour
+// bake's wavelength groups' tables in order (the integral's passes,
+// skybake_integral_passes).
+Texture2D opticalDepthRows(const Sky& sky) {
+  Texture2D stacked = sky.tables().optical_depth;
+  for (const Texture2D& g : sky.wavelengthOpticalDepth()) {
+    if (g.width != stacked.width) throw Error(ErrorKind::Internal, "wavelength optical depths of another width");
     stacked.texels.insert(stacked.texels.end(), g.texels.begin(), g.texels.end());
     stacked.height += g.height;
   }
@@ -100,16 +98,14 @@ SkyGlResources::SkyGlResources(const Sky& sky, GpuTablePrecision precision) : co
   const Texture4D& shape = t.single_rayleigh;
   Texture2D slice_scales(std::max(shape.mu_s_size, 1), std::max(shape.r_size, 1));
   for (Spectrum& scale : slice_scales.texels) scale = Spectrum(1.0f);
-  textures_ = {upload2D(t.optical_depth, "optical_depth"),
+  textures_ = {upload2D(opticalDepthRows(sky), "optical_depth"),
                upload4D(t.single_rayleigh, "single_rayleigh", channels, precision, slice_scales.texels, 0),
                upload4D(t.single_mie, "single_mie", channels, precision, slice_scales.texels, 1),
                upload4D(t.multiple_scattering, "multiple_scattering", channels, precision, slice_scales.texels, 2),
                upload4D(t.multiple_density, "multiple_scattering_density", channels, precision, slice_scales.texels, 3),
                upload2D(t.irradiance, "irradiance"),
-               upload2D(slice_scales, "slice scales"),
-               upload2D(stackedRows(sky.wavelengthOpticalDepth()), "wavelength optical depth")};
-  targets_ = {GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_3D,
-              GL_TEXTURE_3D, GL_TEXTURE_2D, GL_TEXTURE_2D, GL_TEXTURE_2D};
+               upload2D(slice_scales, "slice scales")};
+  targets_ = {GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_3D, GL_TEXTURE_2D, GL_TEXTURE_2D};
   glGenBuffers(1, &uniform_buffer_);
   glBindBuffer(GL_UNIFORM_BUFFER, uniform_buffer_);
   glBufferData(GL_UNIFORM_BUFFER, sizeof(constants_), &constants_, GL_STATIC_DRAW);

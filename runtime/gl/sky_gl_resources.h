@@ -4,8 +4,8 @@
 // its constants in a uniform buffer (SkyUniformBlock). The 4D tables are
 // half floats with a power of two per (r, mu_s) slice by default, or
 // RGBA32F on request (runtime/tables/gpu_tables.h: formats and sizes); the 2D
-// tables, a colour bake's wavelength optical depths (its groups' tables
-// one below the other) and the slice scales are RGBA32F. Lanes are the bake's channels in
+// tables and the slice scales are RGBA32F; a colour bake's optical-depth
+// texture holds its wavelength groups' tables below its X, Y, Z one. Lanes are the bake's channels in
 // its channel order. Needs a current OpenGL 3.3 core context; everything is
 // deleted with this object.
 #pragma once
@@ -20,9 +20,9 @@ namespace skybake::gl {
 
 // The tables' sampler names in the GLSL, in texture-unit order from the
 // first unit bind() is given.
-inline constexpr std::array<const char*, 8> kSkySamplerNames = {
-    "skybake_optical_depth",    "skybake_single_rayleigh", "skybake_single_mie",   "skybake_multiple_scattering",
-    "skybake_multiple_density", "skybake_irradiance",      "skybake_slice_scales", "skybake_wavelength_optical_depth"};
+inline constexpr std::array<const char*, 7> kSkySamplerNames = {
+    "skybake_optical_depth",    "skybake_single_rayleigh", "skybake_single_mie",  "skybake_multiple_scattering",
+    "skybake_multiple_density", "skybake_irradiance",      "skybake_slice_scales"};
 inline constexpr const char* kSkyUniformBlockName = "SkybakeAtmosphere";
 
 class SkyGlResources {
@@ -36,7 +36,7 @@ class SkyGlResources {
   SkyGlResources& operator=(const SkyGlResources&) = delete;
 
   // Makes `program` current and binds the tables to texture units
-  // first_unit .. first_unit + 7 and the constants to uniform-buffer
+  // first_unit .. first_unit + 6 and the constants to uniform-buffer
   // binding point `block_binding`.
   void bind(unsigned program, int first_unit = 0, unsigned block_binding = 0) const;
 

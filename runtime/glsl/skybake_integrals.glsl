@@ -82,22 +82,12 @@ bool skybakeNextPiece(inout SkybakePieces p, out float piece_start, out float pi
   return false;
 }
 
-// Optical depth from (r, mu) to the top for pass g of the single-scattering
-// integral: the channels' own (a bake without wavelength groups has one
-// pass), or a colour bake's wavelength group g's.
-vec4 skybakePassOpticalDepthToTop(int g, float r, float mu) {
-  return skybake_wavelength_groups.x == 0 ? skybakeOpticalDepthToTop(r, mu)
-                                          : skybakeWavelengthOpticalDepthToTop(g, r, mu);
-}
-
 // Single scattering at the 4-point rule's nodes over [a, b] of the ray
-// (r, mu) with the sun at (mu_s, nu), pass g (skybakePassOpticalDepthToTop;
-// start_to_top_up and _down the ray's own legs to the top in it), added to
-// rayleigh and mie without the factors common to every node, or for a
-// colour bake's wavelength group weighted into X, Y, Z with each
-// wavelength's sun and scattering coefficient
-// (skybake_wavelength_*_to_xyz); with a moon (an eclipse) also to
-// rayleigh_past_moon and mie_past_moon with the sunlight at each node
+// (r, mu) with the sun at (mu_s, nu), in pass g's lanes
+// (skybakePassOpticalDepthToTop; start_to_top_up and _down the ray's own
+// legs to the top in it), added to rayleigh and mie without the factors
+// common to every node (the pass's weights); with a moon (an eclipse) also
+// to rayleigh_past_moon and mie_past_moon with the sunlight at each node
 // dimmed by the part of the disk the moon hides there.
 void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, bool ray_intersects_ground, int g,
                                     vec4 start_to_top_up, vec4 start_to_top_down, float a, float b,
@@ -106,7 +96,6 @@ void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, boo
   float bottom = skybake_radii_m.x;
   float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
   float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
-  bool to_xyz = skybake_wavelength_groups.x > 0;
   float h = b - a;
   for (int k = 0; k < SKYBAKE_GAUSS_NODES; ++k) {
     float t = a + 0.5 * h * (1.0 + gauss_abscissa[k]);
@@ -126,18 +115,8 @@ void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, boo
       vec4 along = reversed ? max(skybakePassOpticalDepthToTop(g, r_t, -mu_t) - start_to_top_down, vec4(0.0))
                             : max(start_to_top_up - skybakePassOpticalDepthToTop(g, r_t, mu_t), vec4(0.0));
       vec4 light = exp(-(skybakePassOpticalDepthToTop(g, r_t, mu_s_t) + along)) * visible;
-      vec4 rayleigh_light = light;
-      vec4 mie_light = light;
-      if (to_xyz) {
-        rayleigh_light = vec4(dot(skybake_wavelength_rayleigh_to_xyz[3 * g], light),
-                              dot(skybake_wavelength_rayleigh_to_xyz[3 * g + 1], light),
-                              dot(skybake_wavelength_rayleigh_to_xyz[3 * g + 2], light), 0.0);
-        mie_light = vec4(dot(skybake_wavelength_mie_to_xyz[3 * g], light),
-                         dot(skybake_wavelength_mie_to_xyz[3 * g + 1], light),
-                         dot(skybake_wavelength_mie_to_xyz[3 * g + 2], light), 0.0);
-      }
-      vec4 rayleigh_term = rayleigh_light * (w * skybakeRayleighDensity(altitude_m));
-      vec4 mie_term = mie_light * (w * skybakeMieDensity(altitude_m));
+      vec4 rayleigh_term = light * (w * skybakeRayleighDensity(altitude_m));
+      vec4 mie_term = light * (w * skybakeMieDensity(altitude_m));
       rayleigh += rayleigh_term;
       mie += mie_term;
       if (moon.moon.radius_m > 0.0) {
@@ -156,6 +135,19 @@ struct SkybakeSingleScatteringPastMoon {
   SkybakeSingleScattering past_moon;
 };
 
+// Pass g's lanes of Rayleigh and Mie single scattering in the channels
+// (skybake_pass_*_weights: row c of a pass's weights is what each of its
+// lanes adds to channel c).
+vec4 skybakePassRayleigh(int g, vec4 lanes) {
+  return vec4(dot(skybake_pass_rayleigh_weights[4 * g], lanes), dot(skybake_pass_rayleigh_weights[4 * g + 1], lanes),
+              dot(skybake_pass_rayleigh_weights[4 * g + 2], lanes), dot(skybake_pass_rayleigh_weights[4 * g + 3], lanes));
+}
+
+vec4 skybakePassMie(int g, vec4 lanes) {
+  return vec4(dot(skybake_pass_mie_weights[4 * g], lanes), dot(skybake_pass_mie_weights[4 * g + 1], lanes),
+              dot(skybake_pass_mie_weights[4 * g + 2], lanes), dot(skybake_pass_mie_weights[4 * g + 3], lanes));
+}
+
 // Single scattering over [t_start, t_end] of the ray (r, mu) with the sun at
 // (mu_s, nu), seen from the ray's start; `segments` sub-intervals over the
 // whole of it, each cut where the ray crosses the edge of the planet's
@@ -168,43 +160,38 @@ SkybakeSingleScatteringPastMoon skybakeIntegrateSingleScattering(float r, float 
                                                                  bool ray_intersects_ground, float t_start,
                                                                  float t_end, int segments,
                                                                  SkybakeMoonAlongRay moon) {
-  vec4 rayleigh = vec4(0.0);
-  vec4 mie = vec4(0.0);
-  vec4 rayleigh_past_moon = vec4(0.0);
-  vec4 mie_past_moon = vec4(0.0);
-  SkybakeSingleScattering none = SkybakeSingleScattering(rayleigh, mie);
+  SkybakeSingleScattering none = SkybakeSingleScattering(vec4(0.0), vec4(0.0));
   // A light shaft's shadow can reach past the ray's end: nothing is lit.
   if (!(t_end > t_start)) return SkybakeSingleScatteringPastMoon(none, none);
-  // One pass over the ray per wavelength group of a colour bake (the same
-  // nodes each time), one for any other bake; each pass's pieces
-  // (skybakeNextPiece) cut at the shadow's crossings into parts. All in
-  // one loop, each iteration integrating one part (fetching the next piece
-  // first where the last one is done): llvmpipe counts every loop's
-  // iterations against one limit (65535 per shader run), which an
-  // eclipse's irradiance, 48 such integrals and its kernel, comes near.
-  int passes = max(skybake_wavelength_groups.x, 1);
-  int g = 0;
-  // The ray's own legs to the top, the same at every node of a pass.
-  vec4 start_to_top_up = skybakePassOpticalDepthToTop(g, r, mu);
-  vec4 start_to_top_down = skybakePassOpticalDepthToTop(g, r, -mu);
+  SkybakeSingleScatteringPastMoon sums = SkybakeSingleScatteringPastMoon(none, none);
   SkybakeShadowCrossings crossings = skybakePlanetShadowCrossings(r, mu, mu_s, nu, t_end);
-  SkybakePieces pieces = skybakePieces(r, mu, t_start, t_end, segments);
-  float a = t_start;
-  float b = t_start;
-  float part_start = t_start;
-  while (true) {
-    if (!(part_start < b)) {
-      if (skybakeNextPiece(pieces, a, b)) {
+  // One pass over the ray per wavelength group of a colour bake (the same
+  // nodes each time), one for any other bake, each pass's sums weighted
+  // into the channels as it ends (the weights are linear, the same at every
+  // node). The pass count is uniform, so the weights' rows are read once.
+  for (int g = 0; g < skybake_integral_passes.x; ++g) {
+    vec4 rayleigh = vec4(0.0);
+    vec4 mie = vec4(0.0);
+    vec4 rayleigh_past_moon = vec4(0.0);
+    vec4 mie_past_moon = vec4(0.0);
+    // The ray's own legs to the top, the same at every node of the pass.
+    vec4 start_to_top_up = skybakePassOpticalDepthToTop(g, r, mu);
+    vec4 start_to_top_down = skybakePassOpticalDepthToTop(g, r, -mu);
+    SkybakePieces pieces = skybakePieces(r, mu, t_start, t_end, segments);
+    // The pieces (skybakeNextPiece) cut at the shadow's crossings into
+    // parts, one part per iteration (the next piece fetched first where the
+    // last is done): llvmpipe counts every loop's iterations against one
+    // limit (65535 per shader run), which an eclipse's irradiance, 48 such
+    // integrals and its kernel, comes near; a loop of parts inside a loop
+    // of pieces cost it three iterations per piece.
+    float a = t_start;
+    float b = t_start;
+    float part_start = t_start;
+    while (true) {
+      if (!(part_start < b)) {
+        if (!skybakeNextPiece(pieces, a, b)) break;
         part_start = a;
-      } else {
-        if (g + 1 >= passes) break;
-        g += 1;
-        start_to_top_up = skybakePassOpticalDepthToTop(g, r, mu);
-        start_to_top_down = skybakePassOpticalDepthToTop(g, r, -mu);
-        pieces = skybakePieces(r, mu, t_start, t_end, segments);
       }
-    }
-    if (part_start < b) {
       // Up to the first crossing inside the piece's rest, or its end; one
       // call site, so that shader compilers inline the rule once.
       float part_end = b;
@@ -216,15 +203,12 @@ SkybakeSingleScatteringPastMoon skybakeIntegrateSingleScattering(float r, float 
                                      part_start, part_end, moon, rayleigh, mie, rayleigh_past_moon, mie_past_moon);
       part_start = part_end;
     }
+    sums.plain.rayleigh += skybakePassRayleigh(g, rayleigh);
+    sums.plain.mie += skybakePassMie(g, mie);
+    sums.past_moon.rayleigh += skybakePassRayleigh(g, rayleigh_past_moon);
+    sums.past_moon.mie += skybakePassMie(g, mie_past_moon);
   }
-  // A colour bake's wavelength groups weighed each wavelength's sun and
-  // coefficients in at the nodes.
-  bool weighed = skybake_wavelength_groups.x > 0;
-  vec4 rayleigh_factor = weighed ? vec4(1.0) : skybake_sun_irradiance * skybake_rayleigh_scattering;
-  vec4 mie_factor = weighed ? vec4(1.0) : skybake_sun_irradiance * skybake_mie_scattering;
-  return SkybakeSingleScatteringPastMoon(
-      SkybakeSingleScattering(rayleigh * rayleigh_factor, mie * mie_factor),
-      SkybakeSingleScattering(rayleigh_past_moon * rayleigh_factor, mie_past_moon * mie_factor));
+  return sums;
 }
 
 // The same without a moon.

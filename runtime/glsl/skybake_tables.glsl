@@ -129,14 +129,15 @@ vec4 skybakeOpticalDepthToTop(float r, float mu) {
   return skybakeOpticalDepthAtCoord(at, skybakeOpticalDepthMuCoord(at, mu));
 }
 
-// The same from a colour bake's wavelength group g's table
-// (skybake_wavelength_optical_depth): one lane per wavelength of the group.
-vec4 skybakeWavelengthOpticalDepthToTop(int group, float r, float mu) {
+// The same from the table of the single-scattering integral's pass g
+// (skybake_integral_passes): the bake's own for a bake of one pass, a
+// colour bake's wavelength group g's (one lane per wavelength) otherwise.
+vec4 skybakePassOpticalDepthToTop(int g, float r, float mu) {
   SkybakeOpticalDepthAtR at = skybakeOpticalDepthAtR(r);
   SkybakeAxisLerp x = skybakeAxisLerp(skybakeOpticalDepthMuCoord(at, mu), skybake_table_2d_size.x);
-  int first_row = group * skybake_table_2d_size.y;
-  vec4 a = skybakeSampleRow(skybake_wavelength_optical_depth, x, first_row + at.r_lerp.i0);
-  vec4 b = skybakeSampleRow(skybake_wavelength_optical_depth, x, first_row + at.r_lerp.i1);
+  int first_row = skybake_integral_passes.y + g * skybake_integral_passes.z;
+  vec4 a = skybakeSampleRow(skybake_optical_depth, x, first_row + at.r_lerp.i0);
+  vec4 b = skybakeSampleRow(skybake_optical_depth, x, first_row + at.r_lerp.i1);
   return a + (b - a) * at.r_lerp.w1;
 }
 

@@ -1,10 +1,12 @@
 #include "runtime/physics/single_scattering_ray.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
+#include "data_formats/error.h"
 #include "runtime/physics/atmosphere_media.h"
 #include "runtime/physics/ray_quadrature.h"
 #include "runtime/sky_lookup_constants.h"
@@ -25,7 +27,14 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
   const AtmosphereMedia media(a);
   const double r = ray.r, mu = ray.mu;
   auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };
-  SpectrumD rayleigh(0.0), mie(0.0);
+  // Per pass: the bake's own lanes, or each wavelength group's of a colour
+  // bake, weighted into X, Y, Z once summed (the weights are the same at
+  // every node).
+  const size_t passes = colour == nullptr ? 1 : colour->optical_depth.size();
+  if (passes > kMaxWavelengthGroups) throw Error(ErrorKind::Internal, "integrateSingleScattering: too many groups");
+  std::array<SpectrumD, kMaxWavelengthGroups> rayleigh, mie;
+  rayleigh.fill(SpectrumD(0.0));
+  mie.fill(SpectrumD(0.0));
   auto node = [&](double t, double w) {
     const double r_t = radiusAt(t);
     const double altitude = r_t - a.bottom_radius_m;
@@ -36,26 +45,15 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     const double visible = sun.visibleFraction(mu_s_t) * (moon ? moon->visibleSunFraction(t) : 1.0);
     if (visible <= 0.0) return;  // in the planet's shadow or the moon's umbra
     const double sun_coord = sun.muCoord(mu_s_t);
-    auto lightFrom = [&](const Texture2D& depths) {
-      const Spectrum depth = sun.opticalDepth(depths, sun_coord) +
-                             sampler.opticalDepthAlongRay(depths, r, mu, t, ray.ray_intersects_ground);
-      return SpectrumD(glm::exp(-depth) * static_cast<float>(visible));
-    };
     const double rayleigh_weight = w * media.rayleighDensity(altitude);
     const double mie_weight = w * media.mieDensity(altitude);
-    if (colour == nullptr) {
-      const SpectrumD light = lightFrom(optical_depth);
-      rayleigh += light * rayleigh_weight;
-      mie += light * mie_weight;
-      return;
-    }
-    for (size_t g = 0; g < colour->optical_depth.size(); ++g) {
-      const SpectrumD light = lightFrom(colour->optical_depth[g]);
-      const WavelengthGroupToXyz& to_xyz = colour->to_xyz[g];
-      for (int c = 0; c < kCieXyzChannels; ++c) {
-        rayleigh[c] += glm::dot(to_xyz.rayleigh[c], light) * rayleigh_weight;
-        mie[c] += glm::dot(to_xyz.mie[c], light) * mie_weight;
-      }
+    for (size_t g = 0; g < passes; ++g) {
+      const Texture2D& depths = colour == nullptr ? optical_depth : colour->optical_depth[g];
+      const Spectrum depth = sun.opticalDepth(depths, sun_coord) +
+                             sampler.opticalDepthAlongRay(depths, r, mu, t, ray.ray_intersects_ground);
+      const SpectrumD light(glm::exp(-depth) * static_cast<float>(visible));
+      rayleigh[g] += light * rayleigh_weight;
+      mie[g] += light * mie_weight;
     }
   };
   // The rule's pieces come from the ray alone; the shadow's edges cut them.
@@ -63,10 +61,19 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
   forEachOpticallyThinNodeCutAt(
       t_start, t_end, segments, -r * mu, crossings.distance.data(), crossings.count,
       [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); }, node);
-  // Each wavelength's sun and coefficients are in its X, Y, Z weights.
-  if (colour != nullptr) return {Spectrum(rayleigh), Spectrum(mie)};
-  return {Spectrum(rayleigh) * a.sun_irradiance * a.rayleigh_scattering,
-          Spectrum(mie) * a.sun_irradiance * a.mie_scattering};
+  if (colour == nullptr) {
+    return {Spectrum(rayleigh[0]) * a.sun_irradiance * a.rayleigh_scattering,
+            Spectrum(mie[0]) * a.sun_irradiance * a.mie_scattering};
+  }
+  SpectrumD rayleigh_xyz(0.0), mie_xyz(0.0);
+  for (size_t g = 0; g < passes; ++g) {
+    const WavelengthGroupToXyz& to_xyz = colour->to_xyz[g];
+    for (int c = 0; c < kCieXyzChannels; ++c) {
+      rayleigh_xyz[c] += glm::dot(to_xyz.rayleigh[c], rayleigh[g]);
+      mie_xyz[c] += glm::dot(to_xyz.mie[c], mie[g]);
+    }
+  }
+  return {Spectrum(rayleigh_xyz), Spectrum(mie_xyz)};
 }
 
 }  // namespace skybake

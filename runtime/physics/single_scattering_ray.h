@@ -44,6 +44,7 @@ struct SunlitRay {
 // X, Y, Z what one unit of each lane's integral adds to it: the
 // colour-matching weight times the sun's irradiance times the scattering
 // coefficient (W m^-2 per unit, Rayleigh and Mie apart).
+inline constexpr size_t kMaxWavelengthGroups = kMaxColourWavelengths / kMaxChannels;
 struct WavelengthGroupToXyz {
   std::array<SpectrumD, kCieXyzChannels> rayleigh;
   std::array<SpectrumD, kCieXyzChannels> mie;
@@ -61,8 +62,9 @@ struct ColourWavelengths {
 // hides there (an eclipse); its origin, dir and sun_dir must be the 3D form
 // of `ray`. With `colour` (a colour bake's wavelengths), the sunlight and
 // view-ray transmittance at each node are each wavelength's, from its own
-// optical depths, summed into X, Y, Z at the node; `optical_depth` and
-// `a` (the X, Y, Z atmosphere) then only place the nodes.
+// optical depths, each group's sums weighted into X, Y, Z (at most
+// kMaxWavelengthGroups groups); `optical_depth` and `a` (the X, Y, Z
+// atmosphere) then only place the nodes.
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
                                            double t_end, int segments, const MoonAlongRay* moon = nullptr,
