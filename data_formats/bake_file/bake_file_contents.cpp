@@ -65,14 +65,11 @@ std::vector<double> profileNumbers(const DensityProfile& profile) {
   return numbers;
 }
 
-// A per-channel quantity's values of `groups`' lanes one after the other.
+// groupLaneValues as a float attribute's values.
 std::vector<float> groupValues(const std::vector<AtmosphereParameters>& groups,
                                Spectrum AtmosphereParameters::*quantity) {
-  std::vector<float> values;
-  for (const AtmosphereParameters& g : groups) {
-    for (int c = 0; c < g.laneCount(); ++c) values.push_back((g.*quantity)[c]);
-  }
-  return values;
+  const std::vector<double> values = groupLaneValues(groups, quantity);
+  return std::vector<float>(values.begin(), values.end());
 }
 
 // A per-channel quantity's values in channel order: the atmosphere's lanes,

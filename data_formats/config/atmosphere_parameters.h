@@ -123,6 +123,18 @@ struct AtmosphereParameters {
   bool operator==(const AtmosphereParameters&) const = default;
 };
 
+// A per-channel quantity's values of `groups`' lanes one after the other:
+// each wavelength's value, in wavelength order, for the wavelength groups
+// of a colour or spectral bake.
+inline std::vector<double> groupLaneValues(const std::vector<AtmosphereParameters>& groups,
+                                           Spectrum AtmosphereParameters::*quantity) {
+  std::vector<double> values;
+  for (const AtmosphereParameters& g : groups) {
+    for (int l = 0; l < g.laneCount(); ++l) values.push_back((g.*quantity)[l]);
+  }
+  return values;
+}
+
 // Texel counts. Transmittance and irradiance are 2D (mu or mu_s across, r
 // down); scattering is 4D (r, mu, mu_s, nu).
 struct TextureSizes {

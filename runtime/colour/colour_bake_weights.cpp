@@ -7,19 +7,6 @@
 #include "data_formats/error.h"
 
 namespace skybake::colour {
-namespace {
-
-// Each wavelength's value of a per-wavelength quantity, in wavelength order.
-std::vector<double> valuesOf(const std::vector<AtmosphereParameters>& groups,
-                             Spectrum AtmosphereParameters::*quantity) {
-  std::vector<double> values;
-  for (const AtmosphereParameters& g : groups) {
-    for (int l = 0; l < g.channelCount(); ++l) values.push_back((g.*quantity)[l]);
-  }
-  return values;
-}
-
-}  // namespace
 
 ColourBakeWeights::ColourBakeWeights(const std::vector<AtmosphereParameters>& groups) {
   for (const AtmosphereParameters& g : groups) {
@@ -27,7 +14,7 @@ ColourBakeWeights::ColourBakeWeights(const std::vector<AtmosphereParameters>& gr
     wavelengths_nm_.insert(wavelengths_nm_.end(), g.wavelengths_nm.begin(), g.wavelengths_nm.end());
   }
   const SpectralToXyz to_xyz(wavelengths_nm_);
-  const std::vector<double> sun = valuesOf(groups, &AtmosphereParameters::sun_irradiance);
+  const std::vector<double> sun = groupLaneValues(groups, &AtmosphereParameters::sun_irradiance);
   const size_t n = wavelengths_nm_.size();
   for (int c = 0; c < kCieXyzChannels; ++c) {
     colour_matching_[c].resize(n);
@@ -75,7 +62,7 @@ AtmosphereParameters ColourBakeWeights::cieXyzAtmosphere(const AtmosphereParamet
   a.channel_kind = ChannelKind::CieXyz;
   a.wavelengths_nm = wavelengths_nm_;
   auto sunlightMean = [&](Spectrum AtmosphereParameters::*quantity) {
-    const std::vector<double> values = valuesOf(groups, quantity);
+    const std::vector<double> values = groupLaneValues(groups, quantity);
     Spectrum s(0.0f);
     for (int c = 0; c < kCieXyzChannels; ++c) {
       double mean = 0.0;
@@ -89,7 +76,7 @@ AtmosphereParameters ColourBakeWeights::cieXyzAtmosphere(const AtmosphereParamet
   a.mie_scattering = sunlightMean(&AtmosphereParameters::mie_scattering);
   a.mie_extinction = sunlightMean(&AtmosphereParameters::mie_extinction);
   a.absorption_extinction = sunlightMean(&AtmosphereParameters::absorption_extinction);
-  const std::vector<double> sun = valuesOf(groups, &AtmosphereParameters::sun_irradiance);
+  const std::vector<double> sun = groupLaneValues(groups, &AtmosphereParameters::sun_irradiance);
   a.sun_irradiance = Spectrum(0.0f);
   for (int c = 0; c < kCieXyzChannels; ++c) {
     double integral = 0.0;
