@@ -238,7 +238,9 @@ std::string ErrorReport::table() const {
       double ref = 0.0;
       for (size_t c = first; c < last; ++c) {
         const ErrorStats& s = row.channels[c];
-        out += fmt::format("  {:>18}", fmt::format("{:.2f} / {:+.2f}", 100 * s.rms, 100 * s.mean));
+        // A channel whose every value lies below the band's floor has no error to show.
+        out += fmt::format(
+            "  {:>18}", s.count == 0 ? std::string("-") : fmt::format("{:.2f} / {:+.2f}", 100 * s.rms, 100 * s.mean));
         ref = std::max(ref, s.reference_standard_error);
       }
       out += fmt::format("  {:>11.2f}\n", 100 * ref);
