@@ -15,9 +15,8 @@ namespace skybake::gl {
 // refused (Error(BadInput)) by skyUniformBlock.
 inline constexpr int kMaxGlDensityLayers = 8;
 // Passes of the single-scattering integral the uniform block holds: a
-// colour bake's wavelength groups, every colour bake's
-// (kMaxColourWavelengths in groups of kMaxChannels).
-inline constexpr int kMaxGlIntegralPasses = kMaxColourWavelengths / kMaxChannels;
+// colour bake's wavelength groups, as many as the C++ integral takes.
+inline constexpr int kMaxGlIntegralPasses = static_cast<int>(kMaxWavelengthGroups);
 
 // The uniform block SkybakeAtmosphere in std140 layout, its members those
 // of runtime/glsl/skybake_uniform_block.inc (the one description, with each
