@@ -39,7 +39,7 @@ struct SunlitRay {
 // sunlight reaching each point and the view ray's transmittance depend on
 // the wavelength, and summing them into X, Y, Z before the product (the
 // X, Y, Z atmosphere's effective depths and coefficients) reads twilight
-// skies 5 to 20 % off (docs/COLOUR_BAKES.md). Per wavelength group g (of at
+// skies 3 to 20 % off (docs/COLOUR_BAKES.md). Per wavelength group g (of at
 // most kMaxChannels wavelengths): its optical-depth table, and for each of
 // X, Y, Z what one unit of each lane's integral adds to it: the
 // colour-matching weight times the sun's irradiance times the scattering
