@@ -27,6 +27,9 @@ tool_packages=(
   build-essential cmake pkg-config
   libopenexr-dev libopenimageio-dev libglm-dev libcli11-dev
   libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
+  # skybake export --format web gzips the tables; skybake view serves its
+  # page with cpp-httplib.
+  zlib1g-dev libcpp-httplib-dev
 )
 # The rest of the build and the test suite.
 test_packages=(
@@ -58,6 +61,9 @@ test_packages=(
   # tests/gl/glsl_spirv_test.sh: the GLSL compiles to SPIR-V (glslangValidator)
   # and translates to HLSL and MSL (spirv-cross).
   glslang-tools spirv-cross
+  # tests/browser: skybake view and the web export in Chromium, driven by
+  # Selenium, its WebGL2 on llvmpipe in an Xvfb display the test starts.
+  chromium chromium-driver python3-selenium xvfb
 )
 
 packages=("${tool_packages[@]}")

@@ -22,5 +22,7 @@ Command addValidateCommand(CLI::App& app);
 Command addReferenceCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addStressCommand(CLI::App& app);
+Command addExportCommand(CLI::App& app);
+Command addViewCommand(CLI::App& app);
 
 }  // namespace skybake::cli

@@ -75,7 +75,8 @@ int main(int argc, char** argv) {
   const std::vector<skybake::cli::Command> commands = {
       skybake::cli::addBakeCommand(app),   skybake::cli::addInfoCommand(app),      skybake::cli::addLookupCommand(app),
       skybake::cli::addRenderCommand(app), skybake::cli::addValidateCommand(app),  skybake::cli::addCompareCommand(app),
-      skybake::cli::addStressCommand(app), skybake::cli::addReferenceCommand(app),
+      skybake::cli::addStressCommand(app), skybake::cli::addReferenceCommand(app), skybake::cli::addExportCommand(app),
+      skybake::cli::addViewCommand(app),
   };
 
   try {

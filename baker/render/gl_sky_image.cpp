@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "baker/render/sky_pixels_glsl.h"
 #include "data_formats/error.h"
 #include "runtime/gl/gl_program.h"
 #include "runtime/gl/sky_gl_resources.h"
@@ -18,91 +19,6 @@ namespace {
 // Rows rendered per draw: keeps the framebuffer small (a 16k-wide strip is
 // 64 MiB) and each draw short.
 constexpr int kStripRows = 256;
-
-// directionAtImagePoint and radianceAlong of sky_image.cpp, per pixel
-// centre: every channel of the bake (lanes past its channel count are 0).
-// The sun disk is added afterwards on the CPU (sun_disk_pixels.h), the same
-// for both backends. Under an eclipse (SKYBAKE_RENDER_ECLIPSE defined: the
-// eclipse lookups compile only for the images that need them) a first
-// one-pixel draw (skylight_pass) gives the camera's skylight share, the
-// same for every ray from a camera in the atmosphere, and the image's
-// draws use it, as the CPU backend computes it once per image.
-const char* const kFragmentMain = R"(
-uniform vec2 image_size;          // pixels
-uniform float strip_top_row;      // the first image row (from the top) of this draw
-uniform float strip_rows;         // rows in this draw
-uniform int projection;           // 0 fisheye, 1 latlong, 2 perspective
-uniform float fov_rad;            // fisheye: full cone; perspective: unused (half sizes below)
-uniform float sun_azimuth_rad;
-uniform vec3 forward, right, up;  // perspective camera frame
-uniform vec2 half_size;           // perspective: tan(fov / 2) across, times height / width down
-uniform vec3 camera_m;
-uniform vec3 sun_dir;
-uniform int ground_lit;           // 1: the lit ground is added (the bake has ground irradiance)
-#ifdef SKYBAKE_RENDER_ECLIPSE
-uniform vec4 moon;                // centre (m from the planet's centre), radius (m)
-uniform int skylight_pass;        // 1: this draw writes the camera's skylight share
-uniform int camera_inside;        // 1: every ray starts at the camera, camera_skylight is its share
-uniform vec4 camera_skylight;
-#endif
-layout(location = 0) out vec4 pixel;
-
-vec3 fromZenithAzimuth(float zenith, float azimuth) {
-  return vec3(sin(zenith) * cos(azimuth), sin(zenith) * sin(azimuth), cos(zenith));
-}
-
-bool pixelDirection(vec2 centre, out vec3 dir) {
-  float u = centre.x / image_size.x;
-  float w = centre.y / image_size.y;
-  dir = vec3(0.0, 0.0, 1.0);
-  if (projection == 1) {
-    dir = fromZenithAzimuth(w * SKYBAKE_PI, sun_azimuth_rad + (u - 0.5) * 2.0 * SKYBAKE_PI);
-    return true;
-  }
-  if (projection == 0) {
-    float scale = min(image_size.x, image_size.y);
-    float px = (2.0 * centre.x - image_size.x) / scale;
-    float py = (image_size.y - 2.0 * centre.y) / scale;
-    float rho = sqrt(px * px + py * py);
-    if (rho > 1.0) return false;
-    dir = fromZenithAzimuth(rho * fov_rad * 0.5, sun_azimuth_rad + atan(px, py));
-    return true;
-  }
-  dir = normalize(forward + right * ((2.0 * u - 1.0) * half_size.x) + up * ((1.0 - 2.0 * w) * half_size.y));
-  return true;
-}
-
-void main() {
-#ifdef SKYBAKE_RENDER_ECLIPSE
-  SkybakeMoon eclipse_moon = SkybakeMoon(moon.xyz, moon.w);
-  if (skylight_pass != 0) {
-    pixel = skybakeEclipseSkylight(camera_m, sun_dir, eclipse_moon);
-    return;
-  }
-#endif
-  // Pixel centre in image coordinates, rows from the top.
-  vec2 centre = vec2(gl_FragCoord.x, strip_top_row + (strip_rows - gl_FragCoord.y));
-  vec3 dir;
-  if (!pixelDirection(centre, dir)) {
-    pixel = vec4(0.0);
-    return;
-  }
-#ifdef SKYBAKE_RENDER_ECLIPSE
-  SkybakeRadianceAndTransmittance received;
-  if (camera_inside != 0) {
-    received = ground_lit != 0 ? skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight)
-                               : skybakeSkyRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight);
-  } else {
-    received = ground_lit != 0 ? skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon)
-                               : skybakeSkyRadiance(camera_m, dir, sun_dir, eclipse_moon);
-  }
-#else
-  SkybakeRadianceAndTransmittance received =
-      ground_lit != 0 ? skybakeReceivedRadiance(camera_m, dir, sun_dir) : skybakeSkyRadiance(camera_m, dir, sun_dir);
-#endif
-  pixel = received.radiance;
-}
-)";
 
 GLint at(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
 
@@ -135,7 +51,7 @@ SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const
   const bool eclipse = v.moon.present();
   const gl::GlProgram program(gl::kFullScreenVertexShader, std::string("#version 330 core\n") +
                                                                (eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
-                                                               gl::skyGlslLibrary() + kFragmentMain);
+                                                               gl::skyGlslLibrary() + std::string(skyPixelsGlsl()));
   const GLuint p = program.id();
   glUseProgram(p);
 

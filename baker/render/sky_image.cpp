@@ -129,20 +129,14 @@ SpectralImage renderSkyRadiance(const Sky& sky, const SkyView& v) {
   return image;
 }
 
-namespace {
-
-// Narkowicz's fit of the ACES filmic curve.
-double acesFilm(double x) { return std::clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
-
-}  // namespace
-
 std::vector<unsigned char> encodeForDisplay(const std::vector<float>& linear_rgb, double exposure, ToneMap tone_map) {
+  const int kernel_tone_map = tone_map == ToneMap::Reinhard ? SKYBAKE_TONE_MAP_REINHARD
+                              : tone_map == ToneMap::Aces   ? SKYBAKE_TONE_MAP_ACES
+                                                            : SKYBAKE_TONE_MAP_NONE;
   std::vector<unsigned char> out(linear_rgb.size());
   for (size_t i = 0; i < linear_rgb.size(); ++i) {
-    double v = linear_rgb[i] * exposure;
-    if (tone_map == ToneMap::Reinhard) v = v / (1.0 + v);
-    if (tone_map == ToneMap::Aces) v = acesFilm(v);
-    out[i] = static_cast<unsigned char>(std::lround(colour::srgbEncode(v) * 255.0));
+    const double encoded = kernel::skybakeDisplayValue(linear_rgb[i], exposure, kernel_tone_map);
+    out[i] = static_cast<unsigned char>(std::lround(encoded * 255.0));
   }
   return out;
 }

@@ -169,9 +169,12 @@ vec4 skybakeEclipsedSkyIrradianceShare(vec3 point_m, vec3 sun_dir, SkybakeMoon m
       float phi = 2.0 * SKYBAKE_PI * (float(j) + 0.5 * float(b % 2)) / float(SKYBAKE_ECLIPSE_IRRADIANCE_AZIMUTHS);
       vec3 dir = up * cos_theta + (east * cos(phi) + north * sin(phi)) * sin_theta;
       // Without a moon the eclipse lookup is the plain one: one call site.
+      // (WebGL refuses ?: between structs: the moon is chosen by an if.)
       for (int i = 0; i < 2; ++i) {
-        vec4 radiance = skybakeSkyRadiance(from, dir, sun_dir, i == 0 ? moon : skybakeNoMoon(),
-                                           i == 0 ? skylight : vec4(1.0)).radiance;
+        SkybakeMoon pass_moon = moon;
+        if (i != 0) pass_moon = skybakeNoMoon();
+        vec4 radiance =
+            skybakeSkyRadiance(from, dir, sun_dir, pass_moon, i == 0 ? skylight : vec4(1.0)).radiance;
         if (i == 0)
           eclipsed += radiance;
         else
