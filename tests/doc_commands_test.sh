@@ -87,6 +87,24 @@ for line in "${commands[@]}"; do
       # The built-in Earth, at small sizes.
       words=("${words[0]}" bake "$source_dir/tests/cli/small_earth.toml" "${words[@]:2}") ;;
     "build/baker/skybake bake data_formats/presets/"*) ;;
+    "build/baker/skybake view "*)
+      # A server that runs until Ctrl-C: started here without a browser on
+      # a free port, its page fetched, then stopped as Ctrl-C stops it.
+      (cd "$work" && exec "${words[@]}" --no-open --port 0 >"$work/view_stdout" 2>"$work/stderr") &
+      view_pid=$!
+      for _ in $(seq 600); do grep -q ' at http' "$work/view_stdout" 2>/dev/null && break; sleep 0.1; done
+      url=$(sed -n 's/.* at \(http[^ ]*\) .*/\1/p' "$work/view_stdout")
+      page_ok=0
+      [ -n "$url" ] && /usr/bin/python3 -c "import sys, urllib.request; sys.exit(0 if b'skybake view' in urllib.request.urlopen(sys.argv[1]).read() else 1)" "$url" && page_ok=1
+      kill -INT "$view_pid"
+      wait "$view_pid"
+      status=$?
+      if [ "$page_ok" -eq 1 ] && [ "$status" -eq 0 ]; then
+        passed=$((passed + 1))
+      else
+        fail "$line: page fetched: $page_ok, exit $status: $(tail -3 "$work/stderr")"
+      fi
+      continue ;;
     "build/baker/skybake validate "*)
       words+=(--reference-samples 64 --no-cache) ;;
     "build/baker/skybake "*) ;;

@@ -6,13 +6,10 @@
 
 #include <fmt/format.h>
 
+#include "baker/cli/bake_web_export.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/option_checks.h"
-#include "baker/cli/report_sidecar.h"
-#include "baker/export/web_export.h"
 #include "data_formats/atomic_file.h"
-#include "data_formats/bake_file/bake_file.h"
-#include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "runtime/tables/gpu_tables.h"
 
@@ -52,12 +49,8 @@ void requireExportFolder(const std::filesystem::path& dir) {
 void runExport(const ExportOptions& o) {
   const std::filesystem::path dir = o.output_dir;
   requireExportFolder(dir);
-  const BakeFile header = readBakeFileHeader(o.bake_path);
-  const std::string name = parseConfig(header.config_toml, o.bake_path + " [skybake:config]").name;
-  const Sky sky = Sky::load(o.bake_path);
-  const nlohmann::ordered_json facts = bakeFacts(sky, std::filesystem::path(o.bake_path).filename().string(),
-                                                 header.format_version, name, readReportSidecar(o.bake_path));
-  const std::vector<WebFile> files = webExport(sky, facts);
+  const BakeWebExport web = webExportOfBakeFile(o.bake_path);
+  const std::vector<WebFile>& files = web.files;
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error) throwBadInput(fmt::format("{}: cannot create the folder: {}", dir.string(), error.message()));
@@ -68,7 +61,7 @@ void runExport(const ExportOptions& o) {
     total += file.bytes.size();
   }
   constexpr double kMiB = 1024.0 * 1024.0;
-  const uint64_t upload = gpuUploadBytes(sky.contents(), GpuTablePrecision::Half).total();
+  const uint64_t upload = gpuUploadBytes(web.sky.contents(), GpuTablePrecision::Half).total();
   fmt::print(
       "skybake: exported {} for the web into {}/: {} files, {:.1f} MiB ({:.0f} % of its {:.1f} MiB half-float "
       "GPU upload; the tables gzip-compressed)\n",

@@ -4,23 +4,16 @@
 #include <fcntl.h>
 #include <pthread.h>
 #include <spawn.h>
-#include <sys/wait.h>
 
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 #include <thread>
 
 #include <fmt/format.h>
 
+#include "baker/cli/bake_web_export.h"
 #include "baker/cli/commands.h"
-#include "baker/cli/option_checks.h"
-#include "baker/cli/report_sidecar.h"
-#include "baker/export/web_export.h"
 #include "baker/view/viewer_server.h"
-#include "data_formats/bake_file/bake_file.h"
-#include "data_formats/config/config.h"
-#include "data_formats/error.h"
 
 extern char** environ;
 
@@ -71,12 +64,7 @@ void runView(const ViewOptions& o) {
   // SIGPIPE: a browser that closes a connection mid-file must not end us.
   std::signal(SIGPIPE, SIG_IGN);
 
-  const BakeFile header = readBakeFileHeader(o.bake_path);
-  const std::string name = parseConfig(header.config_toml, o.bake_path + " [skybake:config]").name;
-  const Sky sky = Sky::load(o.bake_path);
-  const nlohmann::ordered_json facts = bakeFacts(sky, std::filesystem::path(o.bake_path).filename().string(),
-                                                 header.format_version, name, readReportSidecar(o.bake_path));
-  ViewerServer server(webExport(sky, facts));
+  ViewerServer server(webExportOfBakeFile(o.bake_path).files);
 
   const int port = server.bind(o.port);
   const std::string url = fmt::format("http://{}:{}/", kViewerHost, port);

@@ -2,7 +2,7 @@
 """skybake export --format web: the manifest states every file and what it
 holds, the tables unpack to the GPU upload's bytes (the manifest's sizes
 and formats), the export is at most that upload's size, and folders that
-hold anything else are refused.
+hold anything else are refused; skybake view's refusals of bad input.
 
 Usage: web_export_test.py SKYBAKE BAKE WORK_DIR"""
 import gzip
@@ -74,6 +74,22 @@ check(refused.returncode == 2 and other in refused.stderr and 'not a skybake web
 check(os.listdir(other) == ['notes.txt'], 'and nothing is written there')
 bad_format = subprocess.run([skybake, 'export', bake, '--format', 'gltf', '-o', out], capture_output=True, text=True)
 check(bad_format.returncode == 2, 'an unknown --format is refused with exit 2')
+
+# skybake view's refusals (its page is tests/browser's): a missing bake, a
+# port out of range, a port another program holds; exit 2 and the reason.
+import socket  # noqa: E402
+missing = subprocess.run([skybake, 'view', os.path.join(work, 'none.exr'), '--no-open'], capture_output=True, text=True)
+check(missing.returncode == 2 and 'none.exr' in missing.stderr, f'view refuses a missing bake ({missing.stderr.strip()})')
+far = subprocess.run([skybake, 'view', bake, '--no-open', '--port', '70000'], capture_output=True, text=True)
+check(far.returncode == 2 and '70000' in far.stderr, f'view refuses port 70000 ({far.stderr.strip()})')
+with socket.socket() as taken:
+    taken.bind(('127.0.0.1', 0))
+    taken.listen()
+    port = taken.getsockname()[1]
+    busy = subprocess.run([skybake, 'view', bake, '--no-open', '--port', str(port)], capture_output=True, text=True,
+                          timeout=120)
+check(busy.returncode == 2 and str(port) in busy.stderr and 'in use' in busy.stderr,
+      f'view refuses a port in use, naming it ({busy.stderr.strip()})')
 
 print(f'web_export: {passed} passed, {len(failures)} failed')
 sys.exit(1 if failures else 0)

@@ -182,22 +182,27 @@ function setSkyUniforms(program, width, height, group) {
     const inside = Math.hypot(...camera) <= top;
     gl.uniform1i(u('camera_inside'), inside ? 1 : 0);
     gl.uniform1i(u('skylight_pass'), 0);
-    gl.uniform4fv(u('camera_skylight'), inside ? cameraSkylight(program) : [1, 1, 1, 1]);
+    const key = JSON.stringify([camera, sunDirection(), moonOf(camera), bake.groups.indexOf(group)]);
+    gl.uniform4fv(u('camera_skylight'), inside ? cameraSkylight(program, key) : [1, 1, 1, 1]);
   }
 }
 
 // The camera's skylight share under the eclipse: one pixel of the
-// skylight pass, as render draws it.
-function cameraSkylight(program) {
-  const pixel = floatTarget(1, 1);
+// skylight pass, as render draws it, into `skylightPixel` (made before the
+// tables are bound: making a texture binds it on the active unit).
+let skylightPixel = null;
+const skylightShares = new Map();  // by camera, sun, moon and group: the same for every frame of one view
+function cameraSkylight(program, key) {
+  if (skylightShares.has(key)) return skylightShares.get(key);
+  if (skylightShares.size > 64) skylightShares.clear();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, skylightPixel.framebuffer);
   gl.viewport(0, 0, 1, 1);
   gl.uniform1i(gl.getUniformLocation(program, 'skylight_pass'), 1);
   gl.drawArrays(gl.TRIANGLES, 0, 3);
   const share = new Float32Array(4);
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.FLOAT, share);
   gl.uniform1i(gl.getUniformLocation(program, 'skylight_pass'), 0);
-  gl.deleteTexture(pixel.texture);
-  gl.deleteFramebuffer(pixel.framebuffer);
+  skylightShares.set(key, share);
   return share;
 }
 
@@ -205,6 +210,7 @@ function cameraSkylight(program) {
 // pixel (x, y) from the image's top).
 function drawRadiance(group, target, pixel = null) {
   const program = skyProgram(state.moon);
+  if (state.moon && !skylightPixel) skylightPixel = floatTarget(1, 1);
   bindSkybakeGroup(gl, program, group);
   gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
   setSkyUniforms(program, target.width, target.height, group);
@@ -472,6 +478,15 @@ function resize() {
     if (bake) requestFrame(kPreviewScale);
   }
 }
+
+// A context the browser took back (its GPU reset it: on a software
+// renderer, work over about 10 s, such as compiling the eclipse shaders)
+// cannot draw again: say so rather than show a frozen frame.
+canvas.addEventListener('webglcontextlost', (event) => {
+  event.preventDefault();
+  viewer.error = 'the browser reset WebGL (a frame or shader compile took too long for its GPU watchdog); reload the page';
+  statusLine.innerHTML = `<span class="error">${viewer.error}</span>`;
+});
 
 let skyPixelsSource = '';
 async function start() {
