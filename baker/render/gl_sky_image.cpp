@@ -49,9 +49,11 @@ GlSkyImageRenderer::GlSkyImageRenderer() : context_(std::make_unique<gl::Headles
 SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const {
   const gl::SkyGlResources resources(sky);
   const bool eclipse = v.moon.present();
-  const gl::GlProgram program(gl::kFullScreenVertexShader, std::string("#version 330 core\n") +
-                                                               (eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
-                                                               gl::skyGlslLibrary() + std::string(skyPixelsGlsl()));
+  const gl::GlProgram program(gl::kFullScreenVertexShader,
+                              std::string("#version 330 core\n") +
+                                  (eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
+                                  (sky.outputs().ground_irradiance ? "" : "#define SKYBAKE_RENDER_SKY_ONLY 1\n") +
+                                  gl::skyGlslLibrary() + std::string(skyPixelsGlsl()));
   const GLuint p = program.id();
   glUseProgram(p);
 
@@ -76,7 +78,6 @@ SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const
   glUniform3f(at(p, "camera_m"), static_cast<float>(camera.x), static_cast<float>(camera.y),
               static_cast<float>(camera.z));
   glUniform3f(at(p, "sun_dir"), static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z));
-  glUniform1i(at(p, "ground_lit"), sky.outputs().ground_irradiance ? 1 : 0);
 
   const int strip_rows = std::min(v.height, kStripRows);
   GLuint colour = 0, framebuffer = 0;

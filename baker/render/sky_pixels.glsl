@@ -21,7 +21,6 @@ uniform vec3 forward, right, up;  // perspective camera frame
 uniform vec2 half_size;           // perspective: tan(fov / 2) across, times height / width down
 uniform vec3 camera_m;
 uniform vec3 sun_dir;
-uniform int ground_lit;           // 1: the lit ground is added (the bake has ground irradiance)
 // The sun disk: 0 leaves it out (`skybake render` adds it on the CPU);
 // N > 0 counts it on N x N points of each pixel near the sun, each seeing
 // the sun's radiance through the air along the pixel centre's ray.
@@ -105,26 +104,32 @@ void main() {
     pixel = vec4(0.0);
     return;
   }
-  // (WebGL refuses ?: between structs: if and else choose the lookup.)
-  SkybakeRadianceAndTransmittance received;
+  // What the pixel receives: sky and lit ground, or where the bake left
+  // out ground irradiance (SKYBAKE_RENDER_SKY_ONLY defined) the air alone.
+  // Chosen when compiling: the sky's lookup is most of the shader, and a
+  // runtime choice between the two lookups would compile it twice.
+  // (WebGL also refuses ?: between structs.)
 #ifdef SKYBAKE_RENDER_ECLIPSE
+  SkybakeRadianceAndTransmittance received;
+#ifdef SKYBAKE_RENDER_SKY_ONLY
   if (camera_inside != 0) {
-    if (ground_lit != 0) {
-      received = skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight);
-    } else {
-      received = skybakeSkyRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight);
-    }
-  } else if (ground_lit != 0) {
-    received = skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon);
+    received = skybakeSkyRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight);
   } else {
     received = skybakeSkyRadiance(camera_m, dir, sun_dir, eclipse_moon);
   }
 #else
-  if (ground_lit != 0) {
-    received = skybakeReceivedRadiance(camera_m, dir, sun_dir);
+  if (camera_inside != 0) {
+    received = skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon, camera_skylight);
   } else {
-    received = skybakeSkyRadiance(camera_m, dir, sun_dir);
+    received = skybakeReceivedRadiance(camera_m, dir, sun_dir, eclipse_moon);
   }
+#endif
+#else
+#ifdef SKYBAKE_RENDER_SKY_ONLY
+  SkybakeRadianceAndTransmittance received = skybakeSkyRadiance(camera_m, dir, sun_dir);
+#else
+  SkybakeRadianceAndTransmittance received = skybakeReceivedRadiance(camera_m, dir, sun_dir);
+#endif
 #endif
   pixel = received.radiance;
   if (sun_disk_subsamples > 0) {

@@ -130,8 +130,11 @@ let targets = null;  // radiance, and two colour targets to add groups into
 function skyProgram(eclipse) {
   const key = eclipse ? 'eclipse' : 'plain';
   if (!programs[key]) {
-    programs[key] = compileProgram(gl, fullScreenVertexShader, skybakeFragmentSource(
-      bake, skyPixelsSource, eclipse ? '#define SKYBAKE_RENDER_ECLIPSE 1\n' : ''));
+    // The lit ground where the bake has ground irradiance, as render draws it.
+    const outputs = bake.groups[0].manifest.uniform_block.members.find((m) => m.name === 'skybake_outputs').values;
+    const defines = (eclipse ? '#define SKYBAKE_RENDER_ECLIPSE 1\n' : '') +
+      (outputs[1] ? '' : '#define SKYBAKE_RENDER_SKY_ONLY 1\n');
+    programs[key] = compileProgram(gl, fullScreenVertexShader, skybakeFragmentSource(bake, skyPixelsSource, defines));
   }
   return programs[key];
 }
@@ -174,7 +177,6 @@ function setSkyUniforms(program, width, height, group) {
   gl.uniform2f(u('half_size'), f.halfWidth, f.halfHeight);
   gl.uniform3fv(u('camera_m'), camera);
   gl.uniform3fv(u('sun_dir'), sunDirection());
-  gl.uniform1i(u('ground_lit'), block.find((m) => m.name === 'skybake_outputs').values[1]);
   gl.uniform1i(u('sun_disk_subsamples'), state.sun_disk ? kSunDiskSubsamples : 0);
   if (state.moon) {
     const top = block.find((m) => m.name === 'skybake_radii_m').values[1];
