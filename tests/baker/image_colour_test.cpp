@@ -33,5 +33,20 @@ TEST(ImageColour, DisplayEncodingIsSrgb) {
   EXPECT_EQ(bytes, (std::vector<unsigned char>{0, 118, 255, 255}));
 }
 
+// A component outside the sRGB gamut (negative: the deepest blue of a clear
+// sky can make red negative) shows as 0 under every tone map. The tone
+// curves' formulas alone turn some negatives positive: ACES's rational fit
+// gives 0.21 at -0.1, Reinhard's v / (1 + v) gives 2 at -2.
+TEST(ImageColour, NegativeComponentsShowAsBlack) {
+  for (const ToneMap tone_map : {ToneMap::None, ToneMap::Reinhard, ToneMap::Aces}) {
+    const std::vector<unsigned char> bytes = encodeForDisplay({-0.1f, -2.0f, -1.0f}, 1.0, tone_map);
+    EXPECT_EQ(bytes, (std::vector<unsigned char>{0, 0, 0})) << static_cast<int>(tone_map);
+  }
+  // The tone maps themselves at 1: Reinhard 0.5, sRGB-encoded 188 of 255;
+  // ACES 0.804, encoded 232.
+  EXPECT_EQ(encodeForDisplay({1.0f}, 1.0, ToneMap::Reinhard), std::vector<unsigned char>{188});
+  EXPECT_EQ(encodeForDisplay({1.0f}, 1.0, ToneMap::Aces), std::vector<unsigned char>{232});
+}
+
 }  // namespace
 }  // namespace skybake
