@@ -49,11 +49,14 @@ GlSkyImageRenderer::GlSkyImageRenderer() : context_(std::make_unique<gl::Headles
 SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const {
   const gl::SkyGlResources resources(sky);
   const bool eclipse = v.moon.present();
+  // What the program compiles for this bake and view (sky_pixels.glsl, the
+  // library's SKYBAKE_BAKE_HAS_GROUND_VIEWS): only the paths it can take.
+  const std::string defines =
+      std::string(eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
+      (sky.outputs().ground_irradiance ? "" : "#define SKYBAKE_RENDER_SKY_ONLY 1\n") +
+      (sky.sampler().domain().scattering_ground_views ? "#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n" : "");
   const gl::GlProgram program(gl::kFullScreenVertexShader,
-                              std::string("#version 330 core\n") +
-                                  (eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
-                                  (sky.outputs().ground_irradiance ? "" : "#define SKYBAKE_RENDER_SKY_ONLY 1\n") +
-                                  gl::skyGlslLibrary() + std::string(skyPixelsGlsl()));
+                              "#version 330 core\n" + defines + gl::skyGlslLibrary() + std::string(skyPixelsGlsl()));
   const GLuint p = program.id();
   glUseProgram(p);
 

@@ -95,10 +95,17 @@ SkybakeSkyRadianceParts skybakeSkyRadianceParts(vec3 camera_m, vec3 view_dir, ve
     shadow_transmittance = exp(-skybakeOpticalDepthAlongRay(r, mu, shadow, ground));
   }
   parts.lit_from_m = shadow;
+  // A ground ray of a bake whose table holds no rays to the ground (a
+  // scene's without views below the horizon) is integrated. A program that
+  // knows its bake holds them (skybake_parts.x == 1: every bake but those)
+  // defines SKYBAKE_BAKE_HAS_GROUND_VIEWS and is spared compiling this path,
+  // half the sky lookup's compile time on llvmpipe.
+#ifndef SKYBAKE_BAKE_HAS_GROUND_VIEWS
   if (ground && skybake_parts.x == 0) {
     skybakeGroundRayRadiance(r, mu, mu_s, nu, shadow, start.length_m, r_p, mu_p, mu_s_p, shadow_transmittance, parts);
     return parts;
   }
+#endif
   float baked_mu_s = skybakeBakedMuS(mu_s);
   float weight = skybakeIntegratedSingleScatteringWeight(baked_mu_s);
   SkybakeSingleScattering single = SkybakeSingleScattering(vec4(0.0), vec4(0.0));

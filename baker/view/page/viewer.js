@@ -130,10 +130,13 @@ let targets = null;  // radiance, and two colour targets to add groups into
 function skyProgram(eclipse) {
   const key = eclipse ? 'eclipse' : 'plain';
   if (!programs[key]) {
-    // The lit ground where the bake has ground irradiance, as render draws it.
-    const outputs = bake.groups[0].manifest.uniform_block.members.find((m) => m.name === 'skybake_outputs').values;
+    // Only the paths this bake and view take, as render compiles them: the
+    // lit ground where the bake has ground irradiance, the table's rays to
+    // the ground where it holds them.
+    const member = (name) => bake.groups[0].manifest.uniform_block.members.find((m) => m.name === name).values;
     const defines = (eclipse ? '#define SKYBAKE_RENDER_ECLIPSE 1\n' : '') +
-      (outputs[1] ? '' : '#define SKYBAKE_RENDER_SKY_ONLY 1\n');
+      (member('skybake_outputs')[1] ? '' : '#define SKYBAKE_RENDER_SKY_ONLY 1\n') +
+      (member('skybake_parts')[0] ? '#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n' : '');
     programs[key] = compileProgram(gl, fullScreenVertexShader, skybakeFragmentSource(bake, skyPixelsSource, defines));
   }
   return programs[key];
