@@ -68,7 +68,9 @@ def webgl_chromium(display, window=(800, 600), script_timeout_s=300):
     for name, flags, disp in attempts:
         options = webdriver.ChromeOptions()
         options.binary_location = CHROMIUM
-        for flag in ['--no-sandbox', f'--window-size={window[0]},{window[1]}', *flags]:
+        # --disable-dev-shm-usage: containers often give /dev/shm 64 MiB,
+        # less than a bake's textures on their way to the GPU process.
+        for flag in ['--no-sandbox', '--disable-dev-shm-usage', f'--window-size={window[0]},{window[1]}', *flags]:
             options.add_argument(flag)
         options.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
         env = dict(os.environ)
