@@ -50,23 +50,25 @@ void runView(const ViewOptions& o) {
   // Ctrl-C and SIGTERM stop the server from a thread of their own: blocked
   // in every thread (all start after this: the export's OpenMP workers and
   // the server's), taken by sigwait.
-  // A handler of their own first: a signal ignored where it was inherited
-  // so (a shell's background job ignores SIGINT) would never be pending.
+  // Blocked first, then given a handler of their own: a signal ignored
+  // where it was inherited so (a shell's background job ignores SIGINT)
+  // would never be pending, and one arriving between the two steps in the
+  // other order would run the handler and be lost.
   sigset_t stop_signals;
   sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   struct sigaction take {};
   take.sa_handler = [](int) {};
-  for (int s : {SIGINT, SIGTERM}) {
-    sigaddset(&stop_signals, s);
-    sigaction(s, &take, nullptr);
-  }
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  sigaction(SIGINT, &take, nullptr);
+  sigaction(SIGTERM, &take, nullptr);
   // SIGPIPE: a browser that closes a connection mid-file must not end us.
   std::signal(SIGPIPE, SIG_IGN);
 
-  ViewerServer server(webExportOfBakeFile(o.bake_path).files);
-
+  ViewerServer server;
   const int port = server.bind(o.port);
+  std::vector<WebFile> files = webExportOfBakeFile(o.bake_path).files;
   const std::string url = fmt::format("http://{}:{}/", kViewerHost, port);
   fmt::print("skybake view: {} at {} (Ctrl-C stops)\n", o.bake_path, url);
   if (!o.no_open && !openInBrowser(url)) fmt::print("skybake view: no xdg-open here: open {} in a browser\n", url);
@@ -77,7 +79,7 @@ void runView(const ViewOptions& o) {
     sigwait(&stop_signals, &signal);
     server.stop();
   });
-  server.serve();
+  server.serve(std::move(files));
   // Served to the end without a signal (the server failed): wake the
   // stopper with one of its own signals.
   pthread_kill(stopper.native_handle(), SIGTERM);

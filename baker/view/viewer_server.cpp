@@ -2,9 +2,12 @@
 
 #include <httplib.h>
 
+#include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <map>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -32,20 +35,13 @@ struct Served {
 }  // namespace
 
 struct ViewerServer::Impl {
+  std::atomic<bool> served{false};  // serve() has returned
   std::vector<WebFile> bake_export;
   std::map<std::string, Served, std::less<>> files;  // by request path
   httplib::Server server;
 };
 
-ViewerServer::ViewerServer(std::vector<WebFile> bake_export) : impl_(std::make_unique<Impl>()) {
-  impl_->bake_export = std::move(bake_export);
-  for (const EmbeddedText& page : viewerPageFiles()) {
-    impl_->files["/" + std::string(page.name)] = {page.text, mediaTypeOf(page.name)};
-  }
-  impl_->files["/"] = impl_->files.at("/index.html");
-  for (const WebFile& file : impl_->bake_export) {
-    impl_->files[kViewerBakePrefix + file.name] = {file.bytes, file.media_type};
-  }
+ViewerServer::ViewerServer() : impl_(std::make_unique<Impl>()) {
   impl_->server.Get(".*", [this](const httplib::Request& request, httplib::Response& response) {
     const auto it = impl_->files.find(request.path);
     if (it == impl_->files.end()) {
@@ -78,8 +74,26 @@ int ViewerServer::bind(int port) {
   return bound;
 }
 
-void ViewerServer::serve() { impl_->server.listen_after_bind(); }
+void ViewerServer::serve(std::vector<WebFile> bake_export) {
+  // Filled before the first request can arrive: listening starts below.
+  impl_->bake_export = std::move(bake_export);
+  for (const EmbeddedText& page : viewerPageFiles()) {
+    impl_->files["/" + std::string(page.name)] = {page.text, mediaTypeOf(page.name)};
+  }
+  impl_->files["/"] = impl_->files.at("/index.html");
+  for (const WebFile& file : impl_->bake_export) {
+    impl_->files[kViewerBakePrefix + file.name] = {file.bytes, file.media_type};
+  }
+  impl_->server.listen_after_bind();
+  impl_->served = true;
+}
 
-void ViewerServer::stop() { impl_->server.stop(); }
+void ViewerServer::stop() {
+  // httplib ignores a stop that comes before it listens: a stop asked for
+  // while the page is still being prepared waits for serving to start.
+  constexpr auto kPoll = std::chrono::milliseconds(10);
+  while (!impl_->server.is_running() && !impl_->served) std::this_thread::sleep_for(kPoll);
+  impl_->server.stop();
+}
 
 }  // namespace skybake

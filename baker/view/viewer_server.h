@@ -20,16 +20,19 @@ inline constexpr const char* kViewerHost = "127.0.0.1";
 
 class ViewerServer {
  public:
-  explicit ViewerServer(std::vector<WebFile> bake_export);
+  ViewerServer();
   ~ViewerServer();
   ViewerServer(const ViewerServer&) = delete;
   ViewerServer& operator=(const ViewerServer&) = delete;
 
   // Binds kViewerHost:port (0: any free port) and returns the port, or
-  // throws Error(BadInput) saying why it cannot (in use, not allowed).
+  // throws Error(BadInput) saying why it cannot (in use, not allowed):
+  // first, so that a port that cannot serve is refused before the bake is
+  // read.
   int bind(int port);
-  // Serves until stop() (from another thread) or a failure.
-  void serve();
+  // Serves the page and `bake_export` until stop() (from another thread)
+  // or a failure.
+  void serve(std::vector<WebFile> bake_export);
   void stop();
 
  private:
