@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "baker/render/image_colour.h"
+#include "data_formats/bake_file/bake_file.h"
 #include "data_formats/error.h"
 #include "runtime/colour/luminance.h"
 #include "runtime/gl/sky_gl_parameters.h"
@@ -108,11 +109,6 @@ std::array<const char*, 3> webGlFormat(gl::GpuTexelFormat format) {
 // optical_depth.
 std::string tableName(const char* sampler) { return std::string(sampler).substr(std::strlen("skybake_")); }
 
-std::string channelName(const AtmosphereParameters& a, int c) {
-  if (a.storesCieXyz()) return std::string(1, "XYZ"[c]);
-  return fmt::format("{:g}nm", a.wavelengths_nm[static_cast<size_t>(c)]);
-}
-
 // validate's errors (report sidecar, "validation") as a viewer shows them.
 nlohmann::ordered_json validationFacts(const nlohmann::ordered_json& validation) {
   nlohmann::ordered_json errors = nlohmann::ordered_json::array();
@@ -148,19 +144,16 @@ std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& fac
   const std::vector<float>& luminance_weights = sky.channelLuminanceWeights();
 
   std::vector<WebFile> files;
-  struct Pending {
-    std::vector<gl::GpuTexture> textures;
-  };
-  std::vector<Pending> groups(static_cast<size_t>(sky.laneGroupCount()));
+  std::vector<std::vector<gl::GpuTexture>> group_textures(static_cast<size_t>(sky.laneGroupCount()));
   for (int g = 0; g < sky.laneGroupCount(); ++g) {
-    groups[g].textures = gl::skyGpuTextures(sky.laneGroup(g), GpuTablePrecision::Half);
+    group_textures[g] = gl::skyGpuTextures(sky.laneGroup(g), GpuTablePrecision::Half);
   }
   // Compressed in parallel: the half tables are most of an export's time.
   const size_t per_group = gl::kSkySamplerNames.size();
-  std::vector<std::string> compressed(groups.size() * per_group);
+  std::vector<std::string> compressed(group_textures.size() * per_group);
 #pragma omp parallel for schedule(dynamic)
   for (int i = 0; i < static_cast<int>(compressed.size()); ++i) {
-    compressed[i] = gzip(groups[i / per_group].textures[i % per_group].bytes());
+    compressed[i] = gzip(group_textures[i / per_group][i % per_group].bytes());
   }
 
   nlohmann::ordered_json group_json = nlohmann::ordered_json::array();
@@ -176,7 +169,7 @@ std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& fac
                        {"luminance_cd_m2", luminance_weights[static_cast<size_t>(first + lane)]}});
     }
     for (size_t t = 0; t < per_group; ++t) {
-      const gl::GpuTexture& texture = groups[g].textures[t];
+      const gl::GpuTexture& texture = group_textures[g][t];
       const std::string name = fmt::format("group{}_{}.bin.gz", g, tableName(texture.sampler));
       const std::array<const char*, 3> format = webGlFormat(texture.format);
       textures.push_back({{"sampler", texture.sampler},
@@ -197,14 +190,12 @@ std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& fac
   }
   files.push_back({"skybake.glsl", "text/plain; charset=utf-8", gl::skyGlslLibrary()});
 
-  nlohmann::ordered_json channel_names = nlohmann::ordered_json::array();
-  for (int c = 0; c < a.channelCount(); ++c) channel_names.push_back(channelName(a, c));
   const nlohmann::ordered_json manifest = {
       {"format", kWebExportFormat},
       {"version", kWebExportVersion},
       {"channels",
        {{"kind", xyz ? "cie_xyz" : "wavelengths"},
-        {"names", channel_names},
+        {"names", channelNames(a)},
         {"wavelengths_nm", a.wavelengths_nm},
         {"unit", xyz ? "W m^-2 sr^-1" : "W m^-2 sr^-1 nm^-1"}}},
       {"glsl",

@@ -217,8 +217,7 @@ function drawRadiance(group, target, pixel = null) {
   const program = skyProgram(state.moon);
   if (state.moon && !skylightPixel) skylightPixel = floatTarget(1, 1);
   bindSkybakeGroup(gl, program, group);
-  gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
-  setSkyUniforms(program, target.width, target.height, group);
+  setSkyUniforms(program, target.width, target.height, group);  // may draw the skylight pixel first
   gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
   gl.viewport(0, 0, target.width, target.height);
   if (pixel) {
