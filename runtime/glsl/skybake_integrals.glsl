@@ -82,6 +82,20 @@ bool skybakeNextPiece(inout SkybakePieces p, out float piece_start, out float pi
   return false;
 }
 
+// The 4-point rule's nodes and weights as vectors, entry k read without
+// indexing an array by k: a shader compiler unrolls every loop that indexes
+// a local array by its counter (Mesa does, to keep the array in registers),
+// which would copy the node loop's body, three optical-depth lookups, once
+// per node.
+#if SKYBAKE_GAUSS_NODES != 4
+#error "skybakeGaussEntry reads a 4-point rule"
+#endif
+vec4 skybakeGaussVector(float entries[SKYBAKE_GAUSS_NODES]) {
+  return vec4(entries[0], entries[1], entries[2], entries[3]);
+}
+
+float skybakeGaussEntry(vec4 entries, int k) { return dot(entries, vec4(equal(ivec4(0, 1, 2, 3), ivec4(k)))); }
+
 // Single scattering at the 4-point rule's nodes over [a, b] of the ray
 // (r, mu) with the sun at (mu_s, nu), in pass g's lanes
 // (skybakePassOpticalDepthToTop; start_to_top_up and _down the ray's own
@@ -94,12 +108,12 @@ void skybakeAddSingleScatteringPart(float r, float mu, float mu_s, float nu, boo
                                     SkybakeMoonAlongRay moon, inout vec4 rayleigh, inout vec4 mie,
                                     inout vec4 rayleigh_past_moon, inout vec4 mie_past_moon) {
   float bottom = skybake_radii_m.x;
-  float gauss_abscissa[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_ABSCISSA;
-  float gauss_weight[SKYBAKE_GAUSS_NODES] = SKYBAKE_GAUSS_WEIGHT;
+  vec4 gauss_abscissa = skybakeGaussVector(SKYBAKE_GAUSS_ABSCISSA);
+  vec4 gauss_weight = skybakeGaussVector(SKYBAKE_GAUSS_WEIGHT);
   float h = b - a;
   for (int k = 0; k < SKYBAKE_GAUSS_NODES; ++k) {
-    float t = a + 0.5 * h * (1.0 + gauss_abscissa[k]);
-    float w = 0.5 * h * gauss_weight[k];
+    float t = a + 0.5 * h * (1.0 + skybakeGaussEntry(gauss_abscissa, k));
+    float w = 0.5 * h * skybakeGaussEntry(gauss_weight, k);
     float r_t = skybakeShellRadiusAlongRay(r, mu, t);
     float altitude_m = r_t - bottom;
     float mu_s_t = skybakeClampCosine((r * mu_s + t * nu) / r_t);

@@ -54,23 +54,6 @@ vec4 skybakeSliceScales(int scale, SkybakeAxisLerp r, SkybakeAxisLerp mu_s) {
               texelFetch(skybake_slice_scales, ivec2(mu_s.i1, r.i1), 0)[scale]);
 }
 
-// Trilinear in (mu_s, mu, r) within one nu slice, mu_s blended geometrically
-// where `geometric` says; `scales` from skybakeSliceScales.
-vec4 skybakeSampleNuSlice(sampler3D table, vec4 scales, SkybakeAxisLerp r, SkybakeAxisLerp mu, SkybakeAxisLerp mu_s,
-                          int i_nu, bool geometric) {
-  vec4 r0mu0 = skybakeBlendAcross(skybakeTexel4D(table, r.i0, mu.i0, mu_s.i0, i_nu) * scales.x,
-                                  skybakeTexel4D(table, r.i0, mu.i0, mu_s.i1, i_nu) * scales.y, mu_s.w1, geometric);
-  vec4 r0mu1 = skybakeBlendAcross(skybakeTexel4D(table, r.i0, mu.i1, mu_s.i0, i_nu) * scales.x,
-                                  skybakeTexel4D(table, r.i0, mu.i1, mu_s.i1, i_nu) * scales.y, mu_s.w1, geometric);
-  vec4 r1mu0 = skybakeBlendAcross(skybakeTexel4D(table, r.i1, mu.i0, mu_s.i0, i_nu) * scales.z,
-                                  skybakeTexel4D(table, r.i1, mu.i0, mu_s.i1, i_nu) * scales.w, mu_s.w1, geometric);
-  vec4 r1mu1 = skybakeBlendAcross(skybakeTexel4D(table, r.i1, mu.i1, mu_s.i0, i_nu) * scales.z,
-                                  skybakeTexel4D(table, r.i1, mu.i1, mu_s.i1, i_nu) * scales.w, mu_s.w1, geometric);
-  vec4 r0 = r0mu0 + (r0mu1 - r0mu0) * mu.w1;
-  vec4 r1 = r1mu0 + (r1mu1 - r1mu0) * mu.w1;
-  return r0 + (r1 - r0) * r.w1;
-}
-
 // A 4D table's texture coordinates (texture_mapping.h, ScatteringCoord).
 struct SkybakeScatteringCoord {
   float u_nu;
@@ -80,15 +63,39 @@ struct SkybakeScatteringCoord {
 };
 
 // A 4D table of `size` texels (r, mu, mu_s, nu), `scale` its SKYBAKE_SCALE_*
-// lane, at texture coordinates `c`.
+// lane, at texture coordinates `c`: in each of the two nu slices the four
+// (r, mu) corners' texel pairs blended across mu_s (geometrically where
+// `geometric` says) and summed bilinearly, then the slices blended across nu.
+// One loop over the eight corners rather than eight written-out copies: a
+// shader compiler then builds one texel pair and one blend across mu_s per
+// table instead of eight, which is most of a sky program's compile time on
+// a CPU rasterizer (Mesa's llvmpipe: the browser viewer's first frame).
 vec4 skybakeSample4DOfSize(sampler3D table, ivec4 size, int scale, SkybakeScatteringCoord c, bool geometric) {
   SkybakeAxisLerp r = skybakeAxisLerp(c.u_r, size.x);
   SkybakeAxisLerp mu = skybakeAxisLerp(c.u_mu, size.y);
   SkybakeAxisLerp mu_s = skybakeAxisLerp(c.u_mu_s, size.z);
   SkybakeAxisLerp nu = skybakeAxisLerpNu(c.u_nu, size.w);
   vec4 scales = skybakeSliceScales(scale, r, mu_s);
-  return skybakeBlendAcross(skybakeSampleNuSlice(table, scales, r, mu, mu_s, nu.i0, geometric),
-                            skybakeSampleNuSlice(table, scales, r, mu, mu_s, nu.i1, geometric), nu.w1, geometric);
+  vec4 lower_nu_slice = vec4(0.0);
+  vec4 upper_nu_slice = vec4(0.0);
+  for (int corner = 0; corner < 8; ++corner) {
+    bool upper_r = (corner & 1) != 0;
+    bool upper_mu = (corner & 2) != 0;
+    int i_r = upper_r ? r.i1 : r.i0;
+    int i_mu = upper_mu ? mu.i1 : mu.i0;
+    int i_nu = corner >= 4 ? nu.i1 : nu.i0;
+    vec2 slice_scales = upper_r ? scales.zw : scales.xy;
+    float weight = (upper_r ? r.w1 : 1.0 - r.w1) * (upper_mu ? mu.w1 : 1.0 - mu.w1);
+    vec4 across_mu_s = skybakeBlendAcross(skybakeTexel4D(table, i_r, i_mu, mu_s.i0, i_nu) * slice_scales.x,
+                                          skybakeTexel4D(table, i_r, i_mu, mu_s.i1, i_nu) * slice_scales.y, mu_s.w1,
+                                          geometric);
+    if (corner >= 4) {
+      upper_nu_slice += across_mu_s * weight;
+    } else {
+      lower_nu_slice += across_mu_s * weight;
+    }
+  }
+  return skybakeBlendAcross(lower_nu_slice, upper_nu_slice, nu.w1, geometric);
 }
 
 // A radiance table (skybake_scattering_size) at texture coordinates `c`.
