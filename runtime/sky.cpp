@@ -112,4 +112,10 @@ SunlitRay Sky::withBakedSun(const SunlitRay& ray) const {
   return baked;
 }
 
+double Sky::integratedSingleScatteringWeightAt(double mu_s) const {
+  SunlitRay ray{};
+  ray.mu_s = mu_s;
+  return integratedSingleScatteringWeight(withBakedSun(ray).mu_s);
+}
+
 }  // namespace skybake

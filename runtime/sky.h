@@ -238,6 +238,13 @@ class Sky {
   // A spectral Sky's are 0 (see channelLuminanceWeights()).
   const Spectrum& luminanceWeights() const { return luminance_weights_; }
   int orders() const { return bake_.orders_computed; }
+  // The weight (0 to 1) with which a lookup whose ray starts where the sun's
+  // zenith cosine is mu_s takes single scattering integrated along the ray
+  // rather than from the tables (0 by day; the sun clamped to the baked
+  // angles first). A GPU program all of whose rays start under a sun where
+  // this is 0 can leave the integral out (runtime/glsl/README.md,
+  // SKYBAKE_DAYLIGHT_LOOKUPS_ONLY).
+  double integratedSingleScatteringWeightAt(double mu_s) const;
   // The bake report the file carries (JSON text, opaque to lookups).
   const std::string& bakeReportJson() const { return bake_.report_json; }
 

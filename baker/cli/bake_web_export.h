@@ -17,6 +17,6 @@ struct BakeWebExport {
 };
 
 // Reads the bake (Error(BadInput) naming it when it cannot) and exports it.
-BakeWebExport webExportOfBakeFile(const std::string& bake_path);
+BakeWebExport webExportOfBakeFile(const std::string& bake_path, WebTableEncoding encoding = WebTableEncoding::Gzip);
 
 }  // namespace skybake::cli

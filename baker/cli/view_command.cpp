@@ -68,7 +68,9 @@ void runView(const ViewOptions& o) {
 
   ViewerServer server;
   const int port = server.bind(o.port);
-  std::vector<WebFile> files = webExportOfBakeFile(o.bake_path).files;
+  // The tables as they are: the page is on this machine, where gzip would
+  // cost the server its compression and the page its unpacking.
+  std::vector<WebFile> files = webExportOfBakeFile(o.bake_path, WebTableEncoding::None).files;
   const std::string url = fmt::format("http://{}:{}/", kViewerHost, port);
   fmt::print("skybake view: {} at {} (Ctrl-C stops)\n", o.bake_path, url);
   if (!o.no_open && !openInBrowser(url)) fmt::print("skybake view: no xdg-open here: open {} in a browser\n", url);

@@ -135,7 +135,7 @@ nlohmann::ordered_json validationFacts(const nlohmann::ordered_json& validation)
 
 }  // namespace
 
-std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& facts) {
+std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& facts, WebTableEncoding encoding) {
   const AtmosphereParameters& a = sky.atmosphere();
   const bool xyz = a.storesCieXyz();
   // Linear sRGB per unit of each channel at render's preview scale, so
@@ -149,11 +149,13 @@ std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& fac
     group_textures[g] = gl::skyGpuTextures(sky.laneGroup(g), GpuTablePrecision::Half);
   }
   // Compressed in parallel: the half tables are most of an export's time.
+  const bool gzipped = encoding == WebTableEncoding::Gzip;
   const size_t per_group = gl::kSkySamplerNames.size();
-  std::vector<std::string> compressed(group_textures.size() * per_group);
+  std::vector<std::string> table_files(group_textures.size() * per_group);
 #pragma omp parallel for schedule(dynamic)
-  for (int i = 0; i < static_cast<int>(compressed.size()); ++i) {
-    compressed[i] = gzip(group_textures[i / per_group][i % per_group].bytes());
+  for (int i = 0; i < static_cast<int>(table_files.size()); ++i) {
+    const std::span<const std::byte> bytes = group_textures[i / per_group][i % per_group].bytes();
+    table_files[i] = gzipped ? gzip(bytes) : std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   }
 
   nlohmann::ordered_json group_json = nlohmann::ordered_json::array();
@@ -170,18 +172,19 @@ std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& fac
     }
     for (size_t t = 0; t < per_group; ++t) {
       const gl::GpuTexture& texture = group_textures[g][t];
-      const std::string name = fmt::format("group{}_{}.bin.gz", g, tableName(texture.sampler));
+      const std::string name = fmt::format("group{}_{}.bin{}", g, tableName(texture.sampler), gzipped ? ".gz" : "");
       const std::array<const char*, 3> format = webGlFormat(texture.format);
       textures.push_back({{"sampler", texture.sampler},
                           {"file", name},
-                          {"encoding", "gzip"},
+                          {"encoding", gzipped ? "gzip" : "none"},
                           {"target", texture.dimensions == 2 ? "TEXTURE_2D" : "TEXTURE_3D"},
                           {"size", {texture.width, texture.height, texture.depth}},
                           {"internal_format", format[0]},
                           {"format", format[1]},
                           {"type", format[2]},
                           {"bytes", texture.bytes().size()}});
-      files.push_back({name, "application/gzip", std::move(compressed[g * per_group + t])});
+      files.push_back({name, gzipped ? "application/gzip" : "application/octet-stream",
+                       std::move(table_files[g * per_group + t])});
     }
     group_json.push_back({{"first_channel", first},
                           {"lanes", lanes},

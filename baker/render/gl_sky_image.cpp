@@ -49,18 +49,26 @@ GlSkyImageRenderer::GlSkyImageRenderer() : context_(std::make_unique<gl::Headles
 SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const {
   const gl::SkyGlResources resources(sky);
   const bool eclipse = v.moon.present();
+  const glm::dvec3 sun = sunDirection(v);
+  const glm::dvec3 camera = cameraPosition(sky, v);
   // What the program compiles for this bake and view (sky_pixels.glsl, the
-  // library's SKYBAKE_BAKE_HAS_GROUND_VIEWS): only the paths it can take.
+  // library's SKYBAKE_BAKE_HAS_GROUND_VIEWS, SKYBAKE_DAYLIGHT_LOOKUPS_ONLY and
+  // the lookups it leaves out): only the paths it can take. A camera in the atmosphere starts every ray
+  // where it is, under one sun angle.
+  const bool camera_in_atmosphere = glm::length(camera) <= sky.atmosphere().top_radius_m;
+  const bool daylight = !eclipse && camera_in_atmosphere &&
+                        sky.integratedSingleScatteringWeightAt(glm::dot(glm::normalize(camera), sun)) == 0.0;
   const std::string defines =
       std::string(eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
       (sky.outputs().ground_irradiance ? "" : "#define SKYBAKE_RENDER_SKY_ONLY 1\n") +
-      (sky.sampler().domain().scattering_ground_views ? "#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n" : "");
+      (sky.sampler().domain().scattering_ground_views ? "#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n" : "") +
+      (daylight ? "#define SKYBAKE_DAYLIGHT_LOOKUPS_ONLY 1\n" : "") + "#define SKYBAKE_NO_RADIANCE_TO_POINT 1\n" +
+      (eclipse ? "" : "#define SKYBAKE_NO_ECLIPSE_LOOKUPS 1\n");
   const gl::GlProgram program(gl::kFullScreenVertexShader,
                               "#version 330 core\n" + defines + gl::skyGlslLibrary() + std::string(skyPixelsGlsl()));
   const GLuint p = program.id();
   glUseProgram(p);
 
-  const glm::dvec3 sun = sunDirection(v);
   const PerspectiveFrame frame = perspectiveFrame(v);
   const glm::dvec3& forward = frame.forward;
   const glm::dvec3& right = frame.right;
@@ -77,7 +85,6 @@ SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const
   glUniform3f(at(p, "right"), static_cast<float>(right.x), static_cast<float>(right.y), static_cast<float>(right.z));
   glUniform3f(at(p, "up"), static_cast<float>(up.x), static_cast<float>(up.y), static_cast<float>(up.z));
   glUniform2f(at(p, "half_size"), static_cast<float>(frame.half_width), static_cast<float>(frame.half_height));
-  const glm::dvec3 camera = cameraPosition(sky, v);
   glUniform3f(at(p, "camera_m"), static_cast<float>(camera.x), static_cast<float>(camera.y),
               static_cast<float>(camera.z));
   glUniform3f(at(p, "sun_dir"), static_cast<float>(sun.x), static_cast<float>(sun.y), static_cast<float>(sun.z));

@@ -5,7 +5,8 @@
 // sky_image.cpp, per pixel centre: every channel of the bake (lanes past
 // its channel count are 0). `skybake render` adds the sun disk afterwards
 // on the CPU (sun_disk_pixels.h, exact over each pixel's area); the viewer
-// sets sun_disk_subsamples to count it here. Under an eclipse
+// defines SKYBAKE_RENDER_SUN_DISK and sets sun_disk_subsamples to count it
+// here. Under an eclipse
 // (SKYBAKE_RENDER_ECLIPSE defined: the eclipse lookups compile only for
 // the images that need them) a first one-pixel draw (skylight_pass) gives
 // the camera's skylight share, the same for every ray from a camera in the
@@ -21,10 +22,12 @@ uniform vec3 forward, right, up;  // perspective camera frame
 uniform vec2 half_size;           // perspective: tan(fov / 2) across, times height / width down
 uniform vec3 camera_m;
 uniform vec3 sun_dir;
-// The sun disk: 0 leaves it out (`skybake render` adds it on the CPU);
-// N > 0 counts it on N x N points of each pixel near the sun, each seeing
-// the sun's radiance through the air along the pixel centre's ray.
+#ifdef SKYBAKE_RENDER_SUN_DISK
+// The sun disk: 0 leaves it out; N > 0 counts it on N x N points of each
+// pixel near the sun, each seeing the sun's radiance through the air along
+// the pixel centre's ray.
 uniform int sun_disk_subsamples;
+#endif
 #ifdef SKYBAKE_RENDER_ECLIPSE
 uniform vec4 moon;                // centre (m from the planet's centre), radius (m)
 uniform int skylight_pass;        // 1: this draw writes the camera's skylight share
@@ -58,36 +61,39 @@ bool pixelDirection(vec2 centre, out vec3 dir) {
   return true;
 }
 
+#ifdef SKYBAKE_RENDER_SUN_DISK
 // The pixel's share of the sun disk times the sun's radiance through
 // `transmittance`: the disk counted on sun_disk_subsamples^2 points of the
 // pixel, only where its centre lies within the disk's radius plus twice
-// the pixel's reach (centre to corner) of the sun.
+// the pixel's reach (centre to corner) of the sun. The points' directions
+// step from the centre's by `across` and `down`, its change to the next
+// pixel right and below (the projections bend too little within a pixel
+// to matter at the sun disk's size: one direction computed per pixel).
 #ifdef SKYBAKE_RENDER_ECLIPSE
-vec4 sunDiskInPixel(vec2 centre, vec3 dir, vec4 transmittance, SkybakeMoon m) {
+vec4 sunDiskInPixel(vec3 dir, vec3 across, vec3 down, vec4 transmittance, SkybakeMoon m) {
 #else
-vec4 sunDiskInPixel(vec2 centre, vec3 dir, vec4 transmittance) {
+vec4 sunDiskInPixel(vec3 dir, vec3 across, vec3 down, vec4 transmittance) {
 #endif
   float r = length(camera_m);
   if (skybakeRayIntersectsSphere(r, dot(camera_m, dir) / r, skybake_radii_m.x)) return vec4(0.0);  // the ground hides it
-  vec3 corner;
-  if (!pixelDirection(centre + vec2(0.5), corner)) return vec4(0.0);
-  float reach = acos(clamp(dot(dir, corner), -1.0, 1.0));
+  float reach = 0.5 * (length(across) + length(down));
   if (acos(clamp(dot(dir, sun_dir), -1.0, 1.0)) > skybake_sun_disk.x + 2.0 * reach) return vec4(0.0);
   float n = float(sun_disk_subsamples);
   float covered = 0.0;
   for (int j = 0; j < sun_disk_subsamples; ++j) {
     for (int i = 0; i < sun_disk_subsamples; ++i) {
-      vec3 d;
-      if (!pixelDirection(centre + (vec2(float(i), float(j)) + 0.5) / n - 0.5, d)) continue;
+      vec2 offset = (vec2(float(i), float(j)) + 0.5) / n - 0.5;
+      vec3 d = normalize(dir + across * offset.x + down * offset.y);
 #ifdef SKYBAKE_RENDER_ECLIPSE
-      if (skybakeInSunDiskPastMoon(camera_m, normalize(d), sun_dir, m)) covered += 1.0;
+      if (skybakeInSunDiskPastMoon(camera_m, d, sun_dir, m)) covered += 1.0;
 #else
-      if (skybakeInSunDisk(normalize(d), sun_dir)) covered += 1.0;
+      if (skybakeInSunDisk(d, sun_dir)) covered += 1.0;
 #endif
     }
   }
   return skybakeSolarRadiance() * transmittance * (covered / (n * n));
 }
+#endif
 
 void main() {
 #ifdef SKYBAKE_RENDER_ECLIPSE
@@ -100,7 +106,15 @@ void main() {
   // Pixel centre in image coordinates, rows from the top.
   vec2 centre = vec2(gl_FragCoord.x, strip_top_row + (strip_rows - gl_FragCoord.y));
   vec3 dir;
-  if (!pixelDirection(centre, dir)) {
+  bool in_image = pixelDirection(centre, dir);
+#ifdef SKYBAKE_RENDER_SUN_DISK
+  // The direction's change to the next pixel right and below, taken where
+  // every pixel still runs (derivatives need that); rows run downward in
+  // the image, upward in gl_FragCoord.
+  vec3 across = dFdx(dir);
+  vec3 down = -dFdy(dir);
+#endif
+  if (!in_image) {
     pixel = vec4(0.0);
     return;
   }
@@ -132,11 +146,13 @@ void main() {
 #endif
 #endif
   pixel = received.radiance;
+#ifdef SKYBAKE_RENDER_SUN_DISK
   if (sun_disk_subsamples > 0) {
 #ifdef SKYBAKE_RENDER_ECLIPSE
-    pixel += sunDiskInPixel(centre, dir, received.transmittance, eclipse_moon);
+    pixel += sunDiskInPixel(dir, across, down, received.transmittance, eclipse_moon);
 #else
-    pixel += sunDiskInPixel(centre, dir, received.transmittance);
+    pixel += sunDiskInPixel(dir, across, down, received.transmittance);
 #endif
   }
+#endif
 }

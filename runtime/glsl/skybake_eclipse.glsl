@@ -7,6 +7,10 @@
 // around a point was scattered (skybakeEclipseSkylight). The moon's occlusion
 // is skybakeMoonVisibleSunFraction (skybake_geometry.glsl).
 
+// A program without eclipses may define SKYBAKE_NO_ECLIPSE_LOOKUPS and is
+// spared compiling these (see SKYBAKE_NO_RADIANCE_TO_POINT in skybake_sky.glsl).
+#ifndef SKYBAKE_NO_ECLIPSE_LOOKUPS
+
 // Whether the moon may hide part of the sun from some point of the
 // atmosphere within reach of a ray from `point_m` (Sky::moonHidesSunNear);
 // false: the eclipse lookups give the plain ones.
@@ -226,6 +230,7 @@ SkybakeRadianceAndTransmittance skybakeReceivedRadiance(vec3 camera_m, vec3 view
                                  skybakeEclipseSkylight(start.origin, sun_dir, moon));
 }
 
+#ifndef SKYBAKE_NO_RADIANCE_TO_POINT
 // Radiance to the point camera_m + view_dir * distance_m under an eclipse,
 // the skylight share at the segment's start given (Sky::radianceToPoint(...,
 // moon, camera_skylight)): the segment's single scattering integrated with
@@ -279,3 +284,6 @@ SkybakeRadianceAndTransmittance skybakeRadianceToPoint(vec3 camera_m, vec3 point
   if (!(distance_m > 0.0)) return SkybakeRadianceAndTransmittance(vec4(0.0), vec4(1.0));
   return skybakeRadianceAlongRayTo(camera_m, offset / distance_m, distance_m, sun_dir, moon);
 }
+#endif  // SKYBAKE_NO_RADIANCE_TO_POINT
+
+#endif  // SKYBAKE_NO_ECLIPSE_LOOKUPS

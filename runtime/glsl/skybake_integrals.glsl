@@ -234,6 +234,9 @@ SkybakeSingleScattering skybakeIntegrateSingleScattering(float r, float mu, floa
       .plain;
 }
 
+// Needed by the radiance to points and by ground rays where the table
+// holds none (SKYBAKE_NO_RADIANCE_TO_POINT, SKYBAKE_BAKE_HAS_GROUND_VIEWS).
+#if !defined(SKYBAKE_NO_RADIANCE_TO_POINT) || !defined(SKYBAKE_BAKE_HAS_GROUND_VIEWS)
 // In-scattered radiance over [0, length_m] of the ray (r, mu) with the sun
 // at (mu_s, nu), each source attenuated back to the start, and the
 // segment's transmittance, the optical depth integrated from the density
@@ -283,3 +286,4 @@ SkybakeRadianceAndTransmittance skybakeDirectSegmentRadiance(float r, float mu, 
   }
   return SkybakeRadianceAndTransmittance(sum, exp(-before));
 }
+#endif

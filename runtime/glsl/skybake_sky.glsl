@@ -18,15 +18,24 @@ float skybakeBakedMuS(float mu_s) { return clamp(mu_s, skybake_baked_sun_cosines
 
 // Blends single scattering from the tables (`s`) with the integral along
 // the ray, by the weight of the baked sun (Sky::singleScattering).
+// A program all of whose lookups start their rays under a sun where the
+// weight is 0 (a camera in the atmosphere with the sun above
+// SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE: every ray starts where
+// it is; Sky::integratedSingleScatteringWeightAt) may define
+// SKYBAKE_DAYLIGHT_LOOKUPS_ONLY and is spared compiling the integral and
+// the tables' geometric blends (skybakeScattering). Under another sun its
+// lookups would be wrong.
 SkybakeSingleScattering skybakeBlendInIntegratedSingleScattering(SkybakeSingleScattering s, float r, float mu,
                                                                   float baked_mu_s, float nu, bool ground,
                                                                   float t_start, float t_end, float weight) {
+#ifndef SKYBAKE_DAYLIGHT_LOOKUPS_ONLY
   if (weight > 0.0) {
     SkybakeSingleScattering integrated = skybakeIntegrateSingleScattering(
         r, mu, baked_mu_s, nu, ground, t_start, t_end, SKYBAKE_LOOKUP_SINGLE_SCATTERING_SEGMENTS);
     s.rayleigh += (integrated.rayleigh - s.rayleigh) * weight;
     s.mie += (integrated.mie - s.mie) * weight;
   }
+#endif
   return s;
 }
 
@@ -47,6 +56,7 @@ struct SkybakeSkyRadianceParts {
   vec4 transmittance;
 };
 
+#ifndef SKYBAKE_BAKE_HAS_GROUND_VIEWS
 // A ray that ends on the ground in a bake whose tables hold no such rays,
 // over [t_start, t_end], integrated along it (Sky::groundRayRadiance);
 // (r_p, mu_p, mu_s_p) the same ray from t_start, to_start the transmittance
@@ -59,6 +69,7 @@ void skybakeGroundRayRadiance(float r, float mu, float mu_s, float nu, float t_s
       r_p, mu_p, skybakeBakedMuS(mu_s_p), nu, max(t_end - t_start, 0.0), SKYBAKE_GROUND_RAY_SUBINTERVALS, false);
   parts.multiple = multiple.radiance * to_start;
 }
+#endif
 
 SkybakeSkyRadianceParts skybakeSkyRadianceParts(vec3 camera_m, vec3 view_dir, vec3 sun_dir, float shadow_length_m) {
   SkybakeSkyRadianceParts parts;
@@ -179,6 +190,11 @@ SkybakeRadianceAndTransmittance skybakeReceivedRadiance(vec3 camera_m, vec3 view
 vec4 skybakeSolarRadiance() { return skybake_solar_radiance; }
 
 // ---- radiance to a point (aerial perspective) ----
+// A GLSL compiler spends time on every function of its source, called or
+// not (Mesa's compiles each before linking drops the unused): a program
+// that looks up no radiance to points may define
+// SKYBAKE_NO_RADIANCE_TO_POINT and is spared these.
+#ifndef SKYBAKE_NO_RADIANCE_TO_POINT
 
 struct SkybakeSegmentScattering {
   vec4 rayleigh;  // over the Rayleigh phase
@@ -302,6 +318,8 @@ SkybakeRadianceAndTransmittance skybakeRadianceToPoint(vec3 camera_m, vec3 point
   if (!(distance_m > 0.0)) return SkybakeRadianceAndTransmittance(vec4(0.0), vec4(1.0));
   return skybakeRadianceAlongRayTo(camera_m, offset / distance_m, distance_m, sun_dir, shadow_length_m);
 }
+
+#endif  // SKYBAKE_NO_RADIANCE_TO_POINT
 
 // Transmittance along the straight segment from a_m to b_m (0 where it
 // passes through the ground).

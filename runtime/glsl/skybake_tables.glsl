@@ -219,11 +219,20 @@ vec4 skybakeNightScale4D(float mu_s) { return skybake_night.w > 0.5 ? skybakeNig
 // A radiance table at (r, mu, mu_s, nu): geometric blends across mu_s and nu
 // with the sun below the horizon (radianceBlend).
 // `scale`: the table's SKYBAKE_SCALE_* lane.
+// In a program of daylight lookups (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY,
+// skybake_sky.glsl) the sun is above the horizon at every lookup's start:
+// the blends are linear, and the geometric ones are not compiled.
 vec4 skybakeScattering(sampler3D table, int scale, float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
-  return skybakeSample4D(table, scale, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), mu_s < 0.0) *
+#ifdef SKYBAKE_DAYLIGHT_LOOKUPS_ONLY
+  const bool geometric = false;
+#else
+  bool geometric = mu_s < 0.0;
+#endif
+  return skybakeSample4D(table, scale, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), geometric) *
          skybakeNightScale4D(mu_s);
 }
 
+#if !defined(SKYBAKE_NO_RADIANCE_TO_POINT) || !defined(SKYBAKE_BAKE_HAS_GROUND_VIEWS)
 // The multiple-scattering density table: mu linear over [-1, 1], on its
 // own view texels (the texture's height, BakeContents::density_view_size).
 vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
@@ -234,6 +243,7 @@ vec4 skybakeMultipleDensity(float r, float mu, float mu_s, float nu) {
   return skybakeSample4DOfSize(skybake_multiple_density, size, SKYBAKE_SCALE_MULTIPLE_DENSITY, c, mu_s < 0.0) *
          skybakeNightScale4D(mu_s);
 }
+#endif  // for skybakeDirectSegmentRadiance
 
 // ---- irradiance (2D: u = mu_s, v = r) ----
 

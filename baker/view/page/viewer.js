@@ -8,7 +8,7 @@
 // render's PNG uses. While the view changes, frames are drawn at a quarter
 // of the resolution; the full one follows when it rests.
 import {
-  loadSkybake, skybakeFragmentSource, bindSkybakeGroup, compileProgram, fullScreenVertexShader,
+  loadSkybake, skybakeFragmentSource, bindSkybakeGroup, startProgram, checkedProgram, linkedProgram, fullScreenVertexShader,
 } from './skybake_web.js';
 
 const kDegree = Math.PI / 180;
@@ -124,22 +124,60 @@ function floatTarget(width, height) {
 }
 
 let bake = null;
-const programs = {};
+const programs = { sky: new Map() };  // sky: by their defines, as startProgram gave them
+const checkedPrograms = new Set();    // the programs checkedProgram passed
 let targets = null;  // radiance, and two colour targets to add groups into
 
-function skyProgram(eclipse) {
-  const key = eclipse ? 'eclipse' : 'plain';
-  if (!programs[key]) {
-    // Only the paths this bake and view take, as render compiles them: the
-    // lit ground where the bake has ground irradiance, the table's rays to
-    // the ground where it holds them.
-    const member = (name) => bake.groups[0].manifest.uniform_block.members.find((m) => m.name === name).values;
-    const defines = (eclipse ? '#define SKYBAKE_RENDER_ECLIPSE 1\n' : '') +
-      (member('skybake_outputs')[1] ? '' : '#define SKYBAKE_RENDER_SKY_ONLY 1\n') +
-      (member('skybake_parts')[0] ? '#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n' : '');
-    programs[key] = compileProgram(gl, fullScreenVertexShader, skybakeFragmentSource(bake, skyPixelsSource, defines));
+const uniformMember = (name) => bake.groups[0].manifest.uniform_block.members.find((m) => m.name === name).values;
+
+// A constant the GLSL library defines (its skybake_parameters).
+function libraryConstant(name) {
+  const match = bake.glsl.match(new RegExp(`#define ${name} (\\S+)`));
+  if (!match) throw new Error(`the bake's GLSL defines no ${name}`);
+  return Number(match[1]);
+}
+
+// Whether every ray of the view starts under a sun where the library takes
+// single scattering from the tables alone, so that its program may leave
+// the integral along the ray out (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY; render
+// decides it the same way): a camera in the atmosphere starts every ray
+// where it is, its sun's zenith cosine (clamped to the baked ones) at or
+// above SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE.
+function daylightView() {
+  if (state.moon) return false;
+  const [bottom, top] = uniformMember('skybake_radii_m');
+  if (bottom + Math.max(state.altitude_m, 0) > top) return false;
+  const [lowest, highest] = uniformMember('skybake_baked_sun_cosines');
+  const muS = Math.min(Math.max(Math.cos(state.sun_zenith_deg * kDegree), lowest), highest);
+  return muS >= libraryConstant('SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE');
+}
+
+// The sky program of the paths this bake and view take, as render compiles
+// them, and the sun disk (which render adds on the CPU): the lit ground
+// where the bake has ground irradiance, the table's
+// rays to the ground where it holds them, the integral along the ray unless
+// the view is lit by day, no lookups of radiance to points, and of
+// eclipses only with a moon. Started (compiling) on first use, checked when
+// `check`.
+function skyProgram(eclipse, daylight, check = true) {
+  const defines = '#define SKYBAKE_RENDER_SUN_DISK 1\n' + (eclipse ? '#define SKYBAKE_RENDER_ECLIPSE 1\n' : '') +
+    (uniformMember('skybake_outputs')[1] ? '' : '#define SKYBAKE_RENDER_SKY_ONLY 1\n') +
+    (uniformMember('skybake_parts')[0] ? '#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n' : '') +
+    (daylight ? '#define SKYBAKE_DAYLIGHT_LOOKUPS_ONLY 1\n' : '') + '#define SKYBAKE_NO_RADIANCE_TO_POINT 1\n' +
+    (eclipse ? '' : '#define SKYBAKE_NO_ECLIPSE_LOOKUPS 1\n');
+  if (!programs.sky.has(defines)) {
+    programs.sky.set(defines, startProgram(gl, fullScreenVertexShader, skybakeFragmentSource(bake, skyPixelsSource, defines)));
   }
-  return programs[key];
+  const program = programs.sky.get(defines);
+  return check ? checked(program) : program;
+}
+
+function checked(program) {
+  if (!checkedPrograms.has(program)) {
+    checkedProgram(gl, program);
+    checkedPrograms.add(program);
+  }
+  return program;
 }
 
 function targetsFor(width, height) {
@@ -212,9 +250,9 @@ function cameraSkylight(program, key) {
 }
 
 // Draws one lane group's radiance into `target` (all of it, or the one
-// pixel (x, y) from the image's top).
-function drawRadiance(group, target, pixel = null) {
-  const program = skyProgram(state.moon);
+// pixel (x, y) from the image's top), with the program `daylight` says.
+function drawRadiance(group, target, pixel = null, daylight = daylightView()) {
+  const program = skyProgram(state.moon, daylight);
   if (state.moon && !skylightPixel) skylightPixel = floatTarget(1, 1);
   bindSkybakeGroup(gl, program, group);
   setSkyUniforms(program, target.width, target.height, group);  // may draw the skylight pixel first
@@ -225,11 +263,31 @@ function drawRadiance(group, target, pixel = null) {
     gl.scissor(pixel[0], target.height - 1 - pixel[1], 1, 1);
   }
   gl.drawArrays(gl.TRIANGLES, 0, 3);
-  gl.disable(gl.SCISSOR_TEST);
+  if (pixel) gl.disable(gl.SCISSOR_TEST);
 }
 
 let frameScale = 1;
-let frame = 0;
+
+// The colour pass: lane group g's radiance (t.radiance) added to the
+// colour so far into t.colour[into].
+function drawColour(t, g, into) {
+  const program = checked(programs.colour);
+  gl.useProgram(program);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, t.colour[into].framebuffer);
+  gl.viewport(0, 0, t.radiance.width, t.radiance.height);
+  gl.activeTexture(gl.TEXTURE0);
+  gl.bindTexture(gl.TEXTURE_2D, t.radiance.texture);
+  gl.activeTexture(gl.TEXTURE1);
+  gl.bindTexture(gl.TEXTURE_2D, t.colour[1 - into].texture);
+  gl.uniform1i(gl.getUniformLocation(program, 'radiance'), 0);
+  gl.uniform1i(gl.getUniformLocation(program, 'previous'), 1);
+  gl.uniform1i(gl.getUniformLocation(program, 'first_group'), g === 0 ? 1 : 0);
+  const lanes = new Float32Array(12);
+  bake.groups[g].manifest.lanes.forEach((lane, i) => lanes.set(lane.preview_linear_srgb, 3 * i));
+  gl.uniform3fv(gl.getUniformLocation(program, 'lane_srgb'), lanes);
+  gl.drawArrays(gl.TRIANGLES, 0, 3);
+  gl.activeTexture(gl.TEXTURE0);
+}
 
 function drawFrame(resolution) {
   const width = Math.max(1, Math.round(canvas.width * resolution));
@@ -238,22 +296,7 @@ function drawFrame(resolution) {
   let colour = 0;
   bake.groups.forEach((group, g) => {
     drawRadiance(group, t.radiance);
-    const program = programs.colour;
-    gl.useProgram(program);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, t.colour[colour].framebuffer);
-    gl.viewport(0, 0, width, height);
-    gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, t.radiance.texture);
-    gl.activeTexture(gl.TEXTURE1);
-    gl.bindTexture(gl.TEXTURE_2D, t.colour[1 - colour].texture);
-    gl.uniform1i(gl.getUniformLocation(program, 'radiance'), 0);
-    gl.uniform1i(gl.getUniformLocation(program, 'previous'), 1);
-    gl.uniform1i(gl.getUniformLocation(program, 'first_group'), g === 0 ? 1 : 0);
-    const lanes = new Float32Array(12);
-    group.manifest.lanes.forEach((lane, i) => lanes.set(lane.preview_linear_srgb, 3 * i));
-    gl.uniform3fv(gl.getUniformLocation(program, 'lane_srgb'), lanes);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
-    gl.activeTexture(gl.TEXTURE0);
+    drawColour(t, g, colour);
     colour = 1 - colour;
   });
   t.final = t.colour[1 - colour];
@@ -261,19 +304,37 @@ function drawFrame(resolution) {
   display();
 }
 
-// The last frame's colour on the canvas, at the exposure and tone map now
-// set (a change of either redraws only this).
-function display() {
-  if (!targets || !targets.final) return;
-  const program = programs.display;
+// One pixel of each pass, the sky's with the program `daylight` says, each
+// to be drawn over: a driver that builds a program for the state of its
+// first draw (Mesa's llvmpipe: most of a program's compile time) builds it
+// now, while the tables download or the viewer waits for input. The sky's
+// pixel last, and nothing after it that waits for the driver: the page
+// (which unpacks the tables) goes on while the driver builds the program.
+let warmUpPixel = null;
+function warmUp(daylight, passes) {
+  warmUpPixel ??= { radiance: floatTarget(1, 1), colour: [floatTarget(1, 1), floatTarget(1, 1)] };
+  if (passes) {
+    drawColour(warmUpPixel, 0, 0);
+    gl.enable(gl.SCISSOR_TEST);
+    gl.scissor(0, 0, 1, 1);
+    display(warmUpPixel.colour[0]);
+    gl.disable(gl.SCISSOR_TEST);
+  }
+  drawRadiance(bake.groups[0], warmUpPixel.radiance, [0, 0], daylight);
+}
+
+// The last frame's colour (or `source`) on the canvas, at the exposure and
+// tone map now set (a change of either redraws only this).
+function display(source = targets?.final) {
+  if (!source) return;
+  const program = checked(programs.display);
   gl.useProgram(program);
   gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   gl.viewport(0, 0, canvas.width, canvas.height);
   gl.activeTexture(gl.TEXTURE0);
-  gl.bindTexture(gl.TEXTURE_2D, targets.final.texture);
+  gl.bindTexture(gl.TEXTURE_2D, source.texture);
   gl.uniform1i(gl.getUniformLocation(program, 'preview_srgb'), 0);
-  gl.uniform2f(gl.getUniformLocation(program, 'texels_per_pixel'),
-    targets.final.width / canvas.width, targets.final.height / canvas.height);
+  gl.uniform2f(gl.getUniformLocation(program, 'texels_per_pixel'), source.width / canvas.width, source.height / canvas.height);
   gl.uniform1f(gl.getUniformLocation(program, 'exposure'), state.exposure);
   gl.uniform1i(gl.getUniformLocation(program, 'tone_map'), kToneMaps[state.tonemap] ?? 2);
   gl.drawArrays(gl.TRIANGLES, 0, 3);
@@ -284,11 +345,12 @@ let lastInput = -Infinity;
 let pending = null;      // the resolution the next frame is drawn at
 let frameWaiters = [];   // resolved when a full-resolution frame is on the canvas
 const viewer = {
-  loadedMs: null, compiledMs: null, firstFrameMs: null, fullFrameMs: null, lastFrameMs: null, lastFrameResolution: null, error: null,
+  loadedMs: null, firstFrameMs: null, fullFrameMs: null, lastFrameMs: null, lastFrameResolution: null, error: null,
 };
 window.skybakeViewer = viewer;
 
 function requestFrame(resolution) {
+  if (viewer.loadedMs === null) return;  // the first frame follows the tables
   if (pending === null) requestAnimationFrame(runFrame);
   pending = Math.min(pending ?? 1, resolution);
 }
@@ -308,7 +370,13 @@ function runFrame() {
   if (resolution < 1) {
     setTimeout(() => { if (performance.now() - lastInput >= kRestMs) requestFrame(1); }, kRestMs);
   } else {
-    viewer.fullFrameMs ??= end;
+    if (viewer.fullFrameMs === null) {
+      viewer.fullFrameMs = end;
+      // The sky program the view does not use yet (the integral along the
+      // ray for twilight, or the daylight one), built in the background so
+      // that moving the sun across is not held up by it later.
+      if (!state.moon) setTimeout(() => warmUp(!daylightView(), false), kRestMs);
+    }
     const waiters = frameWaiters;
     frameWaiters = [];
     waiters.forEach((resolve) => resolve());
@@ -479,7 +547,7 @@ function resize() {
   if (canvas.width !== w || canvas.height !== h) {
     canvas.width = w;
     canvas.height = h;
-    if (bake) requestFrame(kPreviewScale);
+    requestFrame(kPreviewScale);
   }
 }
 
@@ -499,18 +567,26 @@ async function start() {
   if (fixedSize) canvas.classList.add('fixed');
   resize();
   new ResizeObserver(resize).observe(canvas);
-  const [loaded, pixels] = await Promise.all([
-    loadSkybake(gl, 'bake/', (n, all) => { statusLine.textContent = `loading the bake: ${n} of ${all} files`; }),
-    fetch('sky_pixels.glsl').then((r) => r.text()),
-  ]);
-  bake = loaded;
-  skyPixelsSource = pixels;
+  const pixels = fetch('sky_pixels.glsl').then((r) => r.text());
+  let warmedUp = Promise.resolve();
+  bake = await loadSkybake(gl, 'bake/', {
+    onProgress: (n, all) => { statusLine.textContent = `loading the bake: ${n} of ${all} files`; },
+    // The programs compiled, and built by a first draw, while the tables download.
+    onAllocated: (allocated) => {
+      bake = allocated;
+      warmedUp = pixels.then(async (text) => {
+        skyPixelsSource = text;
+        programs.colour = startProgram(gl, fullScreenVertexShader, colourPassSource);
+        programs.display = startProgram(gl, fullScreenVertexShader, skybakeFragmentSource(bake, displayMain));
+        const sky = skyProgram(state.moon, daylightView(), false);
+        for (const program of [programs.colour, programs.display, sky]) checkedPrograms.add(await linkedProgram(gl, program));
+        if (!state.moon) warmUp(daylightView(), true);  // an eclipse's first draw needs the tables
+      });
+    },
+  });
+  await warmedUp;
   viewer.loadedMs = performance.now();
   showFacts(bake.manifest);
-  programs.colour = compileProgram(gl, fullScreenVertexShader, colourPassSource);
-  programs.display = compileProgram(gl, fullScreenVertexShader, skybakeFragmentSource(bake, displayMain));
-  skyProgram(state.moon);
-  viewer.compiledMs = performance.now();
   writeControls();
   requestFrame(kPreviewScale);
 }

@@ -12,7 +12,9 @@
 
 // The tables as WebGL2 textures: 2D tables RGBA32F, 4D tables (3D
 // textures of their atlas) RGB16F or RGBA16F; read with texelFetch only.
-function makeTexture(gl, entry, bytes) {
+// Allocated (immutable, at their final size and format) before their bytes
+// arrive, so that a program can be compiled and drawn while they download.
+function allocateTexture(gl, entry) {
   const target = gl[entry.target];
   const texture = gl.createTexture();
   gl.bindTexture(target, texture);
@@ -20,16 +22,24 @@ function makeTexture(gl, entry, bytes) {
   // mipmaps or linear filtering it lacks is incomplete and reads as 0.
   gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
   gl.texParameteri(target, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+  const [w, h, d] = entry.size;
+  if (entry.target === 'TEXTURE_2D') gl.texStorage2D(target, 1, gl[entry.internal_format], w, h);
+  else gl.texStorage3D(target, 1, gl[entry.internal_format], w, h, d);
+  return texture;
+}
+
+function fillTexture(gl, entry, texture, bytes) {
+  const target = gl[entry.target];
+  gl.bindTexture(target, texture);
   gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);  // rows of 6-byte texels
   const data = entry.type === 'FLOAT' ? new Float32Array(bytes) : new Uint16Array(bytes);
   const [w, h, d] = entry.size;
   if (entry.target === 'TEXTURE_2D') {
-    gl.texImage2D(target, 0, gl[entry.internal_format], w, h, 0, gl[entry.format], gl[entry.type], data);
+    gl.texSubImage2D(target, 0, 0, 0, w, h, gl[entry.format], gl[entry.type], data);
   } else {
-    gl.texImage3D(target, 0, gl[entry.internal_format], w, h, d, 0, gl[entry.format], gl[entry.type], data);
+    gl.texSubImage3D(target, 0, 0, 0, 0, w, h, d, gl[entry.format], gl[entry.type], data);
   }
   gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
-  return texture;
 }
 
 // The uniform block's std140 bytes from the manifest's members: each a
@@ -52,8 +62,10 @@ async function fetchChecked(url) {
   return response;
 }
 
-// A table file's bytes, gunzipped as they arrive.
+// A table file's bytes, gunzipped as they arrive where the manifest says
+// its encoding is gzip (rather than none).
 async function fetchTable(url, entry) {
+  if (entry.encoding !== 'gzip' && entry.encoding !== 'none') throw new Error(`${url}: unknown encoding ${entry.encoding}`);
   const response = await fetchChecked(url);
   const body = entry.encoding === 'gzip' ? response.body.pipeThrough(new DecompressionStream('gzip')) : response.body;
   const bytes = await new Response(body).arrayBuffer();
@@ -64,9 +76,14 @@ async function fetchTable(url, entry) {
 // Loads the export at `base` (a URL ending in '/'): its manifest, the GLSL
 // library's text and every group's textures and uniform buffer. Resolves to
 // { manifest, glsl, groups: [{ manifest, textures: [{ sampler, target,
-// texture }], uniformBuffer }] }. `onProgress(loadedFiles, allFiles)`, if
-// given, follows the downloads.
-export async function loadSkybake(gl, base, onProgress = () => {}) {
+// texture }], uniformBuffer }] }. Options: `onProgress(loadedFiles,
+// allFiles)` follows the downloads; `onAllocated(bake)` is called with the
+// same object once the GLSL is in and the textures exist at their sizes and
+// formats but before their bytes do: a caller may compile its programs and
+// draw with them then (drivers that build a program at its first draw,
+// Mesa's llvmpipe among them, do so while the tables download); its
+// pixels mean nothing until the promise resolves.
+export async function loadSkybake(gl, base, { onProgress = () => {}, onAllocated = () => {} } = {}) {
   const manifest = await (await fetchChecked(base + 'manifest.json')).json();
   if (manifest.format !== 'skybake-web' || manifest.version !== 1) {
     throw new Error(`${base}manifest.json: not a skybake web export of version 1`);
@@ -74,16 +91,12 @@ export async function loadSkybake(gl, base, onProgress = () => {}) {
   const entries = manifest.groups.flatMap((g) => g.textures);
   let loaded = 0;
   const progress = () => onProgress(++loaded, entries.length + 1);
-  const [glsl, ...tables] = await Promise.all([
-    fetchChecked(base + manifest.glsl.file).then((r) => r.text()).then((t) => (progress(), t)),
-    ...entries.map((e) => fetchTable(base + e.file, e).then((b) => (progress(), b))),
-  ]);
-  let next = 0;
+  const glslText = fetchChecked(base + manifest.glsl.file).then((r) => r.text()).then((t) => (progress(), t));
   const groups = manifest.groups.map((group) => {
     const textures = group.textures.map((entry) => ({
       sampler: entry.sampler,
       target: gl[entry.target],
-      texture: makeTexture(gl, entry, tables[next++]),
+      texture: allocateTexture(gl, entry),
     }));
     const uniformBuffer = gl.createBuffer();
     gl.bindBuffer(gl.UNIFORM_BUFFER, uniformBuffer);
@@ -91,7 +104,17 @@ export async function loadSkybake(gl, base, onProgress = () => {}) {
     gl.bindBuffer(gl.UNIFORM_BUFFER, null);
     return { manifest: group, textures, uniformBuffer };
   });
-  return { manifest, glsl, groups };
+  const tables = Promise.all(entries.map((entry) => fetchTable(base + entry.file, entry).then((b) => (progress(), b))));
+  tables.catch(() => {});  // awaited below; a failure before then is not an unhandled one
+  const bake = { manifest, glsl: await glslText, groups };
+  onAllocated(bake);
+  // The tables filled once all are in: a fill waits for the driver's work
+  // before it (a program being built), and the downloads, unpacked on this
+  // thread, would wait with it.
+  const bytes = await tables;
+  const textures = groups.flatMap((g) => g.textures);
+  entries.forEach((entry, i) => fillTexture(gl, entry, textures[i].texture, bytes[i]));
+  return bake;
 }
 
 // A fragment shader's source: the ES header and precisions, `defines`, the
@@ -116,23 +139,46 @@ export function bindSkybakeGroup(gl, program, group, firstUnit = 0, blockBinding
   gl.activeTexture(gl.TEXTURE0);
 }
 
-// Compiles and links a program; throws with the compiler's log.
-export function compileProgram(gl, vertexSource, fragmentSource) {
-  const stage = (type, source) => {
+// Compiles and links a program without waiting for the driver (asking for
+// its status would): pass it to checkedProgram before drawing with it.
+export function startProgram(gl, vertexSource, fragmentSource) {
+  const program = gl.createProgram();
+  for (const [type, source] of [[gl.VERTEX_SHADER, vertexSource], [gl.FRAGMENT_SHADER, fragmentSource]]) {
     const shader = gl.createShader(type);
     gl.shaderSource(shader, source);
     gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) {
-      throw new Error(`GLSL: ${gl.getShaderInfoLog(shader)}`);
-    }
-    return shader;
-  };
-  const program = gl.createProgram();
-  gl.attachShader(program, stage(gl.VERTEX_SHADER, vertexSource));
-  gl.attachShader(program, stage(gl.FRAGMENT_SHADER, fragmentSource));
+    gl.attachShader(program, shader);
+  }
   gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`GLSL link: ${gl.getProgramInfoLog(program)}`);
   return program;
+}
+
+// `program` once linked; throws with the compiler's log where it failed.
+export function checkedProgram(gl, program) {
+  if (gl.getProgramParameter(program, gl.LINK_STATUS)) return program;
+  for (const shader of gl.getAttachedShaders(program)) {
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`GLSL: ${gl.getShaderInfoLog(shader)}`);
+  }
+  throw new Error(`GLSL link: ${gl.getProgramInfoLog(program)}`);
+}
+
+// Resolves to `program` once linked (checkedProgram), without blocking the
+// page while the driver works where the browser offers
+// KHR_parallel_shader_compile (asking for a program's status otherwise
+// waits for it).
+export async function linkedProgram(gl, program) {
+  const parallel = gl.getExtension('KHR_parallel_shader_compile');
+  if (parallel) {
+    while (!gl.getProgramParameter(program, parallel.COMPLETION_STATUS_KHR)) {
+      await new Promise((resolve) => setTimeout(resolve, 5));
+    }
+  }
+  return checkedProgram(gl, program);
+}
+
+// Compiles and links a program; throws with the compiler's log.
+export function compileProgram(gl, vertexSource, fragmentSource) {
+  return checkedProgram(gl, startProgram(gl, vertexSource, fragmentSource));
 }
 
 // A full-screen triangle from gl_VertexID, no buffers.
