@@ -183,8 +183,8 @@ std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& fac
                           {"format", format[1]},
                           {"type", format[2]},
                           {"bytes", texture.bytes().size()}});
-      files.push_back({name, gzipped ? "application/gzip" : "application/octet-stream",
-                       std::move(table_files[g * per_group + t])});
+      files.push_back(
+          {name, gzipped ? "application/gzip" : "application/octet-stream", std::move(table_files[g * per_group + t])});
     }
     group_json.push_back({{"first_channel", first},
                           {"lanes", lanes},
