@@ -300,6 +300,7 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
   SkybakeAxisLerp x = skybakeAxisLerp(u, size_mu_s);
   SkybakeAxisLerp y = skybakeAxisLerp(v, size_r);
   vec4 low = skybakeIrradianceRow(x, y.i0);
+  vec4 high = skybakeIrradianceRow(x, y.i1);
   if (y.i1 == size_r - 1 && y.i1 > y.i0) {
     float row_r = skybakeIrradianceRowRadius(y.i0, size_r, bottom, top, cosine_rows);
     vec4 above_r = skybakeOpticalDepthToTop(min(r, top), 1.0);
@@ -310,7 +311,6 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
                         vec4(greaterThan(above_row, vec4(0.0))));
     return low * thinning * skybakeNightScale(mu_s);
   }
-  vec4 high = skybakeIrradianceRow(x, y.i1);
   vec4 blend = skybakeBlendGeometricWherePositive(low, high, y.w1, 1.0);
   if (cosine_rows != 0 && y.i1 > y.i0) blend *= skybakeIrradianceDepthOverItsBlend(r, size_r, y);
   return blend * skybakeNightScale(mu_s);

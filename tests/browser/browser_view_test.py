@@ -3,7 +3,7 @@
 Selenium): the viewer's canvas against `skybake render --backend gl` of the
 same views, the plain WebGL2 example against `skybake lookup radiance`, the
 server's refusal of paths outside its files and its clean stop on Ctrl-C.
-Any console error fails the test.
+Any console error, or GL error WebGL reports, fails the test.
 
 Chromium runs its WebGL2 on Mesa's llvmpipe (ANGLE over desktop GL, in an
 Xvfb display the test starts), the renderer `skybake render --backend gl`
@@ -52,7 +52,10 @@ def check(ok, what):
 
 
 def console_errors(driver):
-    return [e['message'] for e in driver.get_log('browser') if e['level'] == 'SEVERE']
+    """Errors, and the GL errors WebGL reports as warnings (a draw it refused
+    draws nothing)."""
+    return [e['message'] for e in driver.get_log('browser')
+            if e['level'] == 'SEVERE' or 'GL_INVALID' in e['message'] or 'WebGL:' in e['message']]
 
 
 def read_png(path):

@@ -148,6 +148,24 @@ void main() {
 }
 )";
 
+// The sky from cameras in the atmosphere only, for a program that leaves
+// out what those lookups never use by day (runtime/glsl/README.md).
+const char* const kDaylightQueryMain = R"(
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 qa = texelFetch(query_a, p, 0);
+  vec4 qb = texelFetch(query_b, p, 0);
+  vec4 qc = texelFetch(query_c, p, 0);
+  SkybakeRadianceAndTransmittance v = int(qc.w) == 0 ? skybakeSkyRadiance(qa.xyz, qb.xyz, qc.xyz)
+                                                     : skybakeReceivedRadiance(qa.xyz, qb.xyz, qc.xyz);
+  first = v.radiance;
+  second = v.transmittance;
+}
+)";
+const char* const kDaylightDefines =
+    "#define SKYBAKE_DAYLIGHT_LOOKUPS_ONLY 1\n#define SKYBAKE_NO_RADIANCE_TO_POINT 1\n"
+    "#define SKYBAKE_NO_ECLIPSE_LOOKUPS 1\n#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n";
+
 constexpr int kQueryRowWidth = 64;
 
 struct Outputs {
@@ -168,12 +186,14 @@ GLuint floatTexture(int width, int height, const std::vector<glm::vec4>& texels)
 
 class GlLookups {
  public:
-  // `main`: kQueryMain or kEclipseQueryMain.
+  // `main`: kQueryMain, kEclipseQueryMain or kDaylightQueryMain.
   // `precision`: how the 4D tables are uploaded (runtime/tables/gpu_tables.h).
+  // `defines`: before the library.
   explicit GlLookups(const Sky& sky, const char* main = kQueryMain,
-                     GpuTablePrecision precision = GpuTablePrecision::Half)
+                     GpuTablePrecision precision = GpuTablePrecision::Half, const std::string& defines = "")
       : resources_(sky, precision),
-        program_(gl::kFullScreenVertexShader, "#version 330 core\n" + gl::skyGlslLibrary() + kQueryInputs + main) {}
+        program_(gl::kFullScreenVertexShader,
+                 "#version 330 core\n" + defines + gl::skyGlslLibrary() + kQueryInputs + main) {}
 
   // One draw per kind of query: llvmpipe ends a shader's loops after 65535
   // passes counted over all the loops its lanes run together, and an
@@ -444,6 +464,45 @@ TEST_F(GlParity, SkyRadiance) {
       expectParity(
           sky, gl, queries,
           "sky radiance, sun " + std::to_string(sun_zenith) + " deg, altitude " + std::to_string(altitude) + " m");
+    }
+  }
+}
+
+// A program of daylight lookups (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY and the
+// defines leaving out radiance to points and eclipses: `skybake render
+// --backend gl`'s and `skybake view`'s by day) gives what the whole
+// library gives, for cameras in the atmosphere under every sun where the
+// integral along the ray has no weight, down to the last such degree. The
+// two programs do the same arithmetic on the same texels: they differ only
+// where a compiler orders or fuses it differently, a few float roundings
+// (1e-6 relative allowed, 8 roundings of 2^-24 each); the CPU as above.
+TEST_F(GlParity, DaylightProgramGivesTheWholeLibrarysDaylight) {
+  const Sky sky = Sky::load(bakePath("gl_earth.exr"));
+  const GlLookups whole(sky);
+  const GlLookups daylight(sky, kDaylightQueryMain, GpuTablePrecision::Half, kDaylightDefines);
+  const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  constexpr double kLastDaylightZenithDeg = 88.9;  // cos 88.9 deg = 0.0192, the integral's top cosine 0.0175
+  ASSERT_EQ(sky.integratedSingleScatteringWeightAt(std::cos(radiansFromDegrees(kLastDaylightZenithDeg))), 0.0);
+  ASSERT_GT(sky.integratedSingleScatteringWeightAt(std::cos(radiansFromDegrees(89.5))), 0.0);
+  for (double sun_zenith : {20.0, 70.0, kLastDaylightZenithDeg}) {
+    for (float altitude : {0.0f, 30000.0f, 59000.0f}) {  // the top at 60 km
+      std::vector<Query> queries;
+      for (const glm::vec3& d : directions(512, 13)) {
+        for (Kind kind : {Kind::SkyRadiance, Kind::Received}) {
+          queries.push_back({kind, glm::vec3(0.0f, 0.0f, bottom + altitude), d, sunAt(sun_zenith, 20.0)});
+        }
+      }
+      const std::string what =
+          "daylight program, sun " + std::to_string(sun_zenith) + " deg, altitude " + std::to_string(altitude) + " m";
+      expectParity(sky, daylight, queries, what);
+      const Outputs a = whole.evaluate(queries);
+      const Outputs b = daylight.evaluate(queries);
+      for (int output = 0; output < 2; ++output) {
+        const Difference d =
+            compare(output == 0 ? a.first : a.second, output == 0 ? b.first : b.second, sky.channelCount());
+        EXPECT_LE(d.largest, 1e-6) << what << " against the whole library, output " << output;
+        EXPECT_GT(d.count, 0u) << what;
+      }
     }
   }
 }

@@ -6,7 +6,10 @@
 // pass applies exposure, the tone map and sRGB encoding with the kernel
 // skybakeDisplayValue (runtime/kernel/display_encoding.glsl), the formula
 // render's PNG uses. While the view changes, frames are drawn at a quarter
-// of the resolution; the full one follows when it rests.
+// of the resolution; the full one follows when it rests. The programs are
+// compiled, and drawn once, while the tables download; a view that needs
+// no integral along its rays (daylight) gets a program without it, and
+// the other is built in the background after the first full frame.
 import {
   loadSkybake, skybakeFragmentSource, bindSkybakeGroup, startProgram, checkedProgram, linkedProgram, fullScreenVertexShader,
 } from './skybake_web.js';
@@ -329,6 +332,9 @@ function display(source = targets?.final) {
   if (!source) return;
   const program = checked(programs.display);
   gl.useProgram(program);
+  // The library's uniform block is active in every program that includes
+  // it (std140), so a buffer must be bound to it, used or not.
+  gl.bindBufferBase(gl.UNIFORM_BUFFER, 0, bake.groups[0].uniformBuffer);
   gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   gl.viewport(0, 0, canvas.width, canvas.height);
   gl.activeTexture(gl.TEXTURE0);
@@ -586,9 +592,11 @@ async function start() {
   });
   await warmedUp;
   viewer.loadedMs = performance.now();
+  // The first frame now rather than at the next animation frame.
+  pending = kPreviewScale;
+  runFrame();
   showFacts(bake.manifest);
   writeControls();
-  requestFrame(kPreviewScale);
 }
 viewer.ready = start().catch((error) => {
   viewer.error = String(error.message ?? error);
