@@ -119,20 +119,14 @@ SkybakeSkyRadianceParts skybakeSkyRadianceParts(vec3 camera_m, vec3 view_dir, ve
 #endif
   float baked_mu_s = skybakeBakedMuS(mu_s);
   float weight = skybakeIntegratedSingleScatteringWeight(baked_mu_s);
+  SkybakeSkyTables tables = skybakeSkyTables(r_p, mu_p, mu_s_p, nu, ground);
   SkybakeSingleScattering single = SkybakeSingleScattering(vec4(0.0), vec4(0.0));
-  if (weight < 1.0) {
-    single.rayleigh = skybakeScattering(skybake_single_rayleigh, SKYBAKE_SCALE_SINGLE_RAYLEIGH, r_p, mu_p, mu_s_p, nu,
-                                        ground) *
-                      shadow_transmittance;
-    if (skybake_parts.y != 0)
-      single.mie = skybakeScattering(skybake_single_mie, SKYBAKE_SCALE_SINGLE_MIE, r_p, mu_p, mu_s_p, nu, ground) *
-                   shadow_transmittance;
-  }
+  if (weight < 1.0) single = SkybakeSingleScattering(tables.rayleigh, tables.mie);
+  single.rayleigh *= shadow_transmittance;
+  single.mie *= shadow_transmittance;
   parts.single =
       skybakeBlendInIntegratedSingleScattering(single, r, mu, baked_mu_s, nu, ground, shadow, start.length_m, weight);
-  parts.multiple = skybakeScattering(skybake_multiple_scattering, SKYBAKE_SCALE_MULTIPLE_SCATTERING, r_p, mu_p, mu_s_p,
-                                     nu, ground) *
-                   skybakeMultipleShape(r_p - bottom, nu) * shadow_transmittance;
+  parts.multiple = tables.multiple * skybakeMultipleShape(r_p - bottom, nu) * shadow_transmittance;
   return parts;
 }
 

@@ -62,40 +62,62 @@ struct SkybakeScatteringCoord {
   float u_r;
 };
 
+// The eight (r, mu, nu) corners around a 4D lookup: in each of the two nu
+// slices the four (r, mu) corners' texel pairs are blended across mu_s
+// (geometrically where `geometric` says) and summed bilinearly, then the
+// slices blended across nu. The lookups loop over the corners rather than
+// write out eight copies: a shader compiler then builds one texel pair and
+// one blend across mu_s per table instead of eight, which is most of a sky
+// program's compile time on a CPU rasterizer (Mesa's llvmpipe: the browser
+// viewer's first frame).
+struct SkybakeCorner {
+  int i_r, i_mu, i_nu;
+  bool upper_r;   // at r.i1: the slice scales' z and w
+  bool upper_nu;  // in the nu.i1 slice
+  float weight;   // bilinear in (r, mu)
+};
+
+SkybakeCorner skybakeCorner(int corner, SkybakeAxisLerp r, SkybakeAxisLerp mu, SkybakeAxisLerp nu) {
+  SkybakeCorner k;
+  k.upper_r = (corner & 1) != 0;
+  bool upper_mu = (corner & 2) != 0;
+  k.upper_nu = corner >= 4;
+  k.i_r = k.upper_r ? r.i1 : r.i0;
+  k.i_mu = upper_mu ? mu.i1 : mu.i0;
+  k.i_nu = k.upper_nu ? nu.i1 : nu.i0;
+  k.weight = (k.upper_r ? r.w1 : 1.0 - r.w1) * (upper_mu ? mu.w1 : 1.0 - mu.w1);
+  return k;
+}
+
+// A corner's texel pair across mu_s, each times its slice's scale (`scales`
+// of skybakeSliceScales), blended.
+vec4 skybakeCornerAcrossMuS(sampler3D table, SkybakeCorner k, SkybakeAxisLerp mu_s, vec4 scales, bool geometric) {
+  vec2 slice_scales = k.upper_r ? scales.zw : scales.xy;
+  return skybakeBlendAcross(skybakeTexel4D(table, k.i_r, k.i_mu, mu_s.i0, k.i_nu) * slice_scales.x,
+                            skybakeTexel4D(table, k.i_r, k.i_mu, mu_s.i1, k.i_nu) * slice_scales.y, mu_s.w1,
+                            geometric);
+}
+
 // A 4D table of `size` texels (r, mu, mu_s, nu), `scale` its SKYBAKE_SCALE_*
-// lane, at texture coordinates `c`: in each of the two nu slices the four
-// (r, mu) corners' texel pairs blended across mu_s (geometrically where
-// `geometric` says) and summed bilinearly, then the slices blended across nu.
-// One loop over the eight corners rather than eight written-out copies: a
-// shader compiler then builds one texel pair and one blend across mu_s per
-// table instead of eight, which is most of a sky program's compile time on
-// a CPU rasterizer (Mesa's llvmpipe: the browser viewer's first frame).
+// lane, at texture coordinates `c`.
 vec4 skybakeSample4DOfSize(sampler3D table, ivec4 size, int scale, SkybakeScatteringCoord c, bool geometric) {
   SkybakeAxisLerp r = skybakeAxisLerp(c.u_r, size.x);
   SkybakeAxisLerp mu = skybakeAxisLerp(c.u_mu, size.y);
   SkybakeAxisLerp mu_s = skybakeAxisLerp(c.u_mu_s, size.z);
   SkybakeAxisLerp nu = skybakeAxisLerpNu(c.u_nu, size.w);
   vec4 scales = skybakeSliceScales(scale, r, mu_s);
-  vec4 lower_nu_slice = vec4(0.0);
-  vec4 upper_nu_slice = vec4(0.0);
+  vec4 lower_nu = vec4(0.0);
+  vec4 upper_nu = vec4(0.0);
   for (int corner = 0; corner < 8; ++corner) {
-    bool upper_r = (corner & 1) != 0;
-    bool upper_mu = (corner & 2) != 0;
-    int i_r = upper_r ? r.i1 : r.i0;
-    int i_mu = upper_mu ? mu.i1 : mu.i0;
-    int i_nu = corner >= 4 ? nu.i1 : nu.i0;
-    vec2 slice_scales = upper_r ? scales.zw : scales.xy;
-    float weight = (upper_r ? r.w1 : 1.0 - r.w1) * (upper_mu ? mu.w1 : 1.0 - mu.w1);
-    vec4 across_mu_s = skybakeBlendAcross(skybakeTexel4D(table, i_r, i_mu, mu_s.i0, i_nu) * slice_scales.x,
-                                          skybakeTexel4D(table, i_r, i_mu, mu_s.i1, i_nu) * slice_scales.y, mu_s.w1,
-                                          geometric);
-    if (corner >= 4) {
-      upper_nu_slice += across_mu_s * weight;
+    SkybakeCorner k = skybakeCorner(corner, r, mu, nu);
+    vec4 v = skybakeCornerAcrossMuS(table, k, mu_s, scales, geometric) * k.weight;
+    if (k.upper_nu) {
+      upper_nu += v;
     } else {
-      lower_nu_slice += across_mu_s * weight;
+      lower_nu += v;
     }
   }
-  return skybakeBlendAcross(lower_nu_slice, upper_nu_slice, nu.w1, geometric);
+  return skybakeBlendAcross(lower_nu, upper_nu, nu.w1, geometric);
 }
 
 // A radiance table (skybake_scattering_size) at texture coordinates `c`.
@@ -219,17 +241,74 @@ vec4 skybakeNightScale4D(float mu_s) { return skybake_night.w > 0.5 ? skybakeNig
 // A radiance table at (r, mu, mu_s, nu): geometric blends across mu_s and nu
 // with the sun below the horizon (radianceBlend).
 // `scale`: the table's SKYBAKE_SCALE_* lane.
-// In a program of daylight lookups (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY,
-// skybake_sky.glsl) the sun is above the horizon at every lookup's start:
-// the blends are linear, and the geometric ones are not compiled.
-vec4 skybakeScattering(sampler3D table, int scale, float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
+// Whether a 4D lookup blends across mu_s and nu geometrically: with the
+// sun below the horizon (radianceBlend). In a program of daylight lookups
+// (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY, skybake_sky.glsl) the sun is above it at
+// every lookup's start: the blends are linear, the geometric ones not compiled.
+bool skybakeGeometricAcrossSun(float mu_s) {
 #ifdef SKYBAKE_DAYLIGHT_LOOKUPS_ONLY
-  const bool geometric = false;
+  return false;
 #else
-  bool geometric = mu_s < 0.0;
+  return mu_s < 0.0;
 #endif
-  return skybakeSample4D(table, scale, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), geometric) *
+}
+
+// A radiance table at (r, mu, mu_s, nu). `scale`: the table's
+// SKYBAKE_SCALE_* lane.
+vec4 skybakeScattering(sampler3D table, int scale, float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
+  return skybakeSample4D(table, scale, skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground),
+                         skybakeGeometricAcrossSun(mu_s)) *
          skybakeNightScale4D(mu_s);
+}
+
+// The three radiance tables at (r, mu, mu_s, nu), as skybakeScattering
+// reads each, together: the sky lookup's Rayleigh and Mie single scattering
+// (over their phase functions; Mie 0 in a bake without it) and multiple
+// scattering (over its shape). One loop over the corners reads all three,
+// with the coordinates, weights and slice scales computed once: a third of
+// the code a compiler builds for three lookups.
+struct SkybakeSkyTables {
+  vec4 rayleigh;
+  vec4 mie;
+  vec4 multiple;
+};
+
+SkybakeSkyTables skybakeSkyTables(float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
+  ivec4 size = skybake_scattering_size;
+  SkybakeScatteringCoord c = skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground);
+  bool geometric = skybakeGeometricAcrossSun(mu_s);
+  bool with_mie = skybake_parts.y != 0;
+  SkybakeAxisLerp lr = skybakeAxisLerp(c.u_r, size.x);
+  SkybakeAxisLerp lmu = skybakeAxisLerp(c.u_mu, size.y);
+  SkybakeAxisLerp lmu_s = skybakeAxisLerp(c.u_mu_s, size.z);
+  SkybakeAxisLerp lnu = skybakeAxisLerpNu(c.u_nu, size.w);
+  vec4 rayleigh_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_RAYLEIGH, lr, lmu_s);
+  vec4 mie_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_MIE, lr, lmu_s);
+  vec4 multiple_scales = skybakeSliceScales(SKYBAKE_SCALE_MULTIPLE_SCATTERING, lr, lmu_s);
+  SkybakeSkyTables lower_nu = SkybakeSkyTables(vec4(0.0), vec4(0.0), vec4(0.0));
+  SkybakeSkyTables upper_nu = lower_nu;
+  for (int corner = 0; corner < 8; ++corner) {
+    SkybakeCorner k = skybakeCorner(corner, lr, lmu, lnu);
+    vec4 rayleigh = skybakeCornerAcrossMuS(skybake_single_rayleigh, k, lmu_s, rayleigh_scales, geometric) * k.weight;
+    // A bake without single Mie has a one-texel stand-in: not read.
+    vec4 mie = vec4(0.0);
+    if (with_mie) mie = skybakeCornerAcrossMuS(skybake_single_mie, k, lmu_s, mie_scales, geometric) * k.weight;
+    vec4 multiple =
+        skybakeCornerAcrossMuS(skybake_multiple_scattering, k, lmu_s, multiple_scales, geometric) * k.weight;
+    if (k.upper_nu) {
+      upper_nu.rayleigh += rayleigh;
+      upper_nu.mie += mie;
+      upper_nu.multiple += multiple;
+    } else {
+      lower_nu.rayleigh += rayleigh;
+      lower_nu.mie += mie;
+      lower_nu.multiple += multiple;
+    }
+  }
+  vec4 night = skybakeNightScale4D(mu_s);
+  return SkybakeSkyTables(skybakeBlendAcross(lower_nu.rayleigh, upper_nu.rayleigh, lnu.w1, geometric) * night,
+                          skybakeBlendAcross(lower_nu.mie, upper_nu.mie, lnu.w1, geometric) * night,
+                          skybakeBlendAcross(lower_nu.multiple, upper_nu.multiple, lnu.w1, geometric) * night);
 }
 
 #if !defined(SKYBAKE_NO_RADIANCE_TO_POINT) || !defined(SKYBAKE_BAKE_HAS_GROUND_VIEWS)
@@ -301,6 +380,7 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
   SkybakeAxisLerp y = skybakeAxisLerp(v, size_r);
   vec4 low = skybakeIrradianceRow(x, y.i0);
   vec4 high = skybakeIrradianceRow(x, y.i1);
+  vec4 night = skybakeNightScale(mu_s);  // once: a power per channel
   if (y.i1 == size_r - 1 && y.i1 > y.i0) {
     float row_r = skybakeIrradianceRowRadius(y.i0, size_r, bottom, top, cosine_rows);
     vec4 above_r = skybakeOpticalDepthToTop(min(r, top), 1.0);
@@ -309,11 +389,11 @@ vec4 skybakeIrradianceTable(float r, float mu_s) {
     // the row (mix would carry a NaN through).
     vec4 thinning = mix(vec4(1.0), clamp(above_r / max(above_row, vec4(1e-30)), 0.0, 1.0),
                         vec4(greaterThan(above_row, vec4(0.0))));
-    return low * thinning * skybakeNightScale(mu_s);
+    return low * thinning * night;
   }
   vec4 blend = skybakeBlendGeometricWherePositive(low, high, y.w1, 1.0);
   if (cosine_rows != 0 && y.i1 > y.i0) blend *= skybakeIrradianceDepthOverItsBlend(r, size_r, y);
-  return blend * skybakeNightScale(mu_s);
+  return blend * night;
 }
 
 // ---- the multiple-scattering shape f(r, nu), sr^-1 per channel ----
