@@ -380,8 +380,15 @@ function runFrame() {
       viewer.fullFrameMs = end;
       // The sky program the view does not use yet (the integral along the
       // ray for twilight, or the daylight one), built in the background so
-      // that moving the sun across is not held up by it later.
-      if (!state.moon) setTimeout(() => warmUp(!daylightView(), false), kRestMs);
+      // that moving the sun across is not held up by it later (linked
+      // without blocking the page, then built by its first draw).
+      if (!state.moon) {
+        const daylight = !daylightView();
+        setTimeout(async () => {
+          checkedPrograms.add(await linkedProgram(gl, skyProgram(false, daylight, false)));
+          if (!state.moon) warmUp(daylight, false);
+        }, kRestMs);
+      }
     }
     const waiters = frameWaiters;
     frameWaiters = [];
