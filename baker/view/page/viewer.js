@@ -332,9 +332,6 @@ function display(source = targets?.final) {
   if (!source) return;
   const program = checked(programs.display);
   gl.useProgram(program);
-  // The library's uniform block is active in every program that includes
-  // it (std140), so a buffer must be bound to it, used or not.
-  gl.bindBufferBase(gl.UNIFORM_BUFFER, 0, bake.groups[0].uniformBuffer);
   gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   gl.viewport(0, 0, canvas.width, canvas.height);
   gl.activeTexture(gl.TEXTURE0);
@@ -580,17 +577,23 @@ async function start() {
   if (fixedSize) canvas.classList.add('fixed');
   resize();
   new ResizeObserver(resize).observe(canvas);
-  const pixels = fetch('sky_pixels.glsl').then((r) => r.text());
+  const text = (file) => fetch(file).then((r) => {
+    if (!r.ok) throw new Error(`${file}: HTTP ${r.status}`);
+    return r.text();
+  });
+  // The display pass needs only the display kernel, not the library.
+  const sources = Promise.all([text('sky_pixels.glsl'), text('kernel_language.glsl'), text('display_encoding.glsl')]);
   let warmedUp = Promise.resolve();
   bake = await loadSkybake(gl, 'bake/', {
     onProgress: (n, all) => { statusLine.textContent = `loading the bake: ${n} of ${all} files`; },
     // The programs compiled, and built by a first draw, while the tables download.
     onAllocated: (allocated) => {
       bake = allocated;
-      warmedUp = pixels.then(async (text) => {
-        skyPixelsSource = text;
+      warmedUp = sources.then(async ([pixels, kernelLanguage, displayKernel]) => {
+        skyPixelsSource = pixels;
         programs.colour = startProgram(gl, fullScreenVertexShader, colourPassSource);
-        programs.display = startProgram(gl, fullScreenVertexShader, skybakeFragmentSource(bake, displayMain));
+        programs.display = startProgram(gl, fullScreenVertexShader,
+          bake.manifest.glsl.es_header + kernelLanguage + displayKernel + displayMain);
         const sky = skyProgram(state.moon, daylightView(), false);
         for (const program of [programs.colour, programs.display, sky]) checkedPrograms.add(await linkedProgram(gl, program));
         if (!state.moon) warmUp(daylightView(), true);  // an eclipse's first draw needs the tables
