@@ -73,14 +73,15 @@ uniform sampler2D query_c;  // xyz sun, w kind
 uniform sampler2D query_d;  // moon: xyz centre, w radius
 layout(location = 0) out vec4 first;
 layout(location = 1) out vec4 second;
+// The pixel's query input.
+vec4 queryInput(sampler2D query) { return texelFetch(query, ivec2(gl_FragCoord.xy), 0); }
 )";
 
 const char* const kQueryMain = R"(
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 qa = texelFetch(query_a, p, 0);
-  vec4 qb = texelFetch(query_b, p, 0);
-  vec4 qc = texelFetch(query_c, p, 0);
+  vec4 qa = queryInput(query_a);
+  vec4 qb = queryInput(query_b);
+  vec4 qc = queryInput(query_c);
   int kind = int(qc.w);
   first = vec4(0.0);
   second = vec4(0.0);
@@ -112,11 +113,10 @@ void main() {
 
 const char* const kEclipseQueryMain = R"(
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 qa = texelFetch(query_a, p, 0);
-  vec4 qb = texelFetch(query_b, p, 0);
-  vec4 qc = texelFetch(query_c, p, 0);
-  vec4 qd = texelFetch(query_d, p, 0);
+  vec4 qa = queryInput(query_a);
+  vec4 qb = queryInput(query_b);
+  vec4 qc = queryInput(query_c);
+  vec4 qd = queryInput(query_d);
   SkybakeMoon moon = SkybakeMoon(qd.xyz, qd.w);
   int kind = int(qc.w);
   first = vec4(0.0);
@@ -152,10 +152,9 @@ void main() {
 // out what those lookups never use by day (runtime/glsl/README.md).
 const char* const kDaylightQueryMain = R"(
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 qa = texelFetch(query_a, p, 0);
-  vec4 qb = texelFetch(query_b, p, 0);
-  vec4 qc = texelFetch(query_c, p, 0);
+  vec4 qa = queryInput(query_a);
+  vec4 qb = queryInput(query_b);
+  vec4 qc = queryInput(query_c);
   SkybakeRadianceAndTransmittance v = int(qc.w) == 0 ? skybakeSkyRadiance(qa.xyz, qb.xyz, qc.xyz)
                                                      : skybakeReceivedRadiance(qa.xyz, qb.xyz, qc.xyz);
   first = v.radiance;
