@@ -11,6 +11,7 @@
 #include "baker/render/sky_pixels_glsl.h"
 #include "data_formats/error.h"
 #include "runtime/gl/gl_program.h"
+#include "runtime/gl/sky_gl_parameters.h"
 #include "runtime/gl/sky_gl_resources.h"
 
 namespace skybake {
@@ -53,11 +54,8 @@ SpectralImage GlSkyImageRenderer::render(const Sky& sky, const SkyView& v) const
   const glm::dvec3 camera = cameraPosition(sky, v);
   // What the program compiles for this bake and view (sky_pixels.glsl, the
   // library's SKYBAKE_BAKE_HAS_GROUND_VIEWS, SKYBAKE_DAYLIGHT_LOOKUPS_ONLY and
-  // the lookups it leaves out): only the paths it can take. A camera in the atmosphere starts every ray
-  // where it is, under one sun angle.
-  const bool camera_in_atmosphere = glm::length(camera) <= sky.atmosphere().top_radius_m;
-  const bool daylight = !eclipse && camera_in_atmosphere &&
-                        sky.integratedSingleScatteringWeightAt(glm::dot(glm::normalize(camera), sun)) == 0.0;
+  // the lookups it leaves out): only the paths it can take.
+  const bool daylight = !eclipse && gl::daylightLookupsSuffice(sky, camera, sun);
   const std::string defines =
       std::string(eclipse ? "#define SKYBAKE_RENDER_ECLIPSE 1\n" : "") +
       (sky.outputs().ground_irradiance ? "" : "#define SKYBAKE_RENDER_SKY_ONLY 1\n") +

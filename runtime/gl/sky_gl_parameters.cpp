@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include <fmt/format.h>
 
 #include "data_formats/error.h"
@@ -223,5 +225,12 @@ std::string skyGlslDefines() {
 std::string_view skyGlslLibrarySource() { return kGlslLibrarySource; }
 
 std::string skyGlslLibrary() { return skyGlslDefines() + std::string(kGlslLibrarySource); }
+
+bool daylightLookupsSuffice(const Sky& sky, const glm::dvec3& camera_m, const glm::dvec3& sun_dir) {
+  const double r = glm::length(camera_m);
+  if (!(r > 0.0 && r <= sky.atmosphere().top_radius_m)) return false;
+  const double mu_s = glm::dot(camera_m / r, sun_dir);
+  return mu_s >= 0.0 && sky.integratedSingleScatteringWeightAt(mu_s) == 0.0;
+}
 
 }  // namespace skybake::gl

@@ -53,4 +53,14 @@ std::string_view skyGlslLibrarySource();
 // line (and ES precision statements) and before its own code.
 std::string skyGlslLibrary();
 
+// Whether a program that looks up the sky from `camera_m` with the sun
+// along unit `sun_dir` may define SKYBAKE_DAYLIGHT_LOOKUPS_ONLY (and leave
+// out the integral along the ray and the 4D tables' geometric blends): the
+// camera in the atmosphere, so that every ray starts there; the sun above
+// its horizon (mu_s >= 0: the blends' choice); single scattering taken from
+// the tables alone at that sun (Sky::integratedSingleScatteringWeightAt 0,
+// after the sun is clamped to the baked ones). runtime/glsl/README.md; the
+// browser viewer decides the same in baker/view/page/viewer.js.
+bool daylightLookupsSuffice(const Sky& sky, const glm::dvec3& camera_m, const glm::dvec3& sun_dir);
+
 }  // namespace skybake::gl

@@ -18,10 +18,9 @@ float skybakeBakedMuS(float mu_s) { return clamp(mu_s, skybake_baked_sun_cosines
 
 // Blends single scattering from the tables (`s`) with the integral along
 // the ray, by the weight of the baked sun (Sky::singleScattering).
-// A program all of whose lookups start their rays under a sun where the
-// weight is 0 (a camera in the atmosphere with the sun above
-// SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE: every ray starts where
-// it is; Sky::integratedSingleScatteringWeightAt) may define
+// A program all of whose lookups start their rays under a sun above the
+// horizon where the weight is 0 (a camera in the atmosphere: every ray
+// starts where it is; skybake::gl::daylightLookupsSuffice) may define
 // SKYBAKE_DAYLIGHT_LOOKUPS_ONLY and is spared compiling the integral and
 // the tables' geometric blends (skybakeScattering). Under another sun its
 // lookups would be wrong.

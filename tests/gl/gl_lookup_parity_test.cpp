@@ -31,6 +31,7 @@
 #include "data_formats/error.h"
 #include "runtime/gl/gl_program.h"
 #include "runtime/gl/headless_gl_context.h"
+#include "runtime/gl/sky_gl_parameters.h"
 #include "runtime/gl/sky_gl_resources.h"
 #include "runtime/sky.h"
 
@@ -155,8 +156,12 @@ void main() {
   vec4 qa = queryInput(query_a);
   vec4 qb = queryInput(query_b);
   vec4 qc = queryInput(query_c);
-  SkybakeRadianceAndTransmittance v = int(qc.w) == 0 ? skybakeSkyRadiance(qa.xyz, qb.xyz, qc.xyz)
-                                                     : skybakeReceivedRadiance(qa.xyz, qb.xyz, qc.xyz);
+  SkybakeRadianceAndTransmittance v;
+  if (int(qc.w) == 0) {
+    v = skybakeSkyRadiance(qa.xyz, qb.xyz, qc.xyz);
+  } else {
+    v = skybakeReceivedRadiance(qa.xyz, qb.xyz, qc.xyz);
+  }
   first = v.radiance;
   second = v.transmittance;
 }
@@ -470,25 +475,28 @@ TEST_F(GlParity, SkyRadiance) {
 // A program of daylight lookups (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY and the
 // defines leaving out radiance to points and eclipses: `skybake render
 // --backend gl`'s and `skybake view`'s by day) gives what the whole
-// library gives, for cameras in the atmosphere under every sun where the
-// integral along the ray has no weight, down to the last such degree. The
-// two programs do the same arithmetic on the same texels: they differ only
-// where a compiler orders or fuses it differently, a few float roundings
-// (1e-6 relative allowed, 8 roundings of 2^-24 each); the CPU as above.
+// library gives, for cameras in the atmosphere under every sun
+// daylightLookupsSuffice admits, down to the last such degree (a scene
+// narrowed to day suns, with the sun past them: render_parity_test.sh).
+// The two programs do the same arithmetic on the same texels: they differ
+// only where a compiler orders or fuses it differently, a few float
+// roundings (1e-6 relative allowed, 8 roundings of 2^-24 each); the CPU as
+// above.
 TEST_F(GlParity, DaylightProgramGivesTheWholeLibrarysDaylight) {
   const Sky sky = Sky::load(bakePath("gl_earth.exr"));
   const GlLookups whole(sky);
-  const GlLookups daylight(sky, kDaylightQueryMain, GpuTablePrecision::Half, kDaylightDefines);
+  const GlLookups daylight(sky, kDaylightQueryMain, GpuTablePrecision::Half,
+                           std::string(kDaylightDefines) + "#define SKYBAKE_BAKE_HAS_GROUND_VIEWS 1\n");
   const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
   constexpr double kLastDaylightZenithDeg = 88.9;  // cos 88.9 deg = 0.0192, the integral's top cosine 0.0175
-  ASSERT_EQ(sky.integratedSingleScatteringWeightAt(std::cos(radiansFromDegrees(kLastDaylightZenithDeg))), 0.0);
-  ASSERT_GT(sky.integratedSingleScatteringWeightAt(std::cos(radiansFromDegrees(89.5))), 0.0);
   for (double sun_zenith : {20.0, 70.0, kLastDaylightZenithDeg}) {
     for (float altitude : {0.0f, 30000.0f, 59000.0f}) {  // the top at 60 km
+      const glm::vec3 camera(0.0f, 0.0f, bottom + altitude);
+      ASSERT_TRUE(gl::daylightLookupsSuffice(sky, camera, sunAt(sun_zenith, 20.0))) << sun_zenith;
       std::vector<Query> queries;
       for (const glm::vec3& d : directions(512, 13)) {
         for (Kind kind : {Kind::SkyRadiance, Kind::Received}) {
-          queries.push_back({kind, glm::vec3(0.0f, 0.0f, bottom + altitude), d, sunAt(sun_zenith, 20.0)});
+          queries.push_back({kind, camera, d, sunAt(sun_zenith, 20.0)});
         }
       }
       const std::string what =
@@ -504,6 +512,24 @@ TEST_F(GlParity, DaylightProgramGivesTheWholeLibrarysDaylight) {
       }
     }
   }
+}
+
+// What daylightLookupsSuffice refuses: a sun within the integral's degree
+// of the horizon or below it, a camera above the atmosphere, and a scene
+// narrowed to day suns whose sun is below the horizon (its tables then
+// blend across the sun geometrically, though no integral weighs in).
+TEST_F(GlParity, DaylightLookupsSufficeOnlyByDayInTheAtmosphere) {
+  const Sky earth = Sky::load(bakePath("gl_earth.exr"));
+  const Sky scene = Sky::load(bakePath("gl_scene.exr"));
+  const glm::dvec3 ground(0.0, 0.0, earth.atmosphere().bottom_radius_m);
+  const glm::dvec3 above(0.0, 0.0, earth.atmosphere().top_radius_m + 1000.0);
+  EXPECT_TRUE(gl::daylightLookupsSuffice(earth, ground, sunAt(88.9)));
+  EXPECT_FALSE(gl::daylightLookupsSuffice(earth, ground, sunAt(89.5)));
+  EXPECT_FALSE(gl::daylightLookupsSuffice(earth, ground, sunAt(120.0)));
+  EXPECT_FALSE(gl::daylightLookupsSuffice(earth, above, sunAt(20.0)));
+  EXPECT_TRUE(gl::daylightLookupsSuffice(scene, ground, sunAt(85.0)));
+  EXPECT_FALSE(gl::daylightLookupsSuffice(scene, ground, sunAt(100.0)));
+  EXPECT_EQ(scene.integratedSingleScatteringWeightAt(std::cos(radiansFromDegrees(100.0))), 0.0);
 }
 
 // The same from tables uploaded as RGBA32F (gl_earth.toml is a float bake:

@@ -142,17 +142,19 @@ function libraryConstant(name) {
 
 // Whether every ray of the view starts under a sun where the library takes
 // single scattering from the tables alone, so that its program may leave
-// the integral along the ray out (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY; render
-// decides it the same way): a camera in the atmosphere starts every ray
-// where it is, its sun's zenith cosine (clamped to the baked ones) at or
-// above SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE.
+// the integral along the ray out (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY, as
+// skybake::gl::daylightLookupsSuffice decides it for render): a camera in
+// the atmosphere starts every ray where it is, its sun above the horizon
+// and, clamped to the baked suns, at or above
+// SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE.
 function daylightView() {
   if (state.moon) return false;
   const [bottom, top] = uniformMember('skybake_radii_m');
   if (bottom + Math.max(state.altitude_m, 0) > top) return false;
+  const muS = Math.cos(state.sun_zenith_deg * kDegree);
   const [lowest, highest] = uniformMember('skybake_baked_sun_cosines');
-  const muS = Math.min(Math.max(Math.cos(state.sun_zenith_deg * kDegree), lowest), highest);
-  return muS >= libraryConstant('SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE');
+  return muS >= 0 && Math.min(Math.max(muS, lowest), highest) >=
+    libraryConstant('SKYBAKE_INTEGRATED_SINGLE_SCATTERING_TOP_COSINE');
 }
 
 // The sky program of the paths this bake and view take, as render compiles
