@@ -59,7 +59,8 @@ std::string skyGlslLibrary();
 // camera in the atmosphere, so that every ray starts there; the sun above
 // its horizon (mu_s >= 0: the blends' choice); single scattering taken from
 // the tables alone at that sun (Sky::integratedSingleScatteringWeightAt 0,
-// after the sun is clamped to the baked ones). runtime/glsl/README.md; the
+// after the sun is clamped to the baked ones); a bake whose tables hold
+// rays to the ground (see the .cpp). runtime/glsl/README.md; the
 // browser viewer decides the same in baker/view/page/viewer.js.
 bool daylightLookupsSuffice(const Sky& sky, const glm::dvec3& camera_m, const glm::dvec3& sun_dir);
 

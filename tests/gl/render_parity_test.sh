@@ -45,8 +45,8 @@ case_ camera_30km gl_earth.exr --altitude-m 30000 --sun-zenith-deg 60 --projecti
 case_ orbit_limb gl_earth.exr --altitude-m 400000 --sun-zenith-deg 70 --projection perspective --fov-deg 40 \
   --view-elevation-deg -19.8 --view-azimuth-deg 30 --size 128x96
 case_ scene_narrowed gl_scene.exr --altitude-m 1000 --sun-zenith-deg 60 --projection latlong --size 128x64
-# Its suns end at 80 deg: by day past them (the daylight program, the
-# tables at their last sun) and below the horizon (the whole program).
+# Its suns end at 80 deg: by day past them (the tables at their last sun)
+# and below the horizon.
 case_ scene_past_its_suns gl_scene.exr --altitude-m 1000 --sun-zenith-deg 85 --projection latlong --size 128x64
 case_ scene_sun_below gl_scene.exr --altitude-m 1000 --sun-zenith-deg 100 --projection latlong --size 128x64
 case_ latlong_no_sun gl_earth.exr --altitude-m 0 --sun-zenith-deg 40 --projection latlong --size 128x64 --no-sun

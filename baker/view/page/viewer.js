@@ -151,6 +151,7 @@ function daylightView() {
   if (state.moon) return false;
   const [bottom, top] = uniformMember('skybake_radii_m');
   if (bottom + Math.max(state.altitude_m, 0) > top) return false;
+  if (!uniformMember('skybake_parts')[0]) return false;  // a bake without ground views: see daylightLookupsSuffice
   const muS = Math.cos(state.sun_zenith_deg * kDegree);
   const [lowest, highest] = uniformMember('skybake_baked_sun_cosines');
   return muS >= 0 && Math.min(Math.max(muS, lowest), highest) >=
