@@ -148,7 +148,7 @@ std::vector<WebFile> webExport(const Sky& sky, const nlohmann::ordered_json& fac
   for (int g = 0; g < sky.laneGroupCount(); ++g) {
     group_textures[g] = gl::skyGpuTextures(sky.laneGroup(g), GpuTablePrecision::Half);
   }
-  // Compressed in parallel: the half tables are most of an export's time.
+  // Packed in parallel: gzip of the half tables is most of an export's time.
   const bool gzipped = encoding == WebTableEncoding::Gzip;
   const size_t per_group = gl::kSkySamplerNames.size();
   std::vector<std::string> table_files(group_textures.size() * per_group);

@@ -77,6 +77,16 @@ struct SkybakeCorner {
   float weight;   // bilinear in (r, mu)
 };
 
+// The interpolation on each of a 4D table's axes at texture coordinates `c`.
+struct SkybakeLerp4D {
+  SkybakeAxisLerp r, mu, mu_s, nu;
+};
+
+SkybakeLerp4D skybakeLerp4D(SkybakeScatteringCoord c, ivec4 size) {
+  return SkybakeLerp4D(skybakeAxisLerp(c.u_r, size.x), skybakeAxisLerp(c.u_mu, size.y),
+                       skybakeAxisLerp(c.u_mu_s, size.z), skybakeAxisLerpNu(c.u_nu, size.w));
+}
+
 SkybakeCorner skybakeCorner(int corner, SkybakeAxisLerp r, SkybakeAxisLerp mu, SkybakeAxisLerp nu) {
   SkybakeCorner k;
   k.upper_r = (corner & 1) != 0;
@@ -101,23 +111,20 @@ vec4 skybakeCornerAcrossMuS(sampler3D table, SkybakeCorner k, SkybakeAxisLerp mu
 // A 4D table of `size` texels (r, mu, mu_s, nu), `scale` its SKYBAKE_SCALE_*
 // lane, at texture coordinates `c`.
 vec4 skybakeSample4DOfSize(sampler3D table, ivec4 size, int scale, SkybakeScatteringCoord c, bool geometric) {
-  SkybakeAxisLerp r = skybakeAxisLerp(c.u_r, size.x);
-  SkybakeAxisLerp mu = skybakeAxisLerp(c.u_mu, size.y);
-  SkybakeAxisLerp mu_s = skybakeAxisLerp(c.u_mu_s, size.z);
-  SkybakeAxisLerp nu = skybakeAxisLerpNu(c.u_nu, size.w);
-  vec4 scales = skybakeSliceScales(scale, r, mu_s);
+  SkybakeLerp4D l = skybakeLerp4D(c, size);
+  vec4 scales = skybakeSliceScales(scale, l.r, l.mu_s);
   vec4 lower_nu = vec4(0.0);
   vec4 upper_nu = vec4(0.0);
   for (int corner = 0; corner < 8; ++corner) {
-    SkybakeCorner k = skybakeCorner(corner, r, mu, nu);
-    vec4 v = skybakeCornerAcrossMuS(table, k, mu_s, scales, geometric) * k.weight;
+    SkybakeCorner k = skybakeCorner(corner, l.r, l.mu, l.nu);
+    vec4 v = skybakeCornerAcrossMuS(table, k, l.mu_s, scales, geometric) * k.weight;
     if (k.upper_nu) {
       upper_nu += v;
     } else {
       lower_nu += v;
     }
   }
-  return skybakeBlendAcross(lower_nu, upper_nu, nu.w1, geometric);
+  return skybakeBlendAcross(lower_nu, upper_nu, l.nu.w1, geometric);
 }
 
 // A radiance table (skybake_scattering_size) at texture coordinates `c`.
@@ -238,9 +245,6 @@ vec4 skybakeNightScale(float mu_s) {
 // are clamped to its lowest sun instead.
 vec4 skybakeNightScale4D(float mu_s) { return skybake_night.w > 0.5 ? skybakeNightScale(mu_s) : vec4(1.0); }
 
-// A radiance table at (r, mu, mu_s, nu): geometric blends across mu_s and nu
-// with the sun below the horizon (radianceBlend).
-// `scale`: the table's SKYBAKE_SCALE_* lane.
 // Whether a 4D lookup blends across mu_s and nu geometrically: with the
 // sun below the horizon (radianceBlend). In a program of daylight lookups
 // (SKYBAKE_DAYLIGHT_LOOKUPS_ONLY, skybake_sky.glsl) the sun is above it at
@@ -274,27 +278,23 @@ struct SkybakeSkyTables {
 };
 
 SkybakeSkyTables skybakeSkyTables(float r, float mu, float mu_s, float nu, bool ray_intersects_ground) {
-  ivec4 size = skybake_scattering_size;
-  SkybakeScatteringCoord c = skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground);
+  SkybakeLerp4D l =
+      skybakeLerp4D(skybakeScatteringCoord(r, mu, mu_s, nu, ray_intersects_ground), skybake_scattering_size);
   bool geometric = skybakeGeometricAcrossSun(mu_s);
   bool with_mie = skybake_parts.y != 0;
-  SkybakeAxisLerp lr = skybakeAxisLerp(c.u_r, size.x);
-  SkybakeAxisLerp lmu = skybakeAxisLerp(c.u_mu, size.y);
-  SkybakeAxisLerp lmu_s = skybakeAxisLerp(c.u_mu_s, size.z);
-  SkybakeAxisLerp lnu = skybakeAxisLerpNu(c.u_nu, size.w);
-  vec4 rayleigh_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_RAYLEIGH, lr, lmu_s);
-  vec4 mie_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_MIE, lr, lmu_s);
-  vec4 multiple_scales = skybakeSliceScales(SKYBAKE_SCALE_MULTIPLE_SCATTERING, lr, lmu_s);
+  vec4 rayleigh_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_RAYLEIGH, l.r, l.mu_s);
+  vec4 mie_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_MIE, l.r, l.mu_s);
+  vec4 multiple_scales = skybakeSliceScales(SKYBAKE_SCALE_MULTIPLE_SCATTERING, l.r, l.mu_s);
   SkybakeSkyTables lower_nu = SkybakeSkyTables(vec4(0.0), vec4(0.0), vec4(0.0));
   SkybakeSkyTables upper_nu = lower_nu;
   for (int corner = 0; corner < 8; ++corner) {
-    SkybakeCorner k = skybakeCorner(corner, lr, lmu, lnu);
-    vec4 rayleigh = skybakeCornerAcrossMuS(skybake_single_rayleigh, k, lmu_s, rayleigh_scales, geometric) * k.weight;
+    SkybakeCorner k = skybakeCorner(corner, l.r, l.mu, l.nu);
+    vec4 rayleigh = skybakeCornerAcrossMuS(skybake_single_rayleigh, k, l.mu_s, rayleigh_scales, geometric) * k.weight;
     // A bake without single Mie has a one-texel stand-in: not read.
     vec4 mie = vec4(0.0);
-    if (with_mie) mie = skybakeCornerAcrossMuS(skybake_single_mie, k, lmu_s, mie_scales, geometric) * k.weight;
+    if (with_mie) mie = skybakeCornerAcrossMuS(skybake_single_mie, k, l.mu_s, mie_scales, geometric) * k.weight;
     vec4 multiple =
-        skybakeCornerAcrossMuS(skybake_multiple_scattering, k, lmu_s, multiple_scales, geometric) * k.weight;
+        skybakeCornerAcrossMuS(skybake_multiple_scattering, k, l.mu_s, multiple_scales, geometric) * k.weight;
     if (k.upper_nu) {
       upper_nu.rayleigh += rayleigh;
       upper_nu.mie += mie;
@@ -306,9 +306,9 @@ SkybakeSkyTables skybakeSkyTables(float r, float mu, float mu_s, float nu, bool 
     }
   }
   vec4 night = skybakeNightScale4D(mu_s);
-  return SkybakeSkyTables(skybakeBlendAcross(lower_nu.rayleigh, upper_nu.rayleigh, lnu.w1, geometric) * night,
-                          skybakeBlendAcross(lower_nu.mie, upper_nu.mie, lnu.w1, geometric) * night,
-                          skybakeBlendAcross(lower_nu.multiple, upper_nu.multiple, lnu.w1, geometric) * night);
+  return SkybakeSkyTables(skybakeBlendAcross(lower_nu.rayleigh, upper_nu.rayleigh, l.nu.w1, geometric) * night,
+                          skybakeBlendAcross(lower_nu.mie, upper_nu.mie, l.nu.w1, geometric) * night,
+                          skybakeBlendAcross(lower_nu.multiple, upper_nu.multiple, l.nu.w1, geometric) * night);
 }
 
 #if !defined(SKYBAKE_NO_RADIANCE_TO_POINT) || !defined(SKYBAKE_BAKE_HAS_GROUND_VIEWS)
