@@ -11,6 +11,7 @@
 #include "baker/stages/openmp_threads.h"
 #include "baker/stages/optical_depth_table.h"
 #include "baker/stages/order_shapes.h"
+#include "baker/stages/row_sun_texels.h"
 #include "baker/stages/scattering_density_kernel.h"
 #include "baker/stages/scattering_density_table.h"
 #include "baker/stages/scene_tables.h"
@@ -25,6 +26,7 @@
 #include "baker/bake/process_usage.h"
 #include "baker/bake/slice_tail.h"
 #include "baker/bake/spectral_bake.h"
+#include "baker/bake/sun_prefilter.h"
 #include "data_formats/config/config.h"
 #include "data_formats/error.h"
 #include "data_formats/parameterization/texture_mapping.h"
@@ -355,6 +357,8 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
       return computeMultipleScatteringTable(ctx, optical_depth, density_sampler, tables.multiple_density, stored_shape,
                                             kStoredRaySegments);
     });
+    // Prefiltered before the sky irradiance below sums it, as the lookups blend it.
+    prefilterAcrossSunBelowHorizon(tables.multiple_scattering, scatteringTexelMuS(sampler.domain(), s));
     prefilterAcrossAltitude(tables.multiple_scattering);
     // The sky irradiance of orders 2 and up, from the stored table: the same
     // light the sky radiance lookups give (its orders' own tables are coarser).
@@ -374,8 +378,10 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     });
   }
 
-  // Every lookup blends linearly across r: the 4D tables store what that
-  // blend needs (altitude_prefilter.h). Only now: while the orders iterate,
+  // Every lookup blends linearly across r, and the twilight lookups blend
+  // the multiple scattering across the sun below the horizon geometrically
+  // where it is steep: the 4D tables store what those blends need
+  // (altitude_prefilter.h, sun_prefilter.h). Only now: while the orders iterate,
   // each table is read at its own r texels (the next order's density) or
   // along rays by an interpolation of its own (the density, geometric in r
   // for a sun below the horizon). The whole domain's multiple scattering
@@ -386,7 +392,12 @@ BakeOutput bakeWavelengthPass(const BakeConfig& config, int threads, ProgressSin
     prefilterAcrossAltitude(tables.single_rayleigh);
     prefilterAcrossAltitude(tables.single_mie);
   }
-  if (scene) prefilterAcrossAltitude(tables.multiple_scattering);
+  if (scene) {
+    const TableSampler& stored = scene->sampler;
+    prefilterAcrossSunBelowHorizon(tables.multiple_scattering,
+                                   scatteringTexelMuS(stored.domain(), stored.scatteringSizes()));
+    prefilterAcrossAltitude(tables.multiple_scattering);
+  }
   // The parts the file leaves out (no Mie scattering, outputs the scene does
   // not use): computed where later orders needed them, not kept.
   out.file.contents = bakeContents(config);
