@@ -17,13 +17,13 @@ int scaledSize(int size, double scale, int minimum = 2, bool even = false) {
 const std::vector<SweepPoint>& earthSweep() {
   // docs/ERROR_VS_TIME.md, "Error against bake time" (2 cores). Twilight is
   // left out: it says little about the sizes by day. 1.5x is not offered: it
-  // measured 0.24 % by day but 0.48 % at low sun, worse than 1x (where the
+  // measured 0.19 % by day but 0.47 % at low sun, worse than 1x (where the
   // sun texels fall near the horizon matters as much as how many there are),
   // so no target is met more cheaply by it.
   static const std::vector<SweepPoint> points = {
-      {0.5, 2.31, 1.52, 0.72},
-      {0.75, 0.83, 0.91, 2.3},
-      {1.0, 0.38, 0.39, 9.0},
+      {0.5, 1.31, 0.83, 0.69},
+      {0.75, 0.47, 0.75, 2.5},
+      {1.0, 0.27, 0.35, 6.9},
   };
   return points;
 }

@@ -7,13 +7,14 @@ namespace skybake {
 namespace {
 
 TEST(SizeChoice, PicksTheCheapestSweptSizeThatMeetsTheTarget) {
-  // The sweep's worst of day and low sun: 2.31, 0.91, 0.39 %.
+  // The sweep's worst of day and low sun: 1.31, 0.75, 0.35 %.
   const std::optional<SizeChoice> one = chooseSizesForError(0.5);
   ASSERT_TRUE(one);
   EXPECT_EQ(one->scale, 1.0);
-  EXPECT_EQ(one->predicted_percent, 0.39);
-  EXPECT_EQ(chooseSizesForError(0.39)->scale, 1.0);  // a target equal to a swept figure meets it
+  EXPECT_EQ(one->predicted_percent, 0.35);
+  EXPECT_EQ(chooseSizesForError(0.35)->scale, 1.0);  // a target equal to a swept figure meets it
   EXPECT_EQ(chooseSizesForError(1.0)->scale, 0.75);
+  EXPECT_EQ(chooseSizesForError(1.5)->scale, 0.5);
   EXPECT_EQ(chooseSizesForError(50.0)->scale, 0.5);
   EXPECT_FALSE(chooseSizesForError(0.3));
   // Cheaper sizes never come with a smaller swept error (else the choice
