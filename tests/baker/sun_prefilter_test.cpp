@@ -43,8 +43,8 @@ double meanBlendError(const Texture4D& t, const std::function<double(double)>& f
   for (int i = first; i < end; ++i) {
     for (int k = 0; k < 64; ++k) {
       const double w = (k + 0.5) / 64.0;
-      const double blend = blendAcross<Blend::GeometricWhereSteep>(t.at(1, 0, i, 0), t.at(1, 0, i + 1, 0),
-                                                                   static_cast<float>(w))[c];
+      const double blend =
+          blendAcross<Blend::GeometricWhereSteep>(t.at(1, 0, i, 0), t.at(1, 0, i + 1, 0), static_cast<float>(w))[c];
       const double truth = (c == 0 ? 1.0 : 0.5) * f(i + w);
       sum += (blend - truth) / truth;
       ++n;
