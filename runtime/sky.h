@@ -347,12 +347,19 @@ class Sky {
   // Single scattering (each part without its phase function) of the ray's
   // part [t_start, t_end]: from the tables (`from_tables()`, not called where
   // unused), or with the sun below the horizon integrated along the ray,
-  // blended with the tables' just above it (see sky_twilight.cpp).
+  // blended with the tables' just above it (see sky_twilight.cpp). The
+  // tables are read at the ray's start and where the sun's zenith cosine is
+  // `far_mu_s` (the part's end, for a segment or a light shaft): the weight
+  // is the lower sun's, so that no lookup reads the single-scattering
+  // tables below the horizon (a GPU upload leaves those texels out,
+  // runtime/tables/gpu_tables.h).
   template <typename FromTables>
-  SingleScattering singleScattering(const SunlitRay& ray, double t_start, double t_end,
+  SingleScattering singleScattering(const SunlitRay& ray, double t_start, double t_end, double far_mu_s,
                                     FromTables&& from_tables) const {
     const SunlitRay baked = withBakedSun(ray);
-    const double weight = integratedSingleScatteringWeight(baked.mu_s);
+    SunlitRay far = ray;
+    far.mu_s = far_mu_s;
+    const double weight = integratedSingleScatteringWeight(std::min(baked.mu_s, withBakedSun(far).mu_s));
     SingleScattering s = weight < 1.0 ? from_tables() : SingleScattering{Spectrum(0.0f), Spectrum(0.0f)};
     if (weight > 0.0) blendInIntegratedSingleScattering(baked, t_start, t_end, weight, s);
     return s;

@@ -99,7 +99,7 @@ void Sky::skyRadianceBatch(const glm::dvec3& camera_given, const glm::dvec3& sun
     const AxisLerp mu_lerp =
         axisLerpFromTextureCoord(scatteringCoordMuAtDistance(d, ss.mu, r, rho, H, end_m, ground), ss.mu);
     const AxisLerp nu_lerp = axisLerpNu(kernel::skybakeScatteringCoordNu(nu), ss.nu);
-    const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, 0.0, end_m, [&] {
+    const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, 0.0, end_m, mu_s, [&] {
       return SingleScattering{sampleSlice(rayleigh, mu_lerp, nu_lerp, blend) * night,
                               sampleSlice(mie, mu_lerp, nu_lerp, blend) * night};
     });

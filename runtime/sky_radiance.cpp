@@ -65,7 +65,7 @@ Sky::SkyRadianceParts Sky::skyRadianceParts(const glm::dvec3& camera_given, cons
                       shadow_transmittance, parts.single, parts.multiple);
     return parts;
   }
-  parts.single = singleScattering({r, mu, mu_s, nu, ground}, shadow, start.length, [&] {
+  parts.single = singleScattering({r, mu, mu_s, nu, ground}, shadow, start.length, mu_s_p, [&] {
     return SingleScattering{
         sampler_.scattering(t.single_rayleigh, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance,
         hasSingleMie() ? sampler_.scattering(t.single_mie, r_p, mu_p, mu_s_p, nu, ground) * shadow_transmittance

@@ -17,7 +17,8 @@ float skybakeIntegratedSingleScatteringWeight(float mu_s) {
 float skybakeBakedMuS(float mu_s) { return clamp(mu_s, skybake_baked_sun_cosines.x, skybake_baked_sun_cosines.y); }
 
 // Blends single scattering from the tables (`s`) with the integral along
-// the ray, by the weight of the baked sun (Sky::singleScattering).
+// the ray, by the weight of the lower of the baked suns the tables are
+// read under (Sky::singleScattering).
 // A program all of whose lookups start their rays under a sun above the
 // horizon where the weight is 0 (a camera in the atmosphere: every ray
 // starts where it is; skybake::gl::daylightLookupsSuffice) may define
@@ -117,7 +118,8 @@ SkybakeSkyRadianceParts skybakeSkyRadianceParts(vec3 camera_m, vec3 view_dir, ve
   }
 #endif
   float baked_mu_s = skybakeBakedMuS(mu_s);
-  float weight = skybakeIntegratedSingleScatteringWeight(baked_mu_s);
+  // The lower of the two suns the tables would be read under (Sky::singleScattering).
+  float weight = skybakeIntegratedSingleScatteringWeight(min(baked_mu_s, skybakeBakedMuS(mu_s_p)));
   SkybakeSkyTables tables = skybakeSkyTables(r_p, mu_p, mu_s_p, nu, ground);
   SkybakeSingleScattering single = SkybakeSingleScattering(vec4(0.0), vec4(0.0));
   if (weight < 1.0) single = SkybakeSingleScattering(tables.rayleigh, tables.mie);
@@ -193,6 +195,7 @@ struct SkybakeSegmentScattering {
   vec4 rayleigh;  // over the Rayleigh phase
   vec4 mie;       // over the Mie phase
   vec4 multiple;  // radiance, the shape applied at each end
+  float far_mu_s;  // the sun's zenith cosine at the segment's far end
 };
 
 // In-scattering over [0, d] of the ray (r, mu) as the scattering to the
@@ -207,6 +210,7 @@ SkybakeSegmentScattering skybakeSegmentScattering(float r, float mu, float mu_s,
   vec4 shadow_transmittance =
       shadow == 0.0 ? transmittance : exp(-skybakeOpticalDepthAlongRay(r, mu, d_p, ground));
   SkybakeSegmentScattering s;
+  s.far_mu_s = mu_s_p;
   s.rayleigh =
       max(skybakeScattering(skybake_single_rayleigh, SKYBAKE_SCALE_SINGLE_RAYLEIGH, r, mu, mu_s, nu, ground) -
               shadow_transmittance * skybakeScattering(skybake_single_rayleigh, SKYBAKE_SCALE_SINGLE_RAYLEIGH, r_p, mu_p,
@@ -246,7 +250,7 @@ vec4 skybakeDifferenceSegmentRadiance(float r, float mu, float mu_s, float nu, f
   }
   float mie_fade = clamp(mu_s / SKYBAKE_MIE_TWILIGHT_FADE_COSINE, 0.0, 1.0);
   float baked_mu_s = skybakeBakedMuS(mu_s);
-  float weight = skybakeIntegratedSingleScatteringWeight(baked_mu_s);
+  float weight = skybakeIntegratedSingleScatteringWeight(min(baked_mu_s, skybakeBakedMuS(s.far_mu_s)));
   SkybakeSingleScattering single = SkybakeSingleScattering(vec4(0.0), vec4(0.0));
   if (weight < 1.0) single = SkybakeSingleScattering(s.rayleigh, s.mie * (mie_fade * mie_fade * (3.0 - 2.0 * mie_fade)));
   single = skybakeBlendInIntegratedSingleScattering(single, r, mu, baked_mu_s, nu, ground, 0.0, max(d - shadow, 0.0),
