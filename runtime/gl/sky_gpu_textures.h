@@ -3,7 +3,9 @@
 // (runtime/glsl/) reads them. SkyGlResources uploads them to OpenGL; the web
 // export (skybake export --format web) writes them for WebGL2. 2D tables
 // are 2D textures (u across, r down); 4D tables 3D textures of their atlas
-// (x = nu * mu_s_size + mu_s, y = mu, z = r); lanes are the bake's channels
+// (x = nu * mu_s_size + mu_s, y = mu, z = r), the single-scattering ones
+// from sun texel singleScatteringFirstSunTexel on (the suns a lookup reads
+// them at; mu_s_size the texels uploaded); lanes are the bake's channels
 // in its channel order. The 4D tables are half floats with a power of two
 // per (r, mu_s) slice by default, or RGBA32F on request
 // (runtime/tables/gpu_tables.h); the 2D tables and the slice scales are

@@ -41,8 +41,19 @@ vec4 skybakeBlendAcross(vec4 a, vec4 b, float w, bool geometric) {
 }
 
 // The 4D tables' texel (r, mu, mu_s, nu), before its slice's scale.
-vec4 skybakeTexel4D(sampler3D table, int i_r, int i_mu, int i_mu_s, int i_nu) {
-  return texelFetch(table, ivec3(i_nu * skybake_scattering_size.z + i_mu_s, i_mu, i_r), 0);
+// A 4D table's sun texels as uploaded: x how many, y the first of the
+// whole axis. The single-scattering tables leave out the suns below the
+// horizon, where no lookup reads them (runtime/tables/gpu_tables.h,
+// skybakeSingleScatteringFirstSunTexel); the others hold the whole axis.
+ivec2 skybakeUploadedSunTexels(sampler3D table) {
+  int uploaded = max(textureSize(table, 0).x / skybake_scattering_size.w, 1);
+  return ivec2(uploaded, max(skybake_scattering_size.z - uploaded, 0));
+}
+
+// Texel (i_r, i_mu, i_mu_s, i_nu) of a 4D table whose sun texels are `suns`
+// (skybakeUploadedSunTexels); a sun below the first uploaded reads the first.
+vec4 skybakeTexel4D(sampler3D table, ivec2 suns, int i_r, int i_mu, int i_mu_s, int i_nu) {
+  return texelFetch(table, ivec3(i_nu * suns.x + max(i_mu_s - suns.y, 0), i_mu, i_r), 0);
 }
 
 // The scales of the four (r, mu_s) slices around a lookup, lane `scale` of
@@ -101,10 +112,11 @@ SkybakeCorner skybakeCorner(int corner, SkybakeAxisLerp r, SkybakeAxisLerp mu, S
 
 // A corner's texel pair across mu_s, each times its slice's scale (`scales`
 // of skybakeSliceScales), blended.
-vec4 skybakeCornerAcrossMuS(sampler3D table, SkybakeCorner k, SkybakeAxisLerp mu_s, vec4 scales, bool geometric) {
+vec4 skybakeCornerAcrossMuS(sampler3D table, ivec2 suns, SkybakeCorner k, SkybakeAxisLerp mu_s, vec4 scales,
+                            bool geometric) {
   vec2 slice_scales = k.upper_r ? scales.zw : scales.xy;
-  return skybakeBlendAcross(skybakeTexel4D(table, k.i_r, k.i_mu, mu_s.i0, k.i_nu) * slice_scales.x,
-                            skybakeTexel4D(table, k.i_r, k.i_mu, mu_s.i1, k.i_nu) * slice_scales.y, mu_s.w1,
+  return skybakeBlendAcross(skybakeTexel4D(table, suns, k.i_r, k.i_mu, mu_s.i0, k.i_nu) * slice_scales.x,
+                            skybakeTexel4D(table, suns, k.i_r, k.i_mu, mu_s.i1, k.i_nu) * slice_scales.y, mu_s.w1,
                             geometric);
 }
 
@@ -113,11 +125,12 @@ vec4 skybakeCornerAcrossMuS(sampler3D table, SkybakeCorner k, SkybakeAxisLerp mu
 vec4 skybakeSample4DOfSize(sampler3D table, ivec4 size, int scale, SkybakeScatteringCoord c, bool geometric) {
   SkybakeLerp4D l = skybakeLerp4D(c, size);
   vec4 scales = skybakeSliceScales(scale, l.r, l.mu_s);
+  ivec2 suns = skybakeUploadedSunTexels(table);
   vec4 lower_nu = vec4(0.0);
   vec4 upper_nu = vec4(0.0);
   for (int corner = 0; corner < 8; ++corner) {
     SkybakeCorner k = skybakeCorner(corner, l.r, l.mu, l.nu);
-    vec4 v = skybakeCornerAcrossMuS(table, k, l.mu_s, scales, geometric) * k.weight;
+    vec4 v = skybakeCornerAcrossMuS(table, suns, k, l.mu_s, scales, geometric) * k.weight;
     if (k.upper_nu) {
       upper_nu += v;
     } else {
@@ -285,16 +298,21 @@ SkybakeSkyTables skybakeSkyTables(float r, float mu, float mu_s, float nu, bool 
   vec4 rayleigh_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_RAYLEIGH, l.r, l.mu_s);
   vec4 mie_scales = skybakeSliceScales(SKYBAKE_SCALE_SINGLE_MIE, l.r, l.mu_s);
   vec4 multiple_scales = skybakeSliceScales(SKYBAKE_SCALE_MULTIPLE_SCATTERING, l.r, l.mu_s);
+  ivec2 single_suns = skybakeUploadedSunTexels(skybake_single_rayleigh);
+  ivec2 multiple_suns = ivec2(skybake_scattering_size.z, 0);
   SkybakeSkyTables lower_nu = SkybakeSkyTables(vec4(0.0), vec4(0.0), vec4(0.0));
   SkybakeSkyTables upper_nu = lower_nu;
   for (int corner = 0; corner < 8; ++corner) {
     SkybakeCorner k = skybakeCorner(corner, l.r, l.mu, l.nu);
-    vec4 rayleigh = skybakeCornerAcrossMuS(skybake_single_rayleigh, k, l.mu_s, rayleigh_scales, geometric) * k.weight;
+    vec4 rayleigh =
+        skybakeCornerAcrossMuS(skybake_single_rayleigh, single_suns, k, l.mu_s, rayleigh_scales, geometric) * k.weight;
     // A bake without single Mie has a one-texel stand-in: not read.
     vec4 mie = vec4(0.0);
-    if (with_mie) mie = skybakeCornerAcrossMuS(skybake_single_mie, k, l.mu_s, mie_scales, geometric) * k.weight;
+    if (with_mie)
+      mie = skybakeCornerAcrossMuS(skybake_single_mie, single_suns, k, l.mu_s, mie_scales, geometric) * k.weight;
     vec4 multiple =
-        skybakeCornerAcrossMuS(skybake_multiple_scattering, k, l.mu_s, multiple_scales, geometric) * k.weight;
+        skybakeCornerAcrossMuS(skybake_multiple_scattering, multiple_suns, k, l.mu_s, multiple_scales, geometric) *
+        k.weight;
     if (k.upper_nu) {
       upper_nu.rayleigh += rayleigh;
       upper_nu.mie += mie;

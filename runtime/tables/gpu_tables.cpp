@@ -39,6 +39,12 @@ HalfTable4D halfTable4D(const Texture4D& table, int channels) {
   return out;
 }
 
+int singleScatteringFirstSunTexel(const AtmosphereDomain& domain, const ScatteringSizes& sizes) {
+  int first = 0;
+  while (first + 1 < sizes.mu_s && muSFromScatteringTexel(domain, sizes, first + 1) <= 0.0) ++first;
+  return first;
+}
+
 GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision precision) {
   const TextureSizes& s = contents.sizes;
   const uint64_t texels_4d =
@@ -46,29 +52,34 @@ GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision pr
   const uint64_t texel_bytes =
       precision == GpuTablePrecision::Half ? 2 * halfComponents(contents.atmosphere.channelCount()) : kFloatTexelBytes;
   const uint64_t density_texels = texels_4d / s.scattering_mu * contents.density_view_size;
+  const ScatteringSizes scattering = ScatteringSizes::fromTextureSizes(s);
+  const uint64_t single_texels =
+      texels_4d / s.scattering_mu_s * (s.scattering_mu_s - singleScatteringFirstSunTexel(contents.domain, scattering));
   GpuUploadBytes bytes;
   for (const char* part : {bake_file::kPartSingleRayleigh, bake_file::kPartSingleMie,
                            bake_file::kPartMultipleScattering, bake_file::kPartMultipleDensity}) {
     // A combined single Mie table is rebuilt in memory from its first
     // channel (approximateSingleMie) and uploaded whole.
-    const bool density = std::string_view(part) == bake_file::kPartMultipleDensity;
-    const bool uploaded = std::string_view(part) == bake_file::kPartSingleMie ? bakeStoresSingleMie(contents)
-                                                                              : !leavesOut(contents, part);
-    bytes.tables_4d += (uploaded ? (density ? density_texels : texels_4d) : 1) * texel_bytes;
+    const std::string_view name(part);
+    const bool uploaded =
+        name == bake_file::kPartSingleMie ? bakeStoresSingleMie(contents) : !leavesOut(contents, part);
+    const uint64_t texels = name == bake_file::kPartMultipleDensity      ? density_texels
+                            : name == bake_file::kPartMultipleScattering ? texels_4d
+                                                                         : single_texels;
+    bytes.tables_4d += (uploaded ? texels : 1) * texel_bytes;
   }
   const uint64_t irradiance_texels =
       leavesOut(contents, bake_file::kPartIrradiance) ? 1 : static_cast<uint64_t>(s.irradiance_mu_s) * s.irradiance_r;
-  // A colour bake's wavelength optical depths, its groups' tables stacked
-  // (one texel of zeros for any other bake).
+  // A colour bake's wavelength optical depths: its groups' tables, stacked
+  // below the bake's own in the optical-depth texture.
   const uint64_t groups = contents.wavelength_groups.size();
-  const uint64_t wavelength_depth_texels =
-      groups == 0 ? 1 : groups * static_cast<uint64_t>(s.transmittance_mu) * s.transmittance_r;
+  const uint64_t wavelength_depth_texels = groups * static_cast<uint64_t>(s.transmittance_mu) * s.transmittance_r;
   bytes.tables_2d =
       (static_cast<uint64_t>(s.transmittance_mu) * s.transmittance_r + irradiance_texels + wavelength_depth_texels) *
       kFloatTexelBytes;
-  bytes.slice_scales =
-      (precision == GpuTablePrecision::Half ? static_cast<uint64_t>(s.scattering_r) * s.scattering_mu_s : 1) *
-      kFloatTexelBytes;
+  // Every (r, mu_s) slice's scale, 1 throughout for a float upload (the
+  // GLSL reads them either way).
+  bytes.slice_scales = static_cast<uint64_t>(s.scattering_r) * s.scattering_mu_s * kFloatTexelBytes;
   return bytes;
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "data_formats/bake_file/bake_file.h"
+#include "data_formats/parameterization/texture_mapping.h"
 
 namespace skybake {
 
@@ -39,12 +40,23 @@ struct HalfTable4D {
 };
 HalfTable4D halfTable4D(const Texture4D& table, int channels);
 
+// The first sun (mu_s) texel of the single-scattering tables that a lookup
+// reads: the last at or below the horizon (0 where the axis starts above
+// it). Lookups take single scattering from the tables only where the sun
+// is above the horizon everywhere they read them, and integrate it along
+// the ray elsewhere (Sky::singleScattering; the GLSL alike), so the texels
+// before this one are never read: an upload leaves them out (18 of the
+// default 41 sun texels, 13.5 MiB of its half floats; the GLSL finds where
+// the uploaded ones start from the texture's width,
+// skybakeUploadedSunTexels).
+int singleScatteringFirstSunTexel(const AtmosphereDomain& domain, const ScatteringSizes& sizes);
+
 // Bytes of texture memory an upload of a bake with these contents takes, as
 // the GL formats' sizes (a driver may pad RGB16F to 8 bytes).
 struct GpuUploadBytes {
   uint64_t tables_4d = 0;     // the 4D tables the file holds (a left-out one is one texel)
   uint64_t tables_2d = 0;     // optical depth, irradiance, a colour bake's wavelength optical depths
-  uint64_t slice_scales = 0;  // the scale table (one texel for a float upload)
+  uint64_t slice_scales = 0;  // the scale table
   uint64_t total() const { return tables_4d + tables_2d + slice_scales; }
 };
 GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision precision);

@@ -33,6 +33,7 @@
 #include "runtime/gl/headless_gl_context.h"
 #include "runtime/gl/sky_gl_parameters.h"
 #include "runtime/gl/sky_gl_resources.h"
+#include "runtime/gl/sky_gpu_textures.h"
 #include "runtime/sky.h"
 
 namespace skybake {
@@ -611,6 +612,63 @@ TEST_F(GlParity, RadianceToPoint) {
       }
       expectParity(sky, gl, queries, std::string(bake) + ": radiance to a point, sun " + std::to_string(sun_zenith));
     }
+  }
+}
+
+// Under a sun just above the camera's horizon, points hundreds of km away
+// from the sun and long light shafts end where the sun is below the
+// horizon: the single-scattering tables are not uploaded there
+// (runtime/tables/gpu_tables.h), and the lookups integrate single
+// scattering along the ray instead, the C++ and the GLSL alike.
+TEST_F(GlParity, FarEndsPastTheTerminator) {
+  const Sky sky = Sky::load(bakePath("gl_earth.exr"));
+  const GlLookups gl(sky);
+  const float bottom = static_cast<float>(sky.atmosphere().bottom_radius_m);
+  const glm::vec3 camera(0.0f, 0.0f, bottom + 1000.0f);
+  for (double sun_zenith : {88.0, 89.5}) {
+    std::vector<Query> queries;
+    for (int i = 0; i < 256; ++i) {
+      // Away from the sun (azimuth 120 to 240 deg), 80 to 92 deg from the
+      // zenith: 300 km away the sun is 2.7 deg lower.
+      const double azimuth = radiansFromDegrees(120.0 + 120.0 * (i % 16) / 15.0);
+      const double zenith = radiansFromDegrees(80.0 + 12.0 * (i / 16) / 15.0);
+      const glm::vec3 d(static_cast<float>(std::sin(zenith) * std::cos(azimuth)),
+                        static_cast<float>(std::sin(zenith) * std::sin(azimuth)), static_cast<float>(std::cos(zenith)));
+      const float reach_m = 50000.0f + 25000.0f * static_cast<float>(i % 23);  // 50 to 600 km
+      if (i % 2 == 0) {
+        queries.push_back({Kind::RadianceToPoint, camera, camera + d * reach_m, sunAt(sun_zenith)});
+      } else {
+        queries.push_back({Kind::SkyRadiance, camera, d, sunAt(sun_zenith), reach_m});
+      }
+    }
+    expectParity(sky, gl, queries, "far ends past the terminator, sun " + std::to_string(sun_zenith));
+  }
+}
+
+// What `skybake info` states an upload takes is what skyGpuTextures
+// uploads, and the single-scattering tables start at the last sun texel at
+// or below the horizon.
+TEST(GlUpload, BytesAreTheTexturesAndSingleScatteringStartsAtTheHorizon) {
+  for (const char* bake : {"gl_earth.exr", "gl_scene.exr"}) {
+    const Sky sky = Sky::load(bakePath(bake));
+    for (GpuTablePrecision precision : {GpuTablePrecision::Half, GpuTablePrecision::Float}) {
+      uint64_t bytes = 0;
+      for (const gl::GpuTexture& t : gl::skyGpuTextures(sky, precision)) {
+        EXPECT_EQ(t.bytes().size(), static_cast<size_t>(t.width) * t.height * t.depth * gl::gpuTexelBytes(t.format))
+            << bake << " " << t.sampler;
+        bytes += t.bytes().size();
+      }
+      EXPECT_EQ(bytes, gpuUploadBytes(sky.contents(), precision).total()) << bake;
+    }
+    const AtmosphereDomain& domain = sky.contents().domain;
+    const ScatteringSizes sizes = ScatteringSizes::fromTextureSizes(sky.contents().sizes);
+    const int first = singleScatteringFirstSunTexel(domain, sizes);
+    if (first > 0) EXPECT_LE(muSFromScatteringTexel(domain, sizes, first), 0.0) << bake;
+    EXPECT_GT(muSFromScatteringTexel(domain, sizes, first + 1), 0.0) << bake;
+    const std::vector<gl::GpuTexture> textures = gl::skyGpuTextures(sky, GpuTablePrecision::Half);
+    EXPECT_EQ(textures[1].width, sizes.nu * (sizes.mu_s - first)) << bake;  // skybake_single_rayleigh
+    EXPECT_EQ(textures[3].width, sizes.nu * sizes.mu_s) << bake;            // skybake_multiple_scattering
+    if (std::string(bake) == "gl_earth.exr") EXPECT_GT(first, 0) << "its suns reach below the horizon";
   }
 }
 
