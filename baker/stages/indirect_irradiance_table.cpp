@@ -1,5 +1,6 @@
 #include <omp.h>
 
+#include <optional>
 #include <vector>
 
 #include "baker/stages/indirect_irradiance_table.h"
@@ -75,13 +76,17 @@ Texture2D computeIndirectIrradianceTable(const StageContext& ctx, const Texture2
         for (const ZenithRing& ring : rings) {
           const double length = distanceToAtmosphereEnd(rm.r, ring.mu, a.bottom_radius_m, a.top_radius_m, false);
           ring_radiance.moveTo(rm.r, ring.mu, rm.mu_s, false);
+          // The ring's view ray, shared by its azimuths' integrals.
+          std::optional<SingleScatteringAlongRay> along_ray;
+          if (integrated_weight > 0.0) {
+            along_ray.emplace(ctx.sampler, optical_depth, a, rm.r, ring.mu, false, 0.0, length,
+                              kLookupSingleScatteringSegments);
+          }
           for (int j = 0; j < kAzimuthSamples / 2; ++j) {
             const double nu = clampCosine(ring.sin_theta * cos_phi[j] * sun_x + ring.mu * rm.mu_s);
             SpectrumD radiance(ring_radiance.at(nu));
-            if (integrated_weight > 0.0) {
-              const SingleScattering integrated =
-                  integrateSingleScattering(ctx.sampler, optical_depth, a, {rm.r, ring.mu, rm.mu_s, nu, false}, 0.0,
-                                            length, kLookupSingleScatteringSegments);
+            if (along_ray) {
+              const SingleScattering integrated = along_ray->under(rm.mu_s, nu);
               const SpectrumD integrated_radiance(
                   order.withPhase(integrated.rayleigh, integrated.mie, nu, SpectrumD(0.0), a.mie_phase_g));
               radiance += (integrated_radiance - radiance) * integrated_weight;

@@ -76,4 +76,73 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
   return {Spectrum(rayleigh_xyz), Spectrum(mie_xyz)};
 }
 
+SingleScatteringAlongRay::SingleScatteringAlongRay(const TableSampler& sampler, const Texture2D& optical_depth,
+                                                   const AtmosphereParameters& a, double r, double mu,
+                                                   bool ray_intersects_ground, double t_start, double t_end,
+                                                   int segments)
+    : sampler_(sampler),
+      optical_depth_(optical_depth),
+      a_(a),
+      r_(r),
+      mu_(mu),
+      ray_intersects_ground_(ray_intersects_ground),
+      t_end_(t_end) {
+  if (!(t_end > t_start)) return;
+  const AtmosphereMedia media(a);
+  auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };
+  forEachOpticallyThinPiece(
+      t_start, t_end, segments, -r * mu,
+      [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
+      [&](double start, double end) {
+        pieces_.push_back({start, end, nodes_.size()});
+        forEachQuadratureNode(start, end, 1, [&](double t, double w) { nodes_.push_back(nodeAt(t, w)); });
+      });
+}
+
+SingleScatteringAlongRay::Node SingleScatteringAlongRay::nodeAt(double t, double w) const {
+  const AtmosphereMedia media(a_);
+  const double r_t = std::clamp(radiusAlongRay(r_, mu_, t), a_.bottom_radius_m, a_.top_radius_m);
+  const double altitude = r_t - a_.bottom_radius_m;
+  return {t,
+          r_t,
+          w * media.rayleighDensity(altitude),
+          w * media.mieDensity(altitude),
+          sampler_.opticalDepthAlongRay(optical_depth_, r_, mu_, t, ray_intersects_ground_),
+          TableSampler::SunFromR(sampler_, r_t, a_.sun_angular_radius_rad)};
+}
+
+SingleScattering SingleScatteringAlongRay::under(double mu_s, double nu) const {
+  if (pieces_.empty()) return {Spectrum(0.0f), Spectrum(0.0f)};
+  SpectrumD rayleigh(0.0), mie(0.0);
+  // As integrateSingleScattering's node, from what the node holds.
+  auto add = [&](const Node& n) {
+    const double mu_s_t = clampCosine((r_ * mu_s + n.t * nu) / n.r_t);
+    const double visible = n.sun.visibleFraction(mu_s_t);
+    if (visible <= 0.0) return;
+    const Spectrum depth = n.sun.opticalDepth(optical_depth_, n.sun.muCoord(mu_s_t)) + n.view_depth;
+    const SpectrumD light(glm::exp(-depth) * static_cast<float>(visible));
+    rayleigh += light * n.rayleigh_weight;
+    mie += light * n.mie_weight;
+  };
+  const ShadowCrossings crossings = planetShadowCrossings(r_, mu_, mu_s, nu, a_.bottom_radius_m, t_end_);
+  for (const Piece& p : pieces_) {
+    // As forEachOpticallyThinNodeCutAt: the piece cut where the shadow's
+    // edges fall inside it, each part its own rule.
+    double part_start = p.start;
+    for (int i = 0; i < crossings.count; ++i) {
+      if (crossings.distance[i] > part_start && crossings.distance[i] < p.end) {
+        forEachQuadratureNode(part_start, crossings.distance[i], 1, [&](double t, double w) { add(nodeAt(t, w)); });
+        part_start = crossings.distance[i];
+      }
+    }
+    if (part_start == p.start) {
+      for (int k = 0; k < kGaussNodes; ++k) add(nodes_[p.first_node + k]);
+    } else {
+      forEachQuadratureNode(part_start, p.end, 1, [&](double t, double w) { add(nodeAt(t, w)); });
+    }
+  }
+  return {Spectrum(rayleigh) * a_.sun_irradiance * a_.rayleigh_scattering,
+          Spectrum(mie) * a_.sun_irradiance * a_.mie_scattering};
+}
+
 }  // namespace skybake

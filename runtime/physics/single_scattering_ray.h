@@ -11,6 +11,7 @@
 
 #include <array>
 #include <span>
+#include <vector>
 
 #include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/physics/moon_occluder.h"
@@ -69,6 +70,47 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
                                            double t_end, int segments, const MoonAlongRay* moon = nullptr,
                                            const ColourWavelengths* colour = nullptr);
+
+// integrateSingleScattering of one view ray (no moon, no colour) under many
+// suns: the rule's pieces and their nodes' positions, densities and view-ray
+// optical depths are computed once; a sun then adds only its sunlight at
+// each node, and recomputes in full only the pieces its shadow's edges cut.
+// The same sums as integrateSingleScattering, bit for bit (a test ties
+// them), for a hemisphere of directions each under every azimuth of a sun
+// (the bake's sky irradiance in twilight).
+class SingleScatteringAlongRay {
+ public:
+  // The view ray (r, mu) over [t_start, t_end], as integrateSingleScattering's.
+  SingleScatteringAlongRay(const TableSampler& sampler, const Texture2D& optical_depth, const AtmosphereParameters& a,
+                           double r, double mu, bool ray_intersects_ground, double t_start, double t_end, int segments);
+  // integrateSingleScattering(sampler, optical_depth, a, {r, mu, mu_s, nu,
+  // ray_intersects_ground}, t_start, t_end, segments).
+  SingleScattering under(double mu_s, double nu) const;
+
+ private:
+  struct Node {
+    double t;
+    double r_t;
+    double rayleigh_weight;  // quadrature weight times density
+    double mie_weight;
+    Spectrum view_depth;  // optical depth from the ray's start
+    TableSampler::SunFromR sun;
+  };
+  struct Piece {
+    double start, end;
+    size_t first_node;  // kGaussNodes nodes from here
+  };
+  const TableSampler& sampler_;
+  const Texture2D& optical_depth_;
+  const AtmosphereParameters& a_;
+  double r_, mu_;
+  bool ray_intersects_ground_;
+  double t_end_;
+  std::vector<Piece> pieces_;
+  std::vector<Node> nodes_;
+
+  Node nodeAt(double t, double w) const;
+};
 
 // How much of a lookup's single scattering comes from this integral rather
 // than the tables, for a sun at zenith cosine mu_s: 1 from the horizon

@@ -8,6 +8,8 @@
 
 #include "baker/stages/optical_depth_table.h"
 #include "baker/stages/single_scattering_tables.h"
+#include "runtime/physics/planet_shadow.h"
+#include "runtime/physics/single_scattering_ray.h"
 #include "test_configs.h"
 
 namespace skybake {
@@ -142,6 +144,50 @@ TEST(SingleScattering, TablesEqualTheRayIntegralInTwilightAndOnNarrowedAxes) {
   d.scattering_mu_s_coord_max = muSUnitCoord(d, std::cos(radiansFromDegrees(80.0)));
   d.scattering_ground_views = false;
   expectTablesMatchTheRayIntegral(d, config.sizes);
+}
+
+// One view ray's integral under many suns (SingleScatteringAlongRay, the
+// bake's twilight sky irradiance) is integrateSingleScattering's exactly:
+// the same nodes summed in the same order, whether the planet's shadow cuts
+// the ray or not. Rays up, along and below the horizon from the ground and
+// from altitude; suns from the day to deep twilight; every azimuth.
+TEST(SingleScattering, OneRayUnderManySunsIsTheRayIntegral) {
+  const BakeConfig config = test::smallEarth(1);
+  const AtmosphereParameters& a = config.atmosphere;
+  SilentProgress silent;
+  const TableSampler sampler(AtmosphereDomain::fromParameters(a), config.sizes);
+  const StageContext ctx{a, sampler, silent};
+  const Texture2D optical_depth = computeOpticalDepthTable(ctx);
+  int cut = 0, checked = 0;
+  for (double altitude_m : {0.0, 3000.0, 40000.0}) {
+    const double r = a.bottom_radius_m + altitude_m;
+    for (double mu : {1.0, 0.5, 0.1, 0.0, -0.05, -0.3}) {
+      const bool ground = rayIntersectsSphere(r, mu, a.bottom_radius_m);
+      const double length = distanceToAtmosphereEnd(r, mu, a.bottom_radius_m, a.top_radius_m, ground);
+      const SingleScatteringAlongRay along(sampler, optical_depth, a, r, mu, ground, 0.0, length, 4);
+      for (double sun_zenith_deg : {30.0, 89.0, 91.0, 95.0, 102.0}) {
+        const double mu_s = std::cos(radiansFromDegrees(sun_zenith_deg));
+        for (int k = 0; k < 12; ++k) {
+          const double phi = 2.0 * kPi * k / 12.0;
+          const double nu =
+              clampCosine(safeSqrt(1.0 - mu * mu) * safeSqrt(1.0 - mu_s * mu_s) * std::cos(phi) + mu * mu_s);
+          const SingleScattering expected =
+              integrateSingleScattering(sampler, optical_depth, a, {r, mu, mu_s, nu, ground}, 0.0, length, 4);
+          const SingleScattering got = along.under(mu_s, nu);
+          cut += planetShadowCrossings(r, mu, mu_s, nu, a.bottom_radius_m, length).count > 0;
+          ++checked;
+          for (int c = 0; c < a.channelCount(); ++c) {
+            ASSERT_EQ(got.rayleigh[c], expected.rayleigh[c])
+                << altitude_m << " " << mu << " " << sun_zenith_deg << " " << k;
+            ASSERT_EQ(got.mie[c], expected.mie[c]) << altitude_m << " " << mu << " " << sun_zenith_deg << " " << k;
+          }
+        }
+      }
+    }
+  }
+  // Both paths of the class were taken: rays the shadow cuts and rays it does not.
+  EXPECT_GT(cut, checked / 10);
+  EXPECT_LT(cut, checked);
 }
 
 }  // namespace
