@@ -59,7 +59,7 @@ GpuUploadBytes gpuUploadBytes(const BakeContents& contents, GpuTablePrecision pr
   for (const char* part : {bake_file::kPartSingleRayleigh, bake_file::kPartSingleMie,
                            bake_file::kPartMultipleScattering, bake_file::kPartMultipleDensity}) {
     // A combined single Mie table is rebuilt in memory from its first
-    // channel (approximateSingleMie) and uploaded whole.
+    // channel (approximateSingleMie) and uploaded as the Rayleigh one.
     const std::string_view name(part);
     const bool uploaded =
         name == bake_file::kPartSingleMie ? bakeStoresSingleMie(contents) : !leavesOut(contents, part);
