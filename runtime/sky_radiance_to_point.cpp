@@ -18,17 +18,8 @@ struct SegmentScattering {
   Spectrum rayleigh;  // over the Rayleigh phase
   Spectrum mie;       // over the Mie phase
   Spectrum multiple;  // radiance (the multiple-scattering shape applied at each end)
+  double far_mu_s;    // the sun's zenith cosine at the segment's far end
 };
-
-// The point at distance d_p along the ray (r, mu), where a segment's
-// tables are read at its far end.
-struct SegmentEnd {
-  double r_p, mu_p, mu_s_p;
-};
-SegmentEnd segmentEnd(const AtmosphereDomain& domain, double r, double mu, double mu_s, double nu, double d_p) {
-  const double r_p = std::clamp(radiusAlongRay(r, mu, d_p), domain.bottom_radius_m, domain.top_radius_m);
-  return {r_p, cosineAlongRay(r, mu, d_p, r_p), clampCosine((r * mu_s + d_p * nu) / r_p)};
-}
 
 // In-scattering over [0, d] of the ray (r, mu): the scattering to the ray's
 // end seen from its start minus that seen from the point at d, attenuated.
@@ -37,7 +28,9 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
                                     double nu, double d, double shadow, bool ground, const Spectrum& transmittance) {
   const AtmosphereDomain& domain = sampler.domain();
   const double d_p = std::max(d - shadow, 0.0);
-  const auto [r_p, mu_p, mu_s_p] = segmentEnd(domain, r, mu, mu_s, nu, d_p);
+  const double r_p = std::clamp(radiusAlongRay(r, mu, d_p), domain.bottom_radius_m, domain.top_radius_m);
+  const double mu_p = cosineAlongRay(r, mu, d_p, r_p);
+  const double mu_s_p = clampCosine((r * mu_s + d_p * nu) / r_p);
   const Spectrum shadow_transmittance =
       shadow == 0.0 ? transmittance : glm::exp(-sampler.opticalDepthAlongRay(t.optical_depth, r, mu, d_p, ground));
   auto difference = [&](const Texture4D& table, const Spectrum& scale_here, const Spectrum& scale_there) {
@@ -49,7 +42,8 @@ SegmentScattering segmentScattering(const TableSampler& sampler, const BakeTable
   return {difference(t.single_rayleigh, one, one),
           t.single_mie.texels.empty() ? Spectrum(0.0f) : difference(t.single_mie, one, one),
           difference(t.multiple_scattering, multiple_shape(r - domain.bottom_radius_m, nu),
-                     multiple_shape(r_p - domain.bottom_radius_m, nu))};
+                     multiple_shape(r_p - domain.bottom_radius_m, nu)),
+          mu_s_p};
 }
 
 }  // namespace
@@ -132,11 +126,10 @@ Spectrum Sky::differenceSegmentRadiance(double r, double mu, double mu_s, double
     s.multiple = s.multiple * w_this + other.multiple * (1.0f - w_this);
   }
   const double mie_fade = std::clamp(mu_s / kMieTwilightFadeCosine, 0.0, 1.0);
-  const double d_p = std::max(d - shadow, 0.0);
-  const double far_mu_s = segmentEnd(domain, r, mu, mu_s, nu, d_p).mu_s_p;
-  const SingleScattering single = singleScattering({r, mu, mu_s, nu, ground}, 0.0, d_p, far_mu_s, [&] {
-    return SingleScattering{s.rayleigh, s.mie * static_cast<float>(mie_fade * mie_fade * (3.0 - 2.0 * mie_fade))};
-  });
+  const SingleScattering single =
+      singleScattering({r, mu, mu_s, nu, ground}, 0.0, std::max(d - shadow, 0.0), s.far_mu_s, [&] {
+        return SingleScattering{s.rayleigh, s.mie * static_cast<float>(mie_fade * mie_fade * (3.0 - 2.0 * mie_fade))};
+      });
   return single.rayleigh * static_cast<float>(rayleighPhase(nu)) + single.mie * static_cast<float>(mie_phase_(nu)) +
          s.multiple;
 }

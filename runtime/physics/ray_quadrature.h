@@ -115,18 +115,27 @@ inline void forEachOpticallyThinNode(double a, double b, int segments, double lo
 // Giving each stretch between cuts its own share of `segments` instead
 // (rounded to whole sub-intervals) made the integral jump, by up to 1 % of a
 // grazing twilight ray, each time a share crossed a whole number.
+// The parts of the piece [start, end] between the distances `cuts`
+// (ascending; those outside it are ignored): calls part(part_start, part_end)
+// in order, once with the whole piece where no cut falls inside it.
+template <typename PartFn>
+inline void forEachPartCutAt(double start, double end, const double* cuts, int cut_count, PartFn&& part) {
+  double part_start = start;
+  for (int i = 0; i < cut_count; ++i) {
+    if (cuts[i] > part_start && cuts[i] < end) {
+      part(part_start, cuts[i]);
+      part_start = cuts[i];
+    }
+  }
+  part(part_start, end);
+}
+
 template <typename ExtinctionFn, typename NodeFn>
 inline void forEachOpticallyThinNodeCutAt(double a, double b, int segments, double lowest_t, const double* cuts,
                                           int cut_count, ExtinctionFn&& extinction, NodeFn&& node) {
   forEachOpticallyThinPiece(a, b, segments, lowest_t, extinction, [&](double start, double end) {
-    double part_start = start;
-    for (int i = 0; i < cut_count; ++i) {
-      if (cuts[i] > part_start && cuts[i] < end) {
-        forEachQuadratureNode(part_start, cuts[i], 1, node);
-        part_start = cuts[i];
-      }
-    }
-    forEachQuadratureNode(part_start, end, 1, node);
+    forEachPartCutAt(start, end, cuts, cut_count,
+                     [&](double part_start, double part_end) { forEachQuadratureNode(part_start, part_end, 1, node); });
   });
 }
 

@@ -18,6 +18,17 @@ double integratedSingleScatteringWeight(double mu_s) {
   return x * x * (3.0 - 2.0 * x);
 }
 
+namespace {
+
+// The sunlight at a node, seen from the ray's start: through the sun's
+// path to the node and the view ray back (one exponential), times the part
+// of the sun's disk that lights the node.
+SpectrumD sunlightToStart(const Spectrum& sun_depth, const Spectrum& view_depth, double visible) {
+  return SpectrumD(glm::exp(-(sun_depth + view_depth)) * static_cast<float>(visible));
+}
+
+}  // namespace
+
 SingleScattering integrateSingleScattering(const TableSampler& sampler, const Texture2D& optical_depth,
                                            const AtmosphereParameters& a, const SunlitRay& ray, double t_start,
                                            double t_end, int segments, const MoonAlongRay* moon,
@@ -49,9 +60,9 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
     const double mie_weight = w * media.mieDensity(altitude);
     for (size_t g = 0; g < passes; ++g) {
       const Texture2D& depths = colour == nullptr ? optical_depth : colour->optical_depth[g];
-      const Spectrum depth = sun.opticalDepth(depths, sun_coord) +
-                             sampler.opticalDepthAlongRay(depths, r, mu, t, ray.ray_intersects_ground);
-      const SpectrumD light(glm::exp(-depth) * static_cast<float>(visible));
+      const SpectrumD light =
+          sunlightToStart(sun.opticalDepth(depths, sun_coord),
+                          sampler.opticalDepthAlongRay(depths, r, mu, t, ray.ray_intersects_ground), visible);
       rayleigh[g] += light * rayleigh_weight;
       mie[g] += light * mie_weight;
     }
@@ -119,27 +130,23 @@ SingleScattering SingleScatteringAlongRay::under(double mu_s, double nu) const {
     const double mu_s_t = clampCosine((r_ * mu_s + n.t * nu) / n.r_t);
     const double visible = n.sun.visibleFraction(mu_s_t);
     if (visible <= 0.0) return;
-    const Spectrum depth = n.sun.opticalDepth(optical_depth_, n.sun.muCoord(mu_s_t)) + n.view_depth;
-    const SpectrumD light(glm::exp(-depth) * static_cast<float>(visible));
+    const SpectrumD light =
+        sunlightToStart(n.sun.opticalDepth(optical_depth_, n.sun.muCoord(mu_s_t)), n.view_depth, visible);
     rayleigh += light * n.rayleigh_weight;
     mie += light * n.mie_weight;
   };
   const ShadowCrossings crossings = planetShadowCrossings(r_, mu_, mu_s, nu, a_.bottom_radius_m, t_end_);
   for (const Piece& p : pieces_) {
     // As forEachOpticallyThinNodeCutAt: the piece cut where the shadow's
-    // edges fall inside it, each part its own rule.
-    double part_start = p.start;
-    for (int i = 0; i < crossings.count; ++i) {
-      if (crossings.distance[i] > part_start && crossings.distance[i] < p.end) {
-        forEachQuadratureNode(part_start, crossings.distance[i], 1, [&](double t, double w) { add(nodeAt(t, w)); });
-        part_start = crossings.distance[i];
+    // edges fall inside it, each part its own rule; a whole piece's nodes
+    // are the stored ones.
+    forEachPartCutAt(p.start, p.end, crossings.distance.data(), crossings.count, [&](double start, double end) {
+      if (start == p.start && end == p.end) {
+        for (int k = 0; k < kGaussNodes; ++k) add(nodes_[p.first_node + k]);
+      } else {
+        forEachQuadratureNode(start, end, 1, [&](double t, double w) { add(nodeAt(t, w)); });
       }
-    }
-    if (part_start == p.start) {
-      for (int k = 0; k < kGaussNodes; ++k) add(nodes_[p.first_node + k]);
-    } else {
-      forEachQuadratureNode(part_start, p.end, 1, [&](double t, double w) { add(nodeAt(t, w)); });
-    }
+    });
   }
   return {Spectrum(rayleigh) * a_.sun_irradiance * a_.rayleigh_scattering,
           Spectrum(mie) * a_.sun_irradiance * a_.mie_scattering};
