@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -46,23 +47,30 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
   std::array<SpectrumD, kMaxWavelengthGroups> rayleigh, mie;
   rayleigh.fill(SpectrumD(0.0));
   mie.fill(SpectrumD(0.0));
+  // The view ray's depths from its start, per pass's table.
+  std::array<std::optional<TableSampler::DepthAlongRay>, kMaxWavelengthGroups> view_depths;
+  for (size_t g = 0; g < passes; ++g) {
+    view_depths[g].emplace(sampler, colour == nullptr ? optical_depth : colour->optical_depth[g], r, mu,
+                           ray.ray_intersects_ground);
+  }
   auto node = [&](double t, double w) {
     const double r_t = radiusAt(t);
-    const double altitude = r_t - a.bottom_radius_m;
     const double mu_s_t = clampCosine((r * ray.mu_s + t * ray.nu) / r_t);
     // As TableSampler::transmittanceToSun, with one exponential for the
-    // sunlight's whole path, to the node and on to the ray's start.
-    const TableSampler::SunFromR sun(sampler, r_t, a.sun_angular_radius_rad);
-    const double visible = sun.visibleFraction(mu_s_t) * (moon ? moon->visibleSunFraction(t) : 1.0);
+    // sunlight's whole path, to the node and on to the ray's start; whether
+    // the node is lit first, before any table read.
+    const double visible = TableSampler::SunDiskAtR(sampler, r_t, a.sun_angular_radius_rad).visibleFraction(mu_s_t) *
+                           (moon ? moon->visibleSunFraction(t) : 1.0);
     if (visible <= 0.0) return;  // in the planet's shadow or the moon's umbra
-    const double sun_coord = sun.muCoord(mu_s_t);
+    const TableSampler::OpticalDepthFromR at_node(sampler, r_t);
+    const double sun_coord = at_node.muCoord(mu_s_t);
+    const double altitude = r_t - a.bottom_radius_m;
     const double rayleigh_weight = w * media.rayleighDensity(altitude);
     const double mie_weight = w * media.mieDensity(altitude);
     for (size_t g = 0; g < passes; ++g) {
       const Texture2D& depths = colour == nullptr ? optical_depth : colour->optical_depth[g];
       const SpectrumD light =
-          sunlightToStart(sun.opticalDepth(depths, sun_coord),
-                          sampler.opticalDepthAlongRay(depths, r, mu, t, ray.ray_intersects_ground), visible);
+          sunlightToStart(at_node.opticalDepth(depths, sun_coord), view_depths[g]->to(t, r_t, at_node), visible);
       rayleigh[g] += light * rayleigh_weight;
       mie[g] += light * mie_weight;
     }
@@ -96,8 +104,8 @@ SingleScatteringAlongRay::SingleScatteringAlongRay(const TableSampler& sampler, 
       a_(a),
       r_(r),
       mu_(mu),
-      ray_intersects_ground_(ray_intersects_ground),
-      t_end_(t_end) {
+      t_end_(t_end),
+      view_depth_(sampler, optical_depth, r, mu, ray_intersects_ground) {
   if (!(t_end > t_start)) return;
   const AtmosphereMedia media(a);
   auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };
@@ -114,12 +122,9 @@ SingleScatteringAlongRay::Node SingleScatteringAlongRay::nodeAt(double t, double
   const AtmosphereMedia media(a_);
   const double r_t = std::clamp(radiusAlongRay(r_, mu_, t), a_.bottom_radius_m, a_.top_radius_m);
   const double altitude = r_t - a_.bottom_radius_m;
-  return {t,
-          r_t,
-          w * media.rayleighDensity(altitude),
-          w * media.mieDensity(altitude),
-          sampler_.opticalDepthAlongRay(optical_depth_, r_, mu_, t, ray_intersects_ground_),
-          TableSampler::SunFromR(sampler_, r_t, a_.sun_angular_radius_rad)};
+  const TableSampler::SunFromR sun(sampler_, r_t, a_.sun_angular_radius_rad);
+  return {t,  r_t, w * media.rayleighDensity(altitude), w * media.mieDensity(altitude), view_depth_.to(t, r_t, sun),
+          sun};
 }
 
 SingleScattering SingleScatteringAlongRay::under(double mu_s, double nu) const {

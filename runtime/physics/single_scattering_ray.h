@@ -104,8 +104,8 @@ class SingleScatteringAlongRay {
   const Texture2D& optical_depth_;
   const AtmosphereParameters& a_;
   double r_, mu_;
-  bool ray_intersects_ground_;
   double t_end_;
+  TableSampler::DepthAlongRay view_depth_;  // the view ray's optical depths from its start
   std::vector<Piece> pieces_;
   std::vector<Node> nodes_;
 

@@ -194,11 +194,9 @@ class TableSampler {
   Spectrum opticalDepthAlongRay(const Texture2D& optical_depth, double r, double mu, double d,
                                 bool ray_intersects_ground) const {
     const double r_d = std::clamp(radiusAlongRay(r, mu, d), domain_.bottom_radius_m, domain_.top_radius_m);
-    const double mu_d = cosineAlongRay(r, mu, d, r_d);
-    const bool reversed = ray_intersects_ground || d <= -r * mu;
-    return reversed
-               ? depthBetween(opticalDepthToTop(optical_depth, r_d, -mu_d), opticalDepthToTop(optical_depth, r, -mu))
-               : depthBetween(opticalDepthToTop(optical_depth, r, mu), opticalDepthToTop(optical_depth, r_d, mu_d));
+    const RayLeg leg = RayLeg::to(r, mu, d, r_d, ray_intersects_ground);
+    const Spectrum from_start = opticalDepthToTop(optical_depth, r, leg.reversed ? -mu : mu);
+    return leg.depth(optical_depth, from_start, OpticalDepthFromR(*this, r_d));
   }
   // The optical depth between two points on one ray from the depths to the
   // top at the nearer (`from_nearer`) and the farther point, as seen looking
@@ -216,6 +214,24 @@ class TableSampler {
     if (visible <= 0.0) return Spectrum(0.0f);
     return glm::exp(-sun.opticalDepth(optical_depth, sun.muCoord(mu_s))) * static_cast<float>(visible);
   }
+
+  // The leg of a ray (r, mu) from its start to distance d (radius r_d):
+  // the point's zenith cosine there, and whether both depths are taken
+  // reversed, pointing up (opticalDepthAlongRay says when).
+  struct RayLeg {
+    bool reversed;
+    double mu_d;
+    static RayLeg to(double r, double mu, double d, double r_d, bool ray_intersects_ground) {
+      return {ray_intersects_ground || d <= -r * mu, cosineAlongRay(r, mu, d, r_d)};
+    }
+    // The depth along the leg from the start's depth to the top (along -mu
+    // when reversed, else mu) and the point's, read at r_d through at_d.
+    template <class AtR>
+    Spectrum depth(const Texture2D& optical_depth, const Spectrum& from_start, const AtR& at_d) const {
+      return reversed ? depthBetween(at_d.toTop(optical_depth, -mu_d), from_start)
+                      : depthBetween(from_start, at_d.toTop(optical_depth, mu_d));
+    }
+  };
 
   // Optical depths to the top from one r: where a direction falls on the
   // table's mu axis (selects only, so loops over many directions vectorize)
@@ -241,19 +257,68 @@ class TableSampler {
     AxisLerp r_lerp_;  // the r axis, the same for every direction
   };
 
+  // How much of the sun's disk is above the horizon from radius r, for a sun
+  // at zenith cosine mu_s (linear ramp over the disk's angular diameter):
+  // cheap, so a point in the planet's shadow is known before any table read.
+  class SunDiskAtR {
+   public:
+    SunDiskAtR(const TableSampler& sampler, double r, double sun_angular_radius)
+        : tangent_mu_(tangentZenithCosine(r, sampler.domain_.bottom_radius_m)),
+          disk_half_size_(sunDiskHalfSizeAtHorizon(sampler.domain_.bottom_radius_m, r, sun_angular_radius)) {}
+    double visibleFraction(double mu_s) const { return sunDiskVisibleFraction(mu_s - tangent_mu_, disk_half_size_); }
+
+   private:
+    double tangent_mu_, disk_half_size_;
+  };
+
   // transmittanceToSun's steps for many suns seen from one r: the
   // branch-free part (where on the table's mu axis, how much of the disk is
   // up) for all suns in a loop that vectorizes, then the table reads.
   class SunFromR : public OpticalDepthFromR {
    public:
     SunFromR(const TableSampler& sampler, double r, double sun_angular_radius)
-        : OpticalDepthFromR(sampler, r),
-          tangent_mu_(tangentZenithCosine(r, sampler.domain_.bottom_radius_m)),
-          disk_half_size_(sunDiskHalfSizeAtHorizon(sampler.domain_.bottom_radius_m, r, sun_angular_radius)) {}
-    double visibleFraction(double mu_s) const { return sunDiskVisibleFraction(mu_s - tangent_mu_, disk_half_size_); }
+        : OpticalDepthFromR(sampler, r), disk_(sampler, r, sun_angular_radius) {}
+    double visibleFraction(double mu_s) const { return disk_.visibleFraction(mu_s); }
 
    private:
-    double tangent_mu_, disk_half_size_;
+    SunDiskAtR disk_;
+  };
+
+  // The optical depths of many points of one ray (r, mu) from its start,
+  // each as opticalDepthAlongRay gives it: the start's depths to the top
+  // (both ways) read once, and each point's through an OpticalDepthFromR at
+  // its radius, which the caller may share with that point's sunlight.
+  class DepthAlongRay {
+   public:
+    DepthAlongRay(const TableSampler& sampler, const Texture2D& optical_depth, double r, double mu,
+                  bool ray_intersects_ground)
+        : sampler_(sampler),
+          optical_depth_(optical_depth),
+          r_(r),
+          mu_(mu),
+          ray_intersects_ground_(ray_intersects_ground),
+          forward_(sampler.opticalDepthToTop(optical_depth, r, mu)),
+          reversed_(sampler.opticalDepthToTop(optical_depth, r, -mu)) {}
+    // opticalDepthAlongRay(optical_depth, r, mu, d, ray_intersects_ground),
+    // reading the point's depth through `at_r`, built at radius r_point,
+    // where r_point is where opticalDepthAlongRay places the point (the
+    // caller's own radius of it, unless the domain's radii differ from those
+    // it clamps to).
+    Spectrum to(double d, double r_point, const OpticalDepthFromR& at_r) const {
+      const double r_d =
+          std::clamp(radiusAlongRay(r_, mu_, d), sampler_.domain_.bottom_radius_m, sampler_.domain_.top_radius_m);
+      const RayLeg leg = RayLeg::to(r_, mu_, d, r_d, ray_intersects_ground_);
+      const Spectrum& from_start = leg.reversed ? reversed_ : forward_;
+      return r_d == r_point ? leg.depth(optical_depth_, from_start, at_r)
+                            : leg.depth(optical_depth_, from_start, OpticalDepthFromR(sampler_, r_d));
+    }
+
+   private:
+    const TableSampler& sampler_;
+    const Texture2D& optical_depth_;
+    double r_, mu_;
+    bool ray_intersects_ground_;
+    Spectrum forward_, reversed_;  // to the top from the start, along mu and along -mu
   };
 
   ScatteringCoord scatteringCoord(double r, double mu, double mu_s, double nu, bool ray_intersects_ground) const {
