@@ -1,5 +1,6 @@
 #include <omp.h>
 
+#include <optional>
 #include <vector>
 
 #include "baker/numerics/vector_exp.h"
@@ -8,6 +9,7 @@
 #include "runtime/physics/atmosphere_media.h"
 #include "runtime/physics/planet_shadow.h"
 #include "runtime/physics/ray_quadrature.h"
+#include "runtime/physics/single_scattering_ray.h"
 
 namespace skybake {
 namespace {
@@ -33,16 +35,15 @@ struct ViewNode {
 };
 
 // Appends the nodes of [0, length] of the ray (r, mu), in `segments`
-// sub-intervals, each cut where the planet's shadow crosses the ray
-// (forEachOpticallyThinNodeCutAt: as integrateSingleScattering cuts them).
+// sub-intervals (forEachOpticallyThinNode: as integrateSingleScattering
+// places them where the planet's shadow does not cross the ray).
 void collectViewNodes(const StageContext& ctx, const Texture2D& optical_depth, double r, double mu,
-                      bool ray_intersects_ground, double length, int segments, const ShadowCrossings& crossings,
-                      std::vector<ViewNode>& nodes) {
+                      bool ray_intersects_ground, double length, int segments, std::vector<ViewNode>& nodes) {
   const AtmosphereParameters& a = ctx.atmosphere;
   const AtmosphereMedia media(a);
   auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };
-  forEachOpticallyThinNodeCutAt(
-      0.0, length, segments, -r * mu, crossings.distance.data(), crossings.count,
+  forEachOpticallyThinNode(
+      0.0, length, segments, -r * mu,
       [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
       [&](double t, double w) {
         const double r_t = radiusAt(t);
@@ -128,9 +129,9 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
   const std::vector<double> texel_mu_s = scatteringTexelMuS(ctx.sampler.domain(), s);
 #pragma omp parallel
   {
-    std::vector<ViewNode> whole_ray, pieces;
+    std::vector<ViewNode> whole_ray;
     RowSunTexels suns;
-    SunBatch shared, alone;
+    SunBatch shared;
     std::vector<size_t> shared_suns;  // which of the row's suns the shared batch holds
 #pragma omp for collapse(2) schedule(dynamic)
     for (int i_r = 0; i_r < s.r; ++i_r) {
@@ -141,7 +142,7 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
                                                       ctx.atmosphere.top_radius_m, row.ray_intersects_ground);
         whole_ray.clear();
         collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, length,
-                         kSingleScatteringSegments, ShadowCrossings{}, whole_ray);
+                         kSingleScatteringSegments, whole_ray);
         auto store = [&](size_t sun, const Spectrum& rayleigh_value, const Spectrum& mie_value) {
           const RowSunTexels::Slices& slices = suns.slices[sun];
           for (int i_nu = slices.first_nu; i_nu <= slices.last_nu; ++i_nu) {
@@ -152,6 +153,9 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
         suns.collect(s, texel_mu_s, row.mu);
         shared.clear();
         shared_suns.clear();
+        // The suns whose shadow crosses the ray: the ray integral itself,
+        // which recomputes only the pieces the shadow's edges cut.
+        std::optional<SingleScatteringAlongRay> cut_by_shadow;
         for (size_t i = 0; i < suns.size(); ++i) {
           const ShadowCrossings crossings =
               planetShadowCrossings(row.r, row.mu, suns.mu_s[i], suns.nu[i], ctx.atmosphere.bottom_radius_m, length);
@@ -160,13 +164,12 @@ void computeSingleScatteringTables(const StageContext& ctx, const Texture2D& opt
             shared_suns.push_back(i);
             continue;
           }
-          pieces.clear();
-          collectViewNodes(ctx, optical_depth, row.r, row.mu, row.ray_intersects_ground, length,
-                           kSingleScatteringSegments, crossings, pieces);
-          alone.clear();
-          alone.add(suns.mu_s[i], suns.nu[i]);
-          sumOverNodes(ctx, optical_depth, pieces, row.r, alone);
-          store(i, alone.rayleigh[0], alone.mie[0]);
+          if (!cut_by_shadow) {
+            cut_by_shadow.emplace(ctx.sampler, optical_depth, ctx.atmosphere, row.r, row.mu, row.ray_intersects_ground,
+                                  0.0, length, kSingleScatteringSegments);
+          }
+          const SingleScattering value = cut_by_shadow->under(suns.mu_s[i], suns.nu[i]);
+          store(i, value.rayleigh, value.mie);
         }
         sumOverNodes(ctx, optical_depth, whole_ray, row.r, shared);
         for (size_t j = 0; j < shared_suns.size(); ++j) store(shared_suns[j], shared.rayleigh[j], shared.mie[j]);
