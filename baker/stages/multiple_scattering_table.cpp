@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "baker/numerics/log_cubic.h"
 #include "baker/numerics/vector_exp.h"
 #include "baker/stages/multiple_scattering_table.h"
@@ -53,19 +55,30 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
 }
 
 // The density table at one node's (r, mu), interpolated there once: a
-// mu_s x nu plane that every sun texel of the ray then interpolates
-// bilinearly (4 texels per lookup instead of 16). `rows` sun rows from the
-// lowest sun up: the whole plane, or the rows that carry logarithms.
+// nu x mu_s plane (in the table's own order, entry i_nu * rows + i_mu_s)
+// that every sun texel of the ray then interpolates bilinearly (4 texels
+// per lookup instead of 16). `rows` sun rows from the lowest sun up: the
+// whole plane, or the rows that carry logarithms. Each nu's rows are
+// contiguous in the table, so the blend runs over their floats in one loop
+// that vectorizes (per channel the same arithmetic as a blend of Spectrums).
 void interpolateAtNode(const Texture4D& density, const RayNode& n, int rows, std::vector<Spectrum>& plane) {
   plane.resize(static_cast<size_t>(rows) * density.nu_size);
-  for (int i_mu_s = 0; i_mu_s < rows; ++i_mu_s) {
-    for (int i_nu = 0; i_nu < density.nu_size; ++i_nu) {
-      auto at = [&](int i_r, int i_mu) -> const Spectrum& { return density.at(i_r, i_mu, i_mu_s, i_nu); };
-      const AxisLerp& r = n.density_r;
-      const AxisLerp& mu = n.density_mu;
-      const Spectrum r0 = at(r.i0, mu.i0) + (at(r.i0, mu.i1) - at(r.i0, mu.i0)) * mu.w1;
-      const Spectrum r1 = at(r.i1, mu.i0) + (at(r.i1, mu.i1) - at(r.i1, mu.i0)) * mu.w1;
-      plane[static_cast<size_t>(i_mu_s) * density.nu_size + i_nu] = r0 + (r1 - r0) * r.w1;
+  const AxisLerp& r = n.density_r;
+  const AxisLerp& mu = n.density_mu;
+  const float mu_w = mu.w1, r_w = r.w1;
+  const int floats = rows * kMaxChannels;
+  for (int i_nu = 0; i_nu < density.nu_size; ++i_nu) {
+    auto row = [&](int i_r, int i_mu) { return glm::value_ptr(density.at(i_r, i_mu, 0, i_nu)); };
+    const float* lower_r_lower_mu = row(r.i0, mu.i0);
+    const float* lower_r_upper_mu = row(r.i0, mu.i1);
+    const float* upper_r_lower_mu = row(r.i1, mu.i0);
+    const float* upper_r_upper_mu = row(r.i1, mu.i1);
+    float* out = glm::value_ptr(plane[static_cast<size_t>(i_nu) * rows]);
+#pragma omp simd
+    for (int j = 0; j < floats; ++j) {
+      const float r0 = lower_r_lower_mu[j] + (lower_r_upper_mu[j] - lower_r_lower_mu[j]) * mu_w;
+      const float r1 = upper_r_lower_mu[j] + (upper_r_upper_mu[j] - upper_r_lower_mu[j]) * mu_w;
+      out[j] = r0 + (r1 - r0) * r_w;
     }
   }
 }
@@ -73,29 +86,32 @@ void interpolateAtNode(const Texture4D& density, const RayNode& n, int rows, std
 // The plane at a sun (mu_s) and nu: linear across nu, across mu_s linear
 // or, for a sun below the horizon, a cubic in the logarithm
 // (baker/numerics/log_cubic.h). `log_plane` holds the rows the cubic reads
-// (rows_with_logs), interpolated at the node from the density's logarithms
-// (so geometrically across r and mu, which the density falls along
-// exponentially too).
+// (log_rows of them, rows_with_logs), interpolated at the node from the
+// density's logarithms (so geometrically across r and mu, which the density
+// falls along exponentially too).
 Spectrum samplePlane(const std::vector<Spectrum>& plane, const std::vector<Spectrum>& log_plane, int nu_size,
-                     const AxisLerp& mu_s, const AxisLerp& nu, bool log_cubic) {
-  auto along_nu = [&](const std::vector<Spectrum>& p, int i_mu_s) {
-    const Spectrum& a = p[static_cast<size_t>(i_mu_s) * nu_size + nu.i0];
-    const Spectrum& b = p[static_cast<size_t>(i_mu_s) * nu_size + nu.i1];
+                     int log_rows, const AxisLerp& mu_s, const AxisLerp& nu, bool log_cubic) {
+  const int rows = static_cast<int>(plane.size()) / nu_size;
+  auto at = [](const std::vector<Spectrum>& p, int p_rows, int i_mu_s, int i_nu) -> const Spectrum& {
+    return p[static_cast<size_t>(i_nu) * p_rows + i_mu_s];
+  };
+  auto along_nu = [&](const std::vector<Spectrum>& p, int p_rows, int i_mu_s) {
+    const Spectrum& a = at(p, p_rows, i_mu_s, nu.i0);
+    const Spectrum& b = at(p, p_rows, i_mu_s, nu.i1);
     return a + (b - a) * nu.w1;
   };
   if (!log_cubic) {
-    auto at = [&](int i_mu_s, int i_nu) -> const Spectrum& {
-      return plane[static_cast<size_t>(i_mu_s) * nu_size + i_nu];
-    };
-    const Spectrum a = at(mu_s.i0, nu.i0) + (at(mu_s.i1, nu.i0) - at(mu_s.i0, nu.i0)) * mu_s.w1;
-    const Spectrum b = at(mu_s.i0, nu.i1) + (at(mu_s.i1, nu.i1) - at(mu_s.i0, nu.i1)) * mu_s.w1;
+    const Spectrum a =
+        at(plane, rows, mu_s.i0, nu.i0) + (at(plane, rows, mu_s.i1, nu.i0) - at(plane, rows, mu_s.i0, nu.i0)) * mu_s.w1;
+    const Spectrum b =
+        at(plane, rows, mu_s.i0, nu.i1) + (at(plane, rows, mu_s.i1, nu.i1) - at(plane, rows, mu_s.i0, nu.i1)) * mu_s.w1;
     return a + (b - a) * nu.w1;
   }
-  const int size = static_cast<int>(plane.size()) / nu_size;
-  const int i_before = std::max(mu_s.i0 - 1, 0), i_after = std::min(mu_s.i1 + 1, size - 1);
-  const Spectrum lower = along_nu(plane, mu_s.i0), upper = along_nu(plane, mu_s.i1);
-  const Spectrum log_before = along_nu(log_plane, i_before), log_lower = along_nu(log_plane, mu_s.i0),
-                 log_upper = along_nu(log_plane, mu_s.i1), log_after = along_nu(log_plane, i_after);
+  const int i_before = std::max(mu_s.i0 - 1, 0), i_after = std::min(mu_s.i1 + 1, rows - 1);
+  const Spectrum lower = along_nu(plane, rows, mu_s.i0), upper = along_nu(plane, rows, mu_s.i1);
+  const Spectrum log_before = along_nu(log_plane, log_rows, i_before),
+                 log_lower = along_nu(log_plane, log_rows, mu_s.i0), log_upper = along_nu(log_plane, log_rows, mu_s.i1),
+                 log_after = along_nu(log_plane, log_rows, i_after);
   return blendLogCubic(
       {lower, upper, log_before, log_lower, log_upper, log_after, i_before == mu_s.i0, i_after == mu_s.i1}, mu_s.w1);
 }
@@ -177,8 +193,8 @@ Texture4D computeMultipleScatteringTable(const StageContext& ctx, const Texture2
           }
           for (size_t i = 0; i < count; ++i) {
             const AxisLerp mu_s_lerp = axisLerpFromTextureCoord(mu_s_position[i], density_sizes.mu_s);
-            const Spectrum value =
-                samplePlane(plane, log_planes[k], density_sizes.nu, mu_s_lerp, density_nu[i], mu_s_at_node[i] < 0.0);
+            const Spectrum value = samplePlane(plane, log_planes[k], density_sizes.nu, rows_with_logs, mu_s_lerp,
+                                               density_nu[i], mu_s_at_node[i] < 0.0);
             broad[i] += value * light;
             peaked[i] += value * light_peaked;
           }
