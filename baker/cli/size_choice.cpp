@@ -21,9 +21,9 @@ const std::vector<SweepPoint>& earthSweep() {
   // sun texels fall near the horizon matters as much as how many there are),
   // so no target is met more cheaply by it.
   static const std::vector<SweepPoint> points = {
-      {0.5, 1.31, 0.83, 0.69},
-      {0.75, 0.47, 0.75, 2.5},
-      {1.0, 0.27, 0.35, 6.9},
+      {0.5, 1.31, 0.83, 0.49},
+      {0.75, 0.47, 0.75, 1.9},
+      {1.0, 0.27, 0.35, 5.3},
   };
   return points;
 }
