@@ -51,7 +51,8 @@ void collectRayNodes(const StageContext& ctx, const Texture2D& optical_depth, co
                          glm::exp(-sampler.opticalDepthAlongRay(optical_depth, c.r, c.mu, t, c.ray_intersects_ground)),
                          shape.peakWeightAt(r_t - a.bottom_radius_m), axisLerpFromTextureCoord(u_r, s.r),
                          axisLerpFromTextureCoord(densityCoordMu(mu_t, s.mu), s.mu)});
-      });
+      },
+      media.largestExtinctionBound());
 }
 
 // The density table at one node's (r, mu), interpolated there once: a

@@ -51,7 +51,8 @@ void collectViewNodes(const StageContext& ctx, const Texture2D& optical_depth, d
         nodes.push_back({t, r_t,
                          glm::exp(-ctx.sampler.opticalDepthAlongRay(optical_depth, r, mu, t, ray_intersects_ground)),
                          w * media.rayleighDensity(altitude), w * media.mieDensity(altitude)});
-      });
+      },
+      media.largestExtinctionBound());
 }
 
 // The suns of one view ray that share its nodes: their cosines in arrays the

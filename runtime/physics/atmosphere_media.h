@@ -2,6 +2,8 @@
 // coefficients at density 1 times their density profiles.
 #pragma once
 
+#include <glm/common.hpp>
+
 #include "data_formats/config/atmosphere_parameters.h"
 #include "runtime/physics/density_profile.h"
 
@@ -24,6 +26,13 @@ class AtmosphereMedia {
   // Extinction of the most attenuated channel, m^-1: what decides how finely
   // a ray must be integrated.
   double largestExtinction(double altitude_m) const { return largestChannel(extinction(altitude_m)); }
+  // At least largestExtinction at any altitude, computed alike: every
+  // density is at most 1 (density_profile.h), and a coefficient times a
+  // density of at most 1 rounds to at most the coefficient.
+  double largestExtinctionBound() const {
+    return largestChannel(glm::abs(SpectrumD(a_.rayleigh_scattering)) + glm::abs(SpectrumD(a_.mie_extinction)) +
+                          glm::abs(SpectrumD(a_.absorption_extinction)));
+  }
 
   const AtmosphereParameters& parameters() const { return a_; }
 

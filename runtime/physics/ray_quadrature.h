@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace skybake {
 
@@ -47,6 +48,9 @@ inline constexpr double kRefinedOpticalDepth = 40.0;
 // extinction is beyond any atmosphere's (a kilometre of 1e-1 m^-1).
 inline constexpr int kMaxPiecesPerSubinterval = 256;
 
+// No bound known on the extinction along a ray (forEachOpticallyThinPiece).
+inline constexpr double kNoExtinctionBound = std::numeric_limits<double>::infinity();
+
 // Calls piece(start, end) for `segments` equal sub-intervals of [a, b], each
 // split into equal pieces of at most kMaxPieceOpticalDepth until the optical
 // depth from a passes kRefinedOpticalDepth. `extinction(t)` is the largest
@@ -54,11 +58,28 @@ inline constexpr int kMaxPiecesPerSubinterval = 256;
 // as the largest of it at the ends, the middle and the ray's lowest point
 // `lowest_t` where that lies inside (profiles that peak between are caught
 // by the middle, not guaranteed). The optical depth travelled is estimated
-// from each piece's middle.
+// from each piece's middle. `extinction_bound_per_m`, when given, is at least
+// every value `extinction` returns (AtmosphereMedia::largestExtinctionBound):
+// where it shows no sub-interval can be split, the sub-intervals are the
+// pieces at once, as the peaks would have decided, and `extinction` is not
+// called (most rays of an Earth-like sky are that thin).
 template <typename ExtinctionFn, typename PieceFn>
 inline void forEachOpticallyThinPiece(double a, double b, int segments, double lowest_t, ExtinctionFn&& extinction,
-                                      PieceFn&& piece) {
+                                      PieceFn&& piece, double extinction_bound_per_m = kNoExtinctionBound) {
   const double h = (b - a) / segments;
+  auto subintervalEnd = [&](int s, double start) { return s + 1 == segments ? b : start + h; };
+  bool all_thin = extinction_bound_per_m < kNoExtinctionBound;
+  for (int s = 0; s < segments && all_thin; ++s) {
+    const double start = a + s * h;
+    all_thin = extinction_bound_per_m * (subintervalEnd(s, start) - start) <= kMaxPieceOpticalDepth;
+  }
+  if (all_thin) {
+    for (int s = 0; s < segments; ++s) {
+      const double start = a + s * h;
+      piece(start, subintervalEnd(s, start));
+    }
+    return;
+  }
   double depth = 0.0;
   // In double whatever the callable returns; each sub-interval's end is the
   // next one's start.
@@ -66,7 +87,7 @@ inline void forEachOpticallyThinPiece(double a, double b, int segments, double l
   double extinction_start = extinctionAt(a);
   for (int s = 0; s < segments; ++s) {
     const double start = a + s * h;
-    const double end = s + 1 == segments ? b : start + h;
+    const double end = subintervalEnd(s, start);
     if (!(depth < kRefinedOpticalDepth)) {
       piece(start, end);
       continue;
@@ -101,9 +122,10 @@ inline void forEachOpticallyThinPiece(double a, double b, int segments, double l
 // (forEachOpticallyThinPiece): calls node(t, weight).
 template <typename ExtinctionFn, typename NodeFn>
 inline void forEachOpticallyThinNode(double a, double b, int segments, double lowest_t, ExtinctionFn&& extinction,
-                                     NodeFn&& node) {
-  forEachOpticallyThinPiece(a, b, segments, lowest_t, extinction,
-                            [&](double start, double end) { forEachQuadratureNode(start, end, 1, node); });
+                                     NodeFn&& node, double extinction_bound_per_m = kNoExtinctionBound) {
+  forEachOpticallyThinPiece(
+      a, b, segments, lowest_t, extinction,
+      [&](double start, double end) { forEachQuadratureNode(start, end, 1, node); }, extinction_bound_per_m);
 }
 
 // forEachOpticallyThinNode with each piece also cut at the distances
@@ -132,11 +154,16 @@ inline void forEachPartCutAt(double start, double end, const double* cuts, int c
 
 template <typename ExtinctionFn, typename NodeFn>
 inline void forEachOpticallyThinNodeCutAt(double a, double b, int segments, double lowest_t, const double* cuts,
-                                          int cut_count, ExtinctionFn&& extinction, NodeFn&& node) {
-  forEachOpticallyThinPiece(a, b, segments, lowest_t, extinction, [&](double start, double end) {
-    forEachPartCutAt(start, end, cuts, cut_count,
-                     [&](double part_start, double part_end) { forEachQuadratureNode(part_start, part_end, 1, node); });
-  });
+                                          int cut_count, ExtinctionFn&& extinction, NodeFn&& node,
+                                          double extinction_bound_per_m = kNoExtinctionBound) {
+  forEachOpticallyThinPiece(
+      a, b, segments, lowest_t, extinction,
+      [&](double start, double end) {
+        forEachPartCutAt(start, end, cuts, cut_count, [&](double part_start, double part_end) {
+          forEachQuadratureNode(part_start, part_end, 1, node);
+        });
+      },
+      extinction_bound_per_m);
 }
 
 // Like forEachOpticallyThinNode over [0, length] of a ray, also giving each

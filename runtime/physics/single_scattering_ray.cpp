@@ -79,7 +79,8 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
   const ShadowCrossings crossings = planetShadowCrossings(r, mu, ray.mu_s, ray.nu, a.bottom_radius_m, t_end);
   forEachOpticallyThinNodeCutAt(
       t_start, t_end, segments, -r * mu, crossings.distance.data(), crossings.count,
-      [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); }, node);
+      [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); }, node,
+      media.largestExtinctionBound());
   if (colour == nullptr) {
     return {Spectrum(rayleigh[0]) * a.sun_irradiance * a.rayleigh_scattering,
             Spectrum(mie[0]) * a.sun_irradiance * a.mie_scattering};
@@ -115,7 +116,8 @@ SingleScatteringAlongRay::SingleScatteringAlongRay(const TableSampler& sampler, 
       [&](double start, double end) {
         pieces_.push_back({start, end, nodes_.size()});
         forEachQuadratureNode(start, end, 1, [&](double t, double w) { nodes_.push_back(nodeAt(t, w)); });
-      });
+      },
+      media.largestExtinctionBound());
 }
 
 SingleScatteringAlongRay::Node SingleScatteringAlongRay::nodeAt(double t, double w) const {
