@@ -152,15 +152,18 @@ inline void forEachPartCutAt(double start, double end, const double* cuts, int c
   part(part_start, end);
 }
 
-template <typename ExtinctionFn, typename NodeFn>
+// Parts for which `zero(part_start, part_end)` holds are skipped: the
+// integrand is known to be 0 on them (a stretch the planet's shadow hides
+// the whole sun from, sunless_segment.h).
+template <typename ExtinctionFn, typename ZeroFn, typename NodeFn>
 inline void forEachOpticallyThinNodeCutAt(double a, double b, int segments, double lowest_t, const double* cuts,
-                                          int cut_count, ExtinctionFn&& extinction, NodeFn&& node,
+                                          int cut_count, ExtinctionFn&& extinction, ZeroFn&& zero, NodeFn&& node,
                                           double extinction_bound_per_m = kNoExtinctionBound) {
   forEachOpticallyThinPiece(
       a, b, segments, lowest_t, extinction,
       [&](double start, double end) {
         forEachPartCutAt(start, end, cuts, cut_count, [&](double part_start, double part_end) {
-          forEachQuadratureNode(part_start, part_end, 1, node);
+          if (!zero(part_start, part_end)) forEachQuadratureNode(part_start, part_end, 1, node);
         });
       },
       extinction_bound_per_m);

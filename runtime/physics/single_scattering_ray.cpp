@@ -10,6 +10,7 @@
 #include "data_formats/error.h"
 #include "runtime/physics/atmosphere_media.h"
 #include "runtime/physics/ray_quadrature.h"
+#include "runtime/physics/sunless_segment.h"
 #include "runtime/sky_lookup_constants.h"
 
 namespace skybake {
@@ -77,10 +78,11 @@ SingleScattering integrateSingleScattering(const TableSampler& sampler, const Te
   };
   // The rule's pieces come from the ray alone; the shadow's edges cut them.
   const ShadowCrossings crossings = planetShadowCrossings(r, mu, ray.mu_s, ray.nu, a.bottom_radius_m, t_end);
+  const SunlessSegmentTest sunless(r, mu, ray.mu_s, ray.nu, sampler.domain().bottom_radius_m, a.sun_angular_radius_rad);
   forEachOpticallyThinNodeCutAt(
       t_start, t_end, segments, -r * mu, crossings.distance.data(), crossings.count,
-      [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); }, node,
-      media.largestExtinctionBound());
+      [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
+      [&](double start, double end) { return sunless.sunless(start, end); }, node, media.largestExtinctionBound());
   if (colour == nullptr) {
     return {Spectrum(rayleigh[0]) * a.sun_irradiance * a.rayleigh_scattering,
             Spectrum(mie[0]) * a.sun_irradiance * a.mie_scattering};
@@ -143,11 +145,13 @@ SingleScattering SingleScatteringAlongRay::under(double mu_s, double nu) const {
     mie += light * n.mie_weight;
   };
   const ShadowCrossings crossings = planetShadowCrossings(r_, mu_, mu_s, nu, a_.bottom_radius_m, t_end_);
+  const SunlessSegmentTest sunless(r_, mu_, mu_s, nu, sampler_.domain().bottom_radius_m, a_.sun_angular_radius_rad);
   for (const Piece& p : pieces_) {
     // As forEachOpticallyThinNodeCutAt: the piece cut where the shadow's
-    // edges fall inside it, each part its own rule; a whole piece's nodes
-    // are the stored ones.
+    // edges fall inside it, each part its own rule, the parts that see no
+    // sun skipped; a whole piece's nodes are the stored ones.
     forEachPartCutAt(p.start, p.end, crossings.distance.data(), crossings.count, [&](double start, double end) {
+      if (sunless.sunless(start, end)) return;
       if (start == p.start && end == p.end) {
         for (int k = 0; k < kGaussNodes; ++k) add(nodes_[p.first_node + k]);
       } else {
