@@ -111,7 +111,6 @@ SingleScatteringAlongRay::SingleScatteringAlongRay(const TableSampler& sampler, 
       view_depth_(sampler, optical_depth, r, mu, ray_intersects_ground) {
   if (!(t_end > t_start)) return;
   const AtmosphereMedia media(a);
-  auto radiusAt = [&](double t) { return std::clamp(radiusAlongRay(r, mu, t), a.bottom_radius_m, a.top_radius_m); };
   forEachOpticallyThinPiece(
       t_start, t_end, segments, -r * mu,
       [&](double t) { return media.largestExtinction(radiusAt(t) - a.bottom_radius_m); },
@@ -122,9 +121,13 @@ SingleScatteringAlongRay::SingleScatteringAlongRay(const TableSampler& sampler, 
       media.largestExtinctionBound());
 }
 
+double SingleScatteringAlongRay::radiusAt(double t) const {
+  return std::clamp(radiusAlongRay(r_, mu_, t), a_.bottom_radius_m, a_.top_radius_m);
+}
+
 SingleScatteringAlongRay::Node SingleScatteringAlongRay::nodeAt(double t, double w) const {
   const AtmosphereMedia media(a_);
-  const double r_t = std::clamp(radiusAlongRay(r_, mu_, t), a_.bottom_radius_m, a_.top_radius_m);
+  const double r_t = radiusAt(t);
   const double altitude = r_t - a_.bottom_radius_m;
   const TableSampler::SunFromR sun(sampler_, r_t, a_.sun_angular_radius_rad);
   return {t,  r_t, w * media.rayleighDensity(altitude), w * media.mieDensity(altitude), view_depth_.to(t, r_t, sun),

@@ -109,6 +109,8 @@ class SingleScatteringAlongRay {
   std::vector<Piece> pieces_;
   std::vector<Node> nodes_;
 
+  // The radius at distance t along the ray, kept in the shell.
+  double radiusAt(double t) const;
   Node nodeAt(double t, double w) const;
 };
 

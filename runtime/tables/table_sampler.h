@@ -193,7 +193,7 @@ class TableSampler {
   // table's relative error on them would swamp their small difference.
   Spectrum opticalDepthAlongRay(const Texture2D& optical_depth, double r, double mu, double d,
                                 bool ray_intersects_ground) const {
-    const double r_d = std::clamp(radiusAlongRay(r, mu, d), domain_.bottom_radius_m, domain_.top_radius_m);
+    const double r_d = radiusInDomain(r, mu, d);
     const RayLeg leg = RayLeg::to(r, mu, d, r_d, ray_intersects_ground);
     const Spectrum from_start = opticalDepthToTop(optical_depth, r, leg.reversed ? -mu : mu);
     return leg.depth(optical_depth, from_start, OpticalDepthFromR(*this, r_d));
@@ -214,24 +214,6 @@ class TableSampler {
     if (visible <= 0.0) return Spectrum(0.0f);
     return glm::exp(-sun.opticalDepth(optical_depth, sun.muCoord(mu_s))) * static_cast<float>(visible);
   }
-
-  // The leg of a ray (r, mu) from its start to distance d (radius r_d):
-  // the point's zenith cosine there, and whether both depths are taken
-  // reversed, pointing up (opticalDepthAlongRay says when).
-  struct RayLeg {
-    bool reversed;
-    double mu_d;
-    static RayLeg to(double r, double mu, double d, double r_d, bool ray_intersects_ground) {
-      return {ray_intersects_ground || d <= -r * mu, cosineAlongRay(r, mu, d, r_d)};
-    }
-    // The depth along the leg from the start's depth to the top (along -mu
-    // when reversed, else mu) and the point's, read at r_d through at_d.
-    template <class AtR>
-    Spectrum depth(const Texture2D& optical_depth, const Spectrum& from_start, const AtR& at_d) const {
-      return reversed ? depthBetween(at_d.toTop(optical_depth, -mu_d), from_start)
-                      : depthBetween(from_start, at_d.toTop(optical_depth, mu_d));
-    }
-  };
 
   // Optical depths to the top from one r: where a direction falls on the
   // table's mu axis (selects only, so loops over many directions vectorize)
@@ -255,6 +237,23 @@ class TableSampler {
     double rho_;  // distanceToHorizon(r)
     TransmittanceMuCoordAtR mu_coord_;
     AxisLerp r_lerp_;  // the r axis, the same for every direction
+  };
+
+  // The leg of a ray (r, mu) from its start to distance d (radius r_d):
+  // the point's zenith cosine there, and whether both depths are taken
+  // reversed, pointing up (opticalDepthAlongRay says when).
+  struct RayLeg {
+    bool reversed;
+    double mu_d;
+    static RayLeg to(double r, double mu, double d, double r_d, bool ray_intersects_ground) {
+      return {ray_intersects_ground || d <= -r * mu, cosineAlongRay(r, mu, d, r_d)};
+    }
+    // The depth along the leg from the start's depth to the top (along -mu
+    // when reversed, else mu) and the point's, read at r_d through at_d.
+    Spectrum depth(const Texture2D& optical_depth, const Spectrum& from_start, const OpticalDepthFromR& at_d) const {
+      return reversed ? depthBetween(at_d.toTop(optical_depth, -mu_d), from_start)
+                      : depthBetween(from_start, at_d.toTop(optical_depth, mu_d));
+    }
   };
 
   // How much of the sun's disk is above the horizon from radius r, for a sun
@@ -305,8 +304,7 @@ class TableSampler {
     // caller's own radius of it, unless the domain's radii differ from those
     // it clamps to).
     Spectrum to(double d, double r_point, const OpticalDepthFromR& at_r) const {
-      const double r_d =
-          std::clamp(radiusAlongRay(r_, mu_, d), sampler_.domain_.bottom_radius_m, sampler_.domain_.top_radius_m);
+      const double r_d = sampler_.radiusInDomain(r_, mu_, d);
       const RayLeg leg = RayLeg::to(r_, mu_, d, r_d, ray_intersects_ground_);
       const Spectrum& from_start = leg.reversed ? reversed_ : forward_;
       return r_d == r_point ? leg.depth(optical_depth_, from_start, at_r)
@@ -392,6 +390,12 @@ class TableSampler {
   }
 
  private:
+  // The radius of the point at distance d along the ray (r, mu), kept in the
+  // domain's shell against rounding (opticalDepthAlongRay, DepthAlongRay).
+  double radiusInDomain(double r, double mu, double d) const {
+    return std::clamp(radiusAlongRay(r, mu, d), domain_.bottom_radius_m, domain_.top_radius_m);
+  }
+
   // Each irradiance row's unit sun coordinate of the ground's horizon
   // (mu_s = 0): below it the sky's light falls steepest, in the planet's
   // shadow or, higher up, in the sunlight's grazing path. With rows on
